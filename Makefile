@@ -1,0 +1,115 @@
+# SPDX-License-Identifier: MIT
+# orbillum: the one entry point. `make help` lists the targets.
+
+CC ?= cc
+AR ?= ar
+BUILDDIR ?= build
+VENV ?= .venv
+PY := $(VENV)/bin/python
+SHARED ?= ../shared
+
+WARN := -std=c99 -Wall -Wextra -Wpedantic -Wconversion -Wshadow -Wdouble-promotion -Werror
+OPT ?= -O2
+RT_CFLAGS := $(WARN) $(OPT) -ffunction-sections -fdata-sections -Iinclude -Isrc -Itables
+HOST_CFLAGS := $(WARN) $(OPT) -g -Iinclude -Isrc -Itables -Itests/c
+HOST_LDFLAGS := -Wl,--gc-sections
+
+# Runtime sources: every src/*.c and tables/*.c (generated tables).
+RT_SRC := $(sort $(wildcard src/*.c) $(wildcard tables/*.c))
+
+# Precision variants: build/ (double, the contract) and build/float/.
+OBJ_double := $(patsubst %.c,$(BUILDDIR)/obj/double/%.o,$(RT_SRC))
+OBJ_float  := $(patsubst %.c,$(BUILDDIR)/obj/float/%.o,$(RT_SRC))
+LIB_double := $(BUILDDIR)/liborbillum.a
+LIB_float  := $(BUILDDIR)/float/liborbillum.a
+DEF_double :=
+DEF_float  := -DOI_SINGLE_PRECISION
+
+# C unit tests: every tests/c/test_*.c is one cmocka program, built per precision.
+CTEST_SRC := $(sort $(wildcard tests/c/test_*.c))
+CTEST_double := $(patsubst tests/c/%.c,$(BUILDDIR)/tests/double/%,$(CTEST_SRC))
+CTEST_float  := $(patsubst tests/c/%.c,$(BUILDDIR)/tests/float/%,$(CTEST_SRC))
+
+PLAN_SRC := $(sort $(wildcard examples/oi_plan/*.c))
+PLAN := $(BUILDDIR)/oi-plan
+
+.PHONY: all lib demo test test-c test-py deps deps-c deps-py clean help
+.DEFAULT_GOAL := all
+
+all: lib $(PLAN) ## build the library (both precisions) and the planner
+
+lib: $(LIB_double) $(LIB_float) ## build build/liborbillum.a and build/float/liborbillum.a
+
+$(BUILDDIR)/obj/double/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(RT_CFLAGS) $(DEF_double) $(EXTRA_DEFS) -MMD -MP -c $< -o $@
+
+$(BUILDDIR)/obj/float/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(RT_CFLAGS) $(DEF_float) $(EXTRA_DEFS) -MMD -MP -c $< -o $@
+
+$(LIB_double): $(OBJ_double)
+	@mkdir -p $(dir $@)
+	rm -f $@ && $(AR) rcs $@ $^
+
+$(LIB_float): $(OBJ_float)
+	@mkdir -p $(dir $@)
+	rm -f $@ && $(AR) rcs $@ $^
+
+$(PLAN): $(PLAN_SRC) $(LIB_double)
+	@mkdir -p $(dir $@)
+	$(CC) $(HOST_CFLAGS) -Iexamples/oi_plan $(PLAN_SRC) $(LIB_double) -lm $(HOST_LDFLAGS) -o $@
+
+demo: $(PLAN) ## run the exposure planner on its built-in scenario
+	$(PLAN)
+
+# ---- dependencies: installed on demand so a fresh Debian machine needs only these commands
+deps: deps-c deps-py ## install what the build and tests need (cmocka, a Python venv)
+
+deps-c: $(BUILDDIR)/.deps-c
+$(BUILDDIR)/.deps-c:
+	@mkdir -p $(BUILDDIR)
+	@if ! echo '#include <stdarg.h>\n#include <stddef.h>\n#include <stdint.h>\n#include <setjmp.h>\n#include <cmocka.h>' | $(CC) -E -x c - >/dev/null 2>&1; then \
+	  echo "installing libcmocka-dev"; \
+	  SUDO=; [ "$$(id -u)" = 0 ] || SUDO=sudo; \
+	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq libcmocka-dev; \
+	fi
+	@touch $@
+
+deps-py: $(VENV)/.deps
+$(VENV)/.deps: requirements.txt
+	@[ -x $(PY) ] || python3 -m venv $(VENV) || { \
+	  SUDO=; [ "$$(id -u)" = 0 ] || SUDO=sudo; \
+	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq python3-venv && python3 -m venv $(VENV); }
+	$(PY) -m pip install -q --disable-pip-version-check -r requirements.txt
+	@touch $@
+
+# ---- tests
+$(BUILDDIR)/tests/double/%: tests/c/%.c $(LIB_double) | deps-c
+	@mkdir -p $(dir $@)
+	$(CC) $(HOST_CFLAGS) $(DEF_double) $< $(LIB_double) -lcmocka -lm -o $@
+
+$(BUILDDIR)/tests/float/%: tests/c/%.c $(LIB_float) | deps-c
+	@mkdir -p $(dir $@)
+	$(CC) $(HOST_CFLAGS) $(DEF_float) $< $(LIB_float) -lcmocka -lm -o $@
+
+# Fragments in mk/ add their own targets and append to TEST_TARGETS.
+TEST_TARGETS := test-c test-py
+-include $(sort $(wildcard mk/*.mk))
+
+test-c: $(CTEST_double) $(CTEST_float) $(PLAN) ## C unit tests, double and single precision
+	@set -e; for t in $(CTEST_double) $(CTEST_float); do echo "== $$t"; $$t; done
+
+test-py: deps-py all ## Python tests (baker, references, planner batch interface)
+	$(PY) -m pytest -q tests/python
+
+test: deps $(TEST_TARGETS) ## every test: C (both precisions) and Python
+	@echo "all tests passed"
+
+clean: ## remove build outputs
+	rm -rf $(BUILDDIR)
+
+help: ## list the targets
+	@grep -hE '^[a-zA-Z_-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | sort
+
+-include $(OBJ_double:.o=.d) $(OBJ_float:.o=.d)

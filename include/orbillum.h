@@ -1,0 +1,330 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * orbillum.h: how an object in orbit is lit, and how a camera should expose it.
+ *
+ * The one public header of the runtime. Freestanding C99: no allocation, no
+ * I/O, no mutable globals, no recursion; every function is reentrant and all
+ * state belongs to the caller.
+ *
+ * Conventions (as ERFA):
+ *   - positions are Earth-centred inertial, in km; angles in radians;
+ *     irradiance in W/m^2; radiance in W/m^2/sr.
+ *   - functions return a status: 0 OK; positive = warning, the result is
+ *     computed (e.g. outside a table's range, analytic model used); negative =
+ *     error, nothing computed and every output zeroed.
+ *   - a zeroed oi_model means "all defaults" (oi_constants.h). A NULL model
+ *     pointer means the same.
+ *
+ * Compile-time options: see oi_config.h.
+ */
+#ifndef ORBILLUM_H
+#define ORBILLUM_H
+
+#include "oi_config.h"
+#include "oi_constants.h"
+#include "oi_table.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---------------------------------------------------------------- status */
+
+enum oi_status {
+    OI_OK = 0,
+    /* warnings: result computed */
+    OI_WARN_TABLE_RANGE = 1,      /* outside a baked table: analytic model used */
+    /* errors: result not computed, outputs zeroed */
+    OI_ERR_NULL = -1,             /* a required pointer is NULL */
+    OI_ERR_NONFINITE = -2,        /* NaN or infinite input component */
+    OI_ERR_ZERO_VECTOR = -3,      /* a position that must be nonzero is zero */
+    OI_ERR_BELOW_SURFACE = -4,    /* target or observer at or below the Earth's surface */
+    OI_ERR_OBSERVER_AT_TARGET = -5, /* observer and target coincide */
+    OI_ERR_ALBEDO = -6,           /* an albedo outside [0, 1] */
+    OI_ERR_RADIUS = -7,           /* a radius <= 0 (target, or a model radius) */
+    OI_ERR_MODEL = -8,            /* an oi_model field out of range */
+    OI_ERR_CAMERA = -9,           /* an oi_camera field out of range */
+    OI_ERR_MAGNITUDE = -10,       /* a magnitude outside [OI_MAG_MIN, OI_MAG_MAX] */
+    OI_ERR_TERMS = -11,           /* unknown bits in a terms mask */
+    OI_ERR_GEOMETRY = -12         /* impossible geometry (e.g. Sun inside the Earth's
+                                     radius plus its own, point inside the Sun) */
+};
+
+/* Name of a status ("OK", "ERR_NONFINITE", ...); "UNKNOWN" otherwise. */
+const char *oi_status_name(int status);
+
+/* Valid range of magnitudes accepted as input. */
+#define OI_MAG_MIN (-30.0)
+#define OI_MAG_MAX (50.0)
+
+/* ---------------------------------------------------------------- model */
+
+/* Terms of the illumination (bit mask). */
+#define OI_TERM_SUN   (1u)
+#define OI_TERM_EARTH (2u)
+#define OI_TERM_MOON  (4u)
+#define OI_TERM_ALL   (OI_TERM_SUN | OI_TERM_EARTH | OI_TERM_MOON)
+
+/* oi_model.earth_model */
+#define OI_EARTH_TABLE   (0)  /* baked table, analytic beyond its range (default) */
+#define OI_EARTH_LAMBERT (1)  /* far-field Lambert sphere, (R/r)^2 p(theta) */
+
+/* oi_model.moon_model */
+#define OI_MOON_PHASE_LAW (0) /* empirical lunar phase law (default) */
+#define OI_MOON_LAMBERT   (1) /* Lambert sphere of albedo moon_albedo (seed) */
+
+/* oi_model.limb_darkening */
+#define OI_LIMB_UNIFORM (0)   /* uniform solar disc (default) */
+#define OI_LIMB_DARKENED (1)  /* irradiance uses a limb-darkened disc */
+
+/*
+ * Model constants and options. Zero in any field means its default.
+ * Fields are validated by every function that takes a model: a negative or
+ * non-finite value gives OI_ERR_MODEL (radii: OI_ERR_RADIUS).
+ */
+typedef struct oi_model {
+    oi_real tsi_w_m2;         /* solar irradiance at 1 AU (W/m^2) */
+    oi_real au_km;            /* astronomical unit (km) */
+    oi_real sun_radius_km;    /* solar radius (km) */
+    oi_real earth_radius_km;  /* Earth radius (km) */
+    oi_real moon_radius_km;   /* Moon radius (km) */
+    oi_real moon_albedo;      /* Lambert Moon albedo (OI_MOON_LAMBERT only) */
+    int earth_model;          /* OI_EARTH_TABLE or OI_EARTH_LAMBERT */
+    int moon_model;           /* OI_MOON_PHASE_LAW or OI_MOON_LAMBERT */
+    int limb_darkening;       /* OI_LIMB_UNIFORM or OI_LIMB_DARKENED */
+    int no_atmosphere;        /* nonzero: as if the Earth had no atmosphere */
+    const oi_earth_table *earth_table; /* NULL: the baked default table */
+} oi_model;
+
+/* ---------------------------------------------------------------- geometry */
+
+/* Lambertian sphere phase function (PHYSICS.md section 3)
+ *   p(xi) = 2/(3 pi) ((pi - xi) cos xi + sin xi),  p(0) = 2/3,
+ * xi the phase angle (radians, [0, pi]; values outside are clamped).
+ * Near xi = pi it uses a series in t = pi - xi (no cancellation).
+ * A sphere of radius a, albedo alpha under irradiance E sends
+ *   F = E alpha a^2 p(xi) / d^2  to a viewer at distance d. */
+oi_real oi_lambert_phase(oi_real xi);
+
+/* Angle between two vectors, atan2(|a x b|, a . b): accurate near 0 and pi.
+ * Returns 0 if either vector is zero. */
+oi_real oi_angle(const oi_real a[3], const oi_real b[3]);
+
+/* Area (steradians) of the intersection of two spherical caps of angular
+ * radii r1, r2 (radians, [0, pi]) whose centres are d apart (radians,
+ * [0, pi]). Exact on the sphere (not the planar two-circle approximation),
+ * in forms without cancellation for small caps. */
+oi_real oi_cap_overlap(oi_real r1, oi_real r2, oi_real d);
+
+/* ---------------------------------------------------------------- sunlight */
+
+/* oi_shadow.region */
+#define OI_SHADOW_LIT      (0)
+#define OI_SHADOW_PENUMBRA (1)
+#define OI_SHADOW_UMBRA    (2)
+#define OI_SHADOW_ANNULAR  (3)  /* Earth's disc inside the Sun's: beyond the umbra's tip */
+
+typedef struct oi_shadow {
+    oi_real fraction;        /* visible fraction of the uniform solar disc's area, [0, 1] */
+    oi_real fraction_ld;     /* visible fraction of the limb-darkened disc's flux, [0, 1] */
+    oi_real fraction_atm;    /* fraction of unobstructed sunlight reaching the point,
+                                refraction and extinction included (equals the model's
+                                choice of fraction/fraction_ld without the atmosphere) */
+    oi_real sun_radius_rad;  /* apparent solar radius seen from the point */
+    oi_real earth_radius_rad;/* apparent Earth radius seen from the point */
+    oi_real separation_rad;  /* angle between the Sun's and the Earth's centres */
+    oi_real sun_distance_km; /* point to Sun centre */
+    int region;              /* OI_SHADOW_* */
+} oi_shadow;
+
+/*
+ * Visible fraction of the Sun seen from a point (conical shadow, exact
+ * spherical-cap overlap).
+ * Given:   sun_km   Sun position (km, Earth-centred)
+ *          point_km point position (km, Earth-centred), above the surface
+ *          model    NULL or model constants
+ * Returned: out    fractions and geometry
+ * Returns: OI_OK; OI_ERR_NULL, OI_ERR_NONFINITE, OI_ERR_ZERO_VECTOR,
+ *          OI_ERR_BELOW_SURFACE, OI_ERR_GEOMETRY, OI_ERR_MODEL, OI_ERR_RADIUS.
+ */
+int oi_sun_fraction(const oi_real sun_km[3], const oi_real point_km[3],
+                    const oi_model *model, oi_shadow *out);
+
+/* ---------------------------------------------------------------- earthshine */
+
+/*
+ * Diffuse earthshine per unit albedo and unit solar irradiance at the Earth:
+ * phi(theta, h) such that the scalar irradiance at the point is
+ *   E_earth = albedo * TSI * (1 AU / |sun|)^2 * phi.
+ * Given:   theta  angle at the Earth's centre between Sun and point (rad, [0, pi])
+ *          h_km   altitude above the model's Earth radius (km, > 0)
+ *          model  NULL or model (earth_model, earth_table, earth_radius_km)
+ * Returned: phi   normalised scalar irradiance (>= 0)
+ *           psi   mean incidence direction: angle from the nadir (point to Earth
+ *                 centre) towards the Sun side, in the Sun-Earth-point plane (rad)
+ * Returns: OI_OK; OI_WARN_TABLE_RANGE (outside the table: Lambert far field
+ *          used); OI_ERR_NULL, OI_ERR_NONFINITE, OI_ERR_BELOW_SURFACE, OI_ERR_MODEL.
+ */
+int oi_earthshine(oi_real theta, oi_real h_km, const oi_model *model,
+                  oi_real *phi, oi_real *psi);
+
+/* ---------------------------------------------------------------- moonlight */
+#ifndef OI_NO_MOON
+/* Empirical lunar phase law: the Moon's brightness at phase angle alpha
+ * (radians) relative to full Moon, 10^(-0.4 (0.026 a + 4e-9 a^4)), a in
+ * degrees (Krisciunas & Schaefer 1991, PASP 103, 1033, eq. 20, after Allen).
+ * Returns 1 at alpha = 0; alpha is clamped to [0, pi]. */
+oi_real oi_moon_phase_law(oi_real alpha);
+#endif
+
+/* ---------------------------------------------------------------- scene */
+
+typedef struct oi_scene {
+    oi_real sun_km[3];       /* Sun position (km) */
+    oi_real moon_km[3];      /* Moon position (km); used when OI_TERM_MOON is set */
+    oi_real target_km[3];    /* target position (km) */
+    oi_real observer_km[3];  /* observer position (km); used when has_observer */
+    int has_observer;        /* nonzero: compute what the observer receives */
+    unsigned terms;          /* OI_TERM_* mask */
+    oi_real earth_albedo;    /* [0, 1] */
+    oi_real target_albedo;   /* [0, 1] */
+    oi_real target_radius_m; /* > 0 */
+} oi_scene;
+
+/* Fill a scene with the defaults: zero positions, no observer, all terms
+ * compiled in, albedos OI_EARTH_ALBEDO_DEFAULT / OI_TARGET_ALBEDO_DEFAULT,
+ * radius OI_TARGET_RADIUS_M_DEFAULT. */
+void oi_scene_defaults(oi_scene *scene);
+
+typedef struct oi_illum {
+    oi_shadow shadow;        /* the Sun seen from the target */
+    oi_real e_sun;           /* scalar irradiance at the target per source (W/m^2) */
+    oi_real e_earth;
+    oi_real e_moon;
+    oi_real dir_sun[3];      /* unit vectors from the target towards where each */
+    oi_real dir_earth[3];    /*   source's light comes from (Earth: mean incidence */
+    oi_real dir_moon[3];     /*   direction); zero when the term is off */
+    oi_real earth_theta;     /* angle at Earth centre, Sun to target (rad) */
+    oi_real earth_h_km;      /* target altitude (km) */
+    oi_real earth_phi;       /* normalised earthshine phi(theta, h) */
+    oi_real earth_psi;       /* its mean direction angle (see oi_earthshine) */
+    oi_real moon_sun_fraction; /* fraction of sunlight reaching the Moon */
+    /* what the observer receives (zero without observer) */
+    oi_real phase_sun;       /* phase angle at the target, per source (rad) */
+    oi_real phase_earth;
+    oi_real phase_moon;
+    oi_real flux_sun;        /* W/m^2 at the observer from the target, per source */
+    oi_real flux_earth;
+    oi_real flux_moon;
+    oi_real flux_obs;        /* their sum */
+    oi_real mag_v;           /* apparent V magnitude of the target (OI_MAG_DARK if dark) */
+    oi_real range_km;        /* observer to target */
+} oi_illum;
+
+/*
+ * Light on the target from Sun, Earth and Moon, and what the observer sees.
+ * Given:   scene  positions, terms, albedos, target radius
+ *          model  NULL or model constants and options
+ * Returned: out   see oi_illum
+ * Returns: OI_OK; OI_WARN_TABLE_RANGE; any OI_ERR_* above (outputs zeroed).
+ */
+int oi_illuminate(const oi_scene *scene, const oi_model *model, oi_illum *out);
+
+/* Apparent V magnitude of a flux at the observer (W/m^2):
+ * m = m_sun - 2.5 log10(F / TSI). Returns OI_MAG_DARK for F <= 0, non-finite F,
+ * or magnitudes fainter than OI_MAG_DARK. */
+oi_real oi_magnitude_v(oi_real flux_w_m2, const oi_model *model);
+
+/* Inverse of oi_magnitude_v. Returns OI_OK or OI_ERR_MAGNITUDE (flux set to 0)
+ * for non-finite magnitudes or outside [OI_MAG_MIN, OI_MAG_MAX]. */
+int oi_flux_from_magnitude(oi_real mag_v, const oi_model *model, oi_real *flux_w_m2);
+
+/* ---------------------------------------------------------------- camera */
+#ifndef OI_NO_EXPOSURE
+
+#define OI_CAMERA_MAX_TIMES (16)
+#define OI_CAMERA_MAX_GAINS (8)
+
+typedef struct oi_camera {
+    const char *name;
+    oi_real aperture_m;         /* entrance pupil diameter (m) */
+    oi_real focal_length_m;     /* (m) */
+    oi_real pixel_pitch_m;      /* (m) */
+    oi_real transmission;       /* optics transmission, (0, 1] */
+    oi_real quantum_efficiency; /* band-mean QE, (0, 1] */
+    oi_real band_fraction;      /* fraction of solar irradiance in the band, (0, 1] */
+    oi_real photon_energy_j;    /* mean photon energy in the band (J) */
+    oi_real full_well_e;        /* (electrons) */
+    oi_real dark_current_e_s;   /* (electrons/s/pixel) */
+    oi_real psf_peak_fraction;  /* fraction of a point source in the brightest pixel, (0, 1] */
+    oi_real fov_rad;            /* full field of view, diagonal (rad) */
+    oi_real sun_exclusion_rad;  /* Sun exclusion half-angle from the boresight (rad) */
+    int n_times;                /* number of exposure times, 1..OI_CAMERA_MAX_TIMES */
+    oi_real times_s[OI_CAMERA_MAX_TIMES];  /* ascending (s) */
+    int n_gains;                /* number of gains, 1..OI_CAMERA_MAX_GAINS */
+    oi_real gains[OI_CAMERA_MAX_GAINS];    /* ascending; saturation = full_well / gain */
+    oi_real read_noise_e[OI_CAMERA_MAX_GAINS]; /* input-referred read noise per gain (e-) */
+} oi_camera;
+
+/* Built-in cameras: index 0.. ; NULL past the end. */
+const oi_camera *oi_camera_builtin(int index);
+/* Built-in camera by name (exact match); NULL if none. */
+const oi_camera *oi_camera_find(const char *name);
+
+/* Exposure flags (bit mask) */
+#define OI_FLAG_SUN_EXCLUSION (1u)   /* Sun inside the exclusion angle */
+#define OI_FLAG_EARTH_IN_FOV  (2u)   /* Earth in the field of view (bright background) */
+#define OI_FLAG_ECLIPSED      (4u)   /* target in the umbra */
+#define OI_FLAG_TOO_FAINT     (8u)   /* SNR below goal at the longest exposure, highest gain */
+#define OI_FLAG_SATURATED     (16u)  /* saturated even at the shortest exposure, lowest gain */
+#define OI_FLAG_PENUMBRA      (32u)  /* target in the penumbra */
+
+/* Name of one flag bit ("sun_exclusion", ...); NULL if unknown. */
+const char *oi_flag_name(unsigned flag_bit);
+
+/* Goals of the exposure choice. Zero fields mean defaults. */
+typedef struct oi_expose_goal {
+    oi_real fill;            /* brightest-pixel fill as a fraction of saturation (0.5) */
+    oi_real snr_min;         /* SNR below which TOO_FAINT is raised (5) */
+} oi_expose_goal;
+
+/* Photometric input of the exposure choice. */
+typedef struct oi_expose_in {
+    oi_real flux_w_m2;           /* target flux at the aperture (W/m^2) */
+    oi_real background_w_m2_sr;  /* sky radiance behind the target (W/m^2/sr) */
+    unsigned flags;              /* geometric flags already known (OI_FLAG_*) */
+} oi_expose_in;
+
+typedef struct oi_exposure {
+    oi_real exposure_s;      /* chosen exposure time (s) */
+    oi_real gain;            /* chosen gain */
+    int time_index;          /* index into camera times_s */
+    int gain_index;          /* index into camera gains */
+    oi_real signal_e;        /* target electrons in the brightest pixel */
+    oi_real background_e;    /* background + dark electrons in that pixel */
+    oi_real peak_e;          /* signal_e + background_e */
+    oi_real saturation_e;    /* full_well / gain */
+    oi_real fill;            /* peak_e / saturation_e */
+    oi_real snr;             /* signal / noise of the brightest pixel */
+    oi_real sun_angle_rad;   /* Sun to boresight (oi_expose_scene only) */
+    unsigned flags;          /* OI_FLAG_* */
+} oi_exposure;
+
+/* Choose exposure time and gain (see README for the rule). */
+int oi_expose(const oi_camera *camera, const oi_expose_in *in,
+              const oi_expose_goal *goal, oi_exposure *out);
+
+/* Same, from a scene and its illumination: boresight from observer to
+ * target, Sun exclusion, Earth in the field of view with its radiance as
+ * background, eclipse flags. Needs scene->has_observer. */
+int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
+                    const oi_illum *illum, const oi_model *model,
+                    const oi_expose_goal *goal, oi_exposure *out);
+
+#endif /* OI_NO_EXPOSURE */
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* ORBILLUM_H */

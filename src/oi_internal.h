@@ -1,0 +1,82 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * oi_internal.h: helpers shared inside the runtime (not part of the API).
+ * Small vector operations as static inline functions, and model resolution.
+ */
+#ifndef OI_INTERNAL_H
+#define OI_INTERNAL_H
+
+#include "oi_port.h"
+
+static inline oi_real oi__dot(const oi_real a[3], const oi_real b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static inline void oi__sub(const oi_real a[3], const oi_real b[3], oi_real out[3])
+{
+    out[0] = a[0] - b[0];
+    out[1] = a[1] - b[1];
+    out[2] = a[2] - b[2];
+}
+
+static inline void oi__cross(const oi_real a[3], const oi_real b[3], oi_real out[3])
+{
+    oi_real x = a[1] * b[2] - a[2] * b[1];
+    oi_real y = a[2] * b[0] - a[0] * b[2];
+    oi_real z = a[0] * b[1] - a[1] * b[0];
+    out[0] = x;
+    out[1] = y;
+    out[2] = z;
+}
+
+/* Euclidean norm, scaled so that large or tiny components neither overflow
+ * nor underflow. */
+static inline oi_real oi__norm(const oi_real a[3])
+{
+    oi_real m = OI_FABS(a[0]);
+    oi_real t = OI_FABS(a[1]);
+    oi_real x, y, z;
+    if (t > m) m = t;
+    t = OI_FABS(a[2]);
+    if (t > m) m = t;
+    if (m == (oi_real)0 || !OI_ISFINITE(m)) return m;
+    x = a[0] / m;
+    y = a[1] / m;
+    z = a[2] / m;
+    return m * OI_SQRT(x * x + y * y + z * z);
+}
+
+/* out = a / |a|; returns |a| (out zeroed when |a| is 0). out may be a. */
+static inline oi_real oi__unit(const oi_real a[3], oi_real out[3])
+{
+    oi_real n = oi__norm(a);
+    if (n > (oi_real)0) {
+        out[0] = a[0] / n;
+        out[1] = a[1] / n;
+        out[2] = a[2] / n;
+    } else {
+        out[0] = out[1] = out[2] = (oi_real)0;
+    }
+    return n;
+}
+
+static inline int oi__finite3(const oi_real a[3])
+{
+    return OI_ISFINITE(a[0]) && OI_ISFINITE(a[1]) && OI_ISFINITE(a[2]);
+}
+
+static inline void oi__zero3(oi_real a[3])
+{
+    a[0] = a[1] = a[2] = (oi_real)0;
+}
+
+/*
+ * Copy a model with every zero field replaced by its default; NULL means all
+ * defaults. Returns OI_OK, OI_ERR_MODEL (non-finite or negative constant,
+ * unknown option value, moon_albedo outside [0, 1]) or OI_ERR_RADIUS (a
+ * negative radius). On error *out is the default model.
+ */
+int oi__model_resolve(const oi_model *in, oi_model *out);
+
+#endif /* OI_INTERNAL_H */

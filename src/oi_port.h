@@ -1,0 +1,75 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * oi_port.h: the only place the runtime includes system headers. Math calls
+ * go through OI_* hooks so a flight project can supply its own libm: define
+ * any of them before this header (e.g. -DOI_SQRT=my_sqrt).
+ */
+#ifndef OI_PORT_H
+#define OI_PORT_H
+
+#include <math.h>
+#include <stddef.h>
+#include <string.h>
+
+#include "orbillum.h"
+
+#ifdef OI_SINGLE_PRECISION
+#define OI_FN(fn) fn##f
+#else
+#define OI_FN(fn) fn
+#endif
+
+#ifndef OI_SQRT
+#define OI_SQRT OI_FN(sqrt)
+#endif
+#ifndef OI_SIN
+#define OI_SIN OI_FN(sin)
+#endif
+#ifndef OI_COS
+#define OI_COS OI_FN(cos)
+#endif
+#ifndef OI_TAN
+#define OI_TAN OI_FN(tan)
+#endif
+#ifndef OI_ASIN
+#define OI_ASIN OI_FN(asin)
+#endif
+#ifndef OI_ACOS
+#define OI_ACOS OI_FN(acos)
+#endif
+#ifndef OI_ATAN
+#define OI_ATAN OI_FN(atan)
+#endif
+#ifndef OI_ATAN2
+#define OI_ATAN2 OI_FN(atan2)
+#endif
+#ifndef OI_EXP
+#define OI_EXP OI_FN(exp)
+#endif
+#ifndef OI_LOG
+#define OI_LOG OI_FN(log)
+#endif
+#ifndef OI_LOG10
+#define OI_LOG10 OI_FN(log10)
+#endif
+#ifndef OI_POW
+#define OI_POW OI_FN(pow)
+#endif
+#ifndef OI_FABS
+#define OI_FABS OI_FN(fabs)
+#endif
+#ifndef OI_FLOOR
+#define OI_FLOOR OI_FN(floor)
+#endif
+#ifndef OI_HYPOT
+#define OI_HYPOT OI_FN(hypot)
+#endif
+/* isfinite is a macro on every C99 libm; a project without one overrides it. */
+#ifndef OI_ISFINITE
+#define OI_ISFINITE(x) isfinite(x)
+#endif
+
+/* Constants as oi_real (no double promotion in the float build). */
+#define OI_PI_R ((oi_real)OI_PI)
+
+#endif /* OI_PORT_H */
