@@ -12,6 +12,8 @@ WARN := -std=c99 -Wall -Wextra -Wpedantic -Wconversion -Wshadow -Wdouble-promoti
 OPT ?= -O2
 RT_CFLAGS := $(WARN) $(OPT) -ffunction-sections -fdata-sections -Iinclude -Isrc -Itables
 HOST_CFLAGS := $(WARN) $(OPT) -g -Iinclude -Isrc -Itables -Itests/c
+# Tests mix double references with oi_real: strict, but without the promotion/conversion checks.
+TEST_CFLAGS := -std=c99 -Wall -Wextra -Wpedantic -Wshadow -Werror -O1 -g -Iinclude -Isrc -Itables -Itests/c
 HOST_LDFLAGS := -Wl,--gc-sections
 
 # Runtime sources: every src/*.c and tables/*.c (generated tables).
@@ -87,11 +89,11 @@ $(VENV)/.deps: requirements.txt
 # ---- tests
 $(BUILDDIR)/tests/double/%: tests/c/%.c $(LIB_double) | deps-c
 	@mkdir -p $(dir $@)
-	$(CC) $(HOST_CFLAGS) $(DEF_double) $< $(LIB_double) -lcmocka -lm -o $@
+	$(CC) $(TEST_CFLAGS) $(DEF_double) $< $(LIB_double) -lcmocka -lm -o $@
 
 $(BUILDDIR)/tests/float/%: tests/c/%.c $(LIB_float) | deps-c
 	@mkdir -p $(dir $@)
-	$(CC) $(HOST_CFLAGS) $(DEF_float) $< $(LIB_float) -lcmocka -lm -o $@
+	$(CC) $(TEST_CFLAGS) $(DEF_float) $< $(LIB_float) -lcmocka -lm -o $@
 
 # Fragments in mk/ add their own targets and append to TEST_TARGETS.
 TEST_TARGETS := test-c test-py
