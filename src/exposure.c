@@ -1,0 +1,419 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * exposure.c: the camera model and the choice of exposure time and gain
+ * (oi_expose, oi_expose_scene, oi_flag_name). The rule is written out in
+ * docs/camera.md; the built-in cameras are in camera_builtin.c.
+ */
+#include "oi_internal.h"
+
+#ifndef OI_NO_EXPOSURE
+
+/* Valid ranges of the camera fields. They are wide enough for any real
+ * instrument and narrow enough that no intermediate value can overflow in
+ * single precision (the largest electron count is below 1e37). */
+#define CAM_APERTURE_MAX_M   OI_R(10.0)
+#define CAM_FOCAL_MIN_M      OI_R(1e-3)
+#define CAM_FOCAL_MAX_M      OI_R(1e3)
+#define CAM_PITCH_MIN_M      OI_R(1e-7)
+#define CAM_PITCH_MAX_M      OI_R(1e-3)
+#define CAM_PHOTON_MIN_J     OI_R(1e-20)   /* 20 um */
+#define CAM_PHOTON_MAX_J     OI_R(1e-17)   /* 20 nm */
+#define CAM_FULL_WELL_MIN_E  OI_R(1.0)
+#define CAM_FULL_WELL_MAX_E  OI_R(1e9)
+#define CAM_DARK_MAX_E_S     OI_R(1e9)
+#define CAM_TIME_MAX_S       OI_R(1e4)
+#define CAM_GAIN_MAX         OI_R(1e3)
+#define CAM_READ_NOISE_MAX_E OI_R(1e6)
+
+/* Largest accepted background radiance (W/m^2/sr): five times the mean
+ * radiance of the solar disc, TSI / (pi (R_sun / 1 AU)^2) = 2.0e7. */
+#define IN_RADIANCE_MAX OI_R(1e8)
+
+/* Defaults of the goal. */
+#define GOAL_FILL_DEFAULT    OI_R(0.5)
+#define GOAL_SNR_DEFAULT     OI_R(5.0)
+#define GOAL_SNR_MAX         OI_R(1e6)
+
+/* Flags that describe the geometry (kept from the input); the others are
+ * computed here. */
+#define FLAGS_GEOMETRIC (OI_FLAG_SUN_EXCLUSION | OI_FLAG_EARTH_IN_FOV | OI_FLAG_ECLIPSED | \
+                         OI_FLAG_PENUMBRA | OI_FLAG_OCCULTED)
+#define FLAGS_ALL (FLAGS_GEOMETRIC | OI_FLAG_TOO_FAINT | OI_FLAG_SATURATED)
+
+/* lo < x <= hi (false for NaN). */
+static int open_closed(oi_real x, oi_real lo, oi_real hi)
+{
+    return x > lo && x <= hi;
+}
+
+/* lo <= x <= hi (false for NaN). */
+static int closed(oi_real x, oi_real lo, oi_real hi)
+{
+    return x >= lo && x <= hi;
+}
+
+/* Nonzero when every field of the camera is in range (docs/camera.md). */
+static int camera_valid(const oi_camera *c)
+{
+    int i;
+    const oi_real one = OI_R(1.0);
+    if (!open_closed(c->aperture_m, 0, CAM_APERTURE_MAX_M) ||
+        !closed(c->focal_length_m, CAM_FOCAL_MIN_M, CAM_FOCAL_MAX_M) ||
+        !closed(c->pixel_pitch_m, CAM_PITCH_MIN_M, CAM_PITCH_MAX_M) ||
+        !open_closed(c->transmission, 0, one) ||
+        !open_closed(c->quantum_efficiency, 0, one) ||
+        !open_closed(c->band_fraction, 0, one) ||
+        !closed(c->photon_energy_j, CAM_PHOTON_MIN_J, CAM_PHOTON_MAX_J) ||
+        !closed(c->full_well_e, CAM_FULL_WELL_MIN_E, CAM_FULL_WELL_MAX_E) ||
+        !closed(c->dark_current_e_s, 0, CAM_DARK_MAX_E_S) ||
+        !open_closed(c->psf_peak_fraction, 0, one) ||
+        !open_closed(c->fov_rad, 0, OI_PI_R) ||
+        !closed(c->sun_exclusion_rad, 0, OI_PI_R) ||
+        c->n_times < 1 || c->n_times > OI_CAMERA_MAX_TIMES ||
+        c->n_gains < 1 || c->n_gains > OI_CAMERA_MAX_GAINS) {
+        return 0;
+    }
+    for (i = 0; i < c->n_times; i++) {
+        if (!open_closed(c->times_s[i], 0, CAM_TIME_MAX_S)) return 0;
+        if (i > 0 && !(c->times_s[i] > c->times_s[i - 1])) return 0;
+    }
+    for (i = 0; i < c->n_gains; i++) {
+        if (!open_closed(c->gains[i], 0, CAM_GAIN_MAX)) return 0;
+        if (i > 0 && !(c->gains[i] > c->gains[i - 1])) return 0;
+        if (!closed(c->read_noise_e[i], 0, CAM_READ_NOISE_MAX_E)) return 0;
+    }
+    return 1;
+}
+
+/* Goal with defaults filled in; 0 when a field is out of range. */
+static int goal_resolve(const oi_expose_goal *goal, oi_real *fill, oi_real *snr_min)
+{
+    *fill = GOAL_FILL_DEFAULT;
+    *snr_min = GOAL_SNR_DEFAULT;
+    if (goal == NULL) return 1;
+    if (goal->fill != 0) {
+        if (!open_closed(goal->fill, 0, OI_R(1.0))) return 0;
+        *fill = goal->fill;
+    }
+    if (goal->snr_min != 0) {
+        if (!open_closed(goal->snr_min, 0, GOAL_SNR_MAX)) return 0;
+        *snr_min = goal->snr_min;
+    }
+    return 1;
+}
+
+/* Signal-to-noise ratio of signal s over background b (electrons) with
+ * read noise rn: s / sqrt(s + b + rn^2); 0 when there is no noise at all. */
+static oi_real snr_of(oi_real s, oi_real b, oi_real rn)
+{
+    oi_real var = s + b + rn * rn;
+    return var > 0 ? s / OI_SQRT(var) : OI_R(0.0);
+}
+
+/* Fill *out for time index ti and gain index gi. */
+static void evaluate(const oi_camera *c, oi_real rate_s, oi_real rate_b, int ti, int gi,
+                     oi_exposure *out)
+{
+    oi_real t = c->times_s[ti];
+    out->exposure_s = t;
+    out->gain = c->gains[gi];
+    out->time_index = ti;
+    out->gain_index = gi;
+    out->signal_e = rate_s * t;
+    out->background_e = rate_b * t;
+    out->peak_e = out->signal_e + out->background_e;
+    out->saturation_e = c->full_well_e / c->gains[gi];
+    out->fill = out->peak_e / out->saturation_e;
+    out->snr = snr_of(out->signal_e, out->background_e, c->read_noise_e[gi]);
+}
+
+/*
+ * oi_flag_name: name of one exposure flag bit.
+ *
+ * Given:
+ *   flag_bit  unsigned  one OI_FLAG_* bit
+ *
+ * Returned (function value):
+ *             const char *  "sun_exclusion", "earth_in_fov", "eclipsed",
+ *                           "too_faint", "saturated", "penumbra",
+ *                           "occulted"; NULL for 0, a combination of bits
+ *                           or an unknown bit.
+ */
+const char *oi_flag_name(unsigned flag_bit)
+{
+    switch (flag_bit) {
+    case OI_FLAG_SUN_EXCLUSION: return "sun_exclusion";
+    case OI_FLAG_EARTH_IN_FOV: return "earth_in_fov";
+    case OI_FLAG_ECLIPSED: return "eclipsed";
+    case OI_FLAG_TOO_FAINT: return "too_faint";
+    case OI_FLAG_SATURATED: return "saturated";
+    case OI_FLAG_PENUMBRA: return "penumbra";
+    case OI_FLAG_OCCULTED: return "occulted";
+    default: return NULL;
+    }
+}
+
+/*
+ * oi_expose: choose the exposure time and gain for a point-like target.
+ *
+ * Given:
+ *   camera  const oi_camera *      the camera (see Notes 1 for valid ranges)
+ *   in      const oi_expose_in *   flux_w_m2: target flux at the aperture
+ *                                  (W/m^2, >= 0); background_w_m2_sr: sky
+ *                                  radiance behind the target (W/m^2/sr,
+ *                                  >= 0); flags: geometric OI_FLAG_* bits
+ *                                  already known (copied to the result)
+ *   goal    const oi_expose_goal * NULL or goals; zero fields = defaults
+ *                                  (fill 0.5 in (0, 1], snr_min 5 in (0, 1e6])
+ *
+ * Returned:
+ *   out     oi_exposure *          the chosen setting, its electrons, fill,
+ *                                  SNR and flags (sun_angle_rad is 0 here)
+ *
+ * Returned (function value):
+ *           int   OI_OK;
+ *                 OI_ERR_NULL       camera, in or out NULL;
+ *                 OI_ERR_CAMERA     a camera field out of range, times or
+ *                                   gains not strictly ascending, counts out
+ *                                   of range, or a goal field out of range;
+ *                 OI_ERR_NONFINITE  flux or background NaN or infinite;
+ *                 OI_ERR_MAGNITUDE  flux negative or brighter than magnitude
+ *                                   OI_MAG_MIN (> 2.74e4 W/m^2), background
+ *                                   negative or above 1e8 W/m^2/sr;
+ *                 OI_ERR_TERMS      unknown bits in in->flags.
+ *                 On error *out is zeroed.
+ *
+ * Notes:
+ *   1. Rates of photo-electrons (e-/s) in the brightest pixel, with
+ *      A = pi (D/2)^2 and k = transmission * band_fraction * QE / photon_energy:
+ *        target      S = flux * A * k * psf_peak_fraction
+ *        background  B = radiance * A * (pitch / focal)^2 * k + dark_current.
+ *      For exposure t and gain g: peak = (S + B) t, saturation = full_well / g,
+ *      fill = peak / saturation, SNR = S t / sqrt(S t + B t + read_noise(g)^2).
+ *   2. Choice: among the settings with fill < 1 and fill <= goal.fill, the
+ *      highest SNR (ties: lower gain, then shorter time); if none reaches
+ *      down to the goal, the non-saturating setting with the lowest fill;
+ *      if every setting saturates, the shortest time at the lowest gain and
+ *      OI_FLAG_SATURATED. OI_FLAG_TOO_FAINT when the SNR at the longest time
+ *      and highest gain is below goal.snr_min.
+ *   3. in->flags bits OI_FLAG_TOO_FAINT and OI_FLAG_SATURATED are ignored
+ *      (recomputed); the geometric bits are copied to out->flags.
+ *   4. Valid camera ranges: aperture (0, 10] m, focal length [1e-3, 1e3] m,
+ *      pitch [1e-7, 1e-3] m, transmission, QE, band_fraction and
+ *      psf_peak_fraction (0, 1], photon energy [1e-20, 1e-17] J, full well
+ *      [1, 1e9] e-, dark current [0, 1e9] e-/s, fov (0, pi], Sun exclusion
+ *      [0, pi], 1..OI_CAMERA_MAX_TIMES times in (0, 1e4] s strictly
+ *      ascending, 1..OI_CAMERA_MAX_GAINS gains in (0, 1e3] strictly
+ *      ascending, read noise [0, 1e6] e-. name is not used (may be NULL).
+ *   5. The target is treated as a point source: a resolved target puts less
+ *      than psf_peak_fraction of its light in one pixel, so fill and SNR
+ *      are then upper bounds.
+ *
+ * References: docs/camera.md; PHYSICS.md section 3 ("The camera").
+ */
+int oi_expose(const oi_camera *camera, const oi_expose_in *in,
+              const oi_expose_goal *goal, oi_exposure *out)
+{
+    oi_real goal_fill, snr_min, area, k, rate_s, rate_b, ifov, flux_max;
+    oi_exposure trial, best_goal, best_low;
+    int have_goal = 0, have_low = 0, ti, gi;
+    unsigned flags;
+
+    if (out == NULL) return OI_ERR_NULL;
+    memset(out, 0, sizeof *out);
+    if (camera == NULL || in == NULL) return OI_ERR_NULL;
+    if (!camera_valid(camera) || !goal_resolve(goal, &goal_fill, &snr_min)) return OI_ERR_CAMERA;
+    if (!OI_ISFINITE(in->flux_w_m2) || !OI_ISFINITE(in->background_w_m2_sr)) {
+        return OI_ERR_NONFINITE;
+    }
+    /* Brightest accepted flux: magnitude OI_MAG_MIN at the nominal TSI. */
+    flux_max = (oi_real)OI_TSI_W_M2 *
+               OI_POW(OI_R(10.0), (oi_real)(-0.4 * (OI_MAG_MIN - OI_SUN_MAG_V)));
+    if (!closed(in->flux_w_m2, 0, flux_max) ||
+        !closed(in->background_w_m2_sr, 0, IN_RADIANCE_MAX)) {
+        return OI_ERR_MAGNITUDE;
+    }
+    if ((in->flags & ~(unsigned)FLAGS_ALL) != 0u) return OI_ERR_TERMS;
+
+    area = OI_PI_R * OI_R(0.25) * camera->aperture_m * camera->aperture_m;
+    k = camera->transmission * camera->band_fraction * camera->quantum_efficiency /
+        camera->photon_energy_j;
+    ifov = camera->pixel_pitch_m / camera->focal_length_m;
+    rate_s = in->flux_w_m2 * area * k * camera->psf_peak_fraction;
+    rate_b = in->background_w_m2_sr * area * (ifov * ifov) * k + camera->dark_current_e_s;
+
+    memset(&trial, 0, sizeof trial);
+    best_goal = trial;
+    best_low = trial;
+    /* Gains ascending outside, times ascending inside: with strict
+     * comparisons the first of equals wins (lower gain, then shorter time). */
+    for (gi = 0; gi < camera->n_gains; gi++) {
+        for (ti = 0; ti < camera->n_times; ti++) {
+            evaluate(camera, rate_s, rate_b, ti, gi, &trial);
+            if (!(trial.fill < OI_R(1.0))) continue;
+            if (trial.fill <= goal_fill) {
+                if (!have_goal || trial.snr > best_goal.snr) {
+                    best_goal = trial;
+                    have_goal = 1;
+                }
+            } else if (!have_low || trial.fill < best_low.fill) {
+                best_low = trial;
+                have_low = 1;
+            }
+        }
+    }
+
+    flags = in->flags & (unsigned)FLAGS_GEOMETRIC;
+    if (have_goal) {
+        *out = best_goal;
+    } else if (have_low) {
+        *out = best_low;
+    } else {
+        evaluate(camera, rate_s, rate_b, 0, 0, out);
+        flags |= OI_FLAG_SATURATED;
+    }
+    evaluate(camera, rate_s, rate_b, camera->n_times - 1, camera->n_gains - 1, &trial);
+    if (trial.snr < snr_min) flags |= OI_FLAG_TOO_FAINT;
+    out->flags = flags;
+    out->sun_angle_rad = 0;
+    return OI_OK;
+}
+
+/*
+ * oi_expose_scene: exposure choice from a scene and its illumination.
+ *
+ * Given:
+ *   camera  const oi_camera *      the camera
+ *   scene   const oi_scene *       positions (km, Earth-centred); needs
+ *                                  has_observer; earth_albedo for the
+ *                                  background
+ *   illum   const oi_illum *       oi_illuminate's result for this scene
+ *                                  (flux_obs and shadow.region are used)
+ *   model   const oi_model *       NULL or model (Earth radius, TSI, AU)
+ *   goal    const oi_expose_goal * NULL or goals (see oi_expose)
+ *
+ * Returned:
+ *   out     oi_exposure *          as oi_expose, plus sun_angle_rad and the
+ *                                  geometric flags
+ *
+ * Returned (function value):
+ *           int   OI_OK;
+ *                 OI_ERR_NULL       a pointer NULL, or scene->has_observer 0
+ *                                   (the observer is a required input here);
+ *                 OI_ERR_MODEL, OI_ERR_RADIUS  model out of range;
+ *                 OI_ERR_NONFINITE  a position component not finite;
+ *                 OI_ERR_ZERO_VECTOR  Sun or observer at the Earth's centre;
+ *                 OI_ERR_BELOW_SURFACE  observer or target at or below the
+ *                                   surface;
+ *                 OI_ERR_OBSERVER_AT_TARGET  observer and target coincide;
+ *                 OI_ERR_ALBEDO     earth_albedo outside [0, 1];
+ *                 any status of oi_expose.  On error *out is zeroed.
+ *
+ * Notes:
+ *   1. Boresight b = target - observer. sun_angle_rad = angle(sun - observer,
+ *      b); OI_FLAG_SUN_EXCLUSION when it is below camera->sun_exclusion_rad.
+ *   2. OI_FLAG_EARTH_IN_FOV when the Earth's disc, of angular radius
+ *      asin(R / |observer|), comes within fov_rad / 2 of the boresight (the
+ *      diagonal field treated as a cone: conservative at the corners).
+ *   3. Background: where the boresight ray meets the Earth, the radiance of
+ *      a Lambertian Earth, earth_albedo * E0 * cos(i) / pi with
+ *      E0 = TSI (1 AU / |sun|)^2 and i the Sun's incidence angle there;
+ *      0 when that point is unlit or the ray misses the Earth (dark sky).
+ *      The background is physical and does not depend on scene->terms.
+ *   4. OI_FLAG_OCCULTED when the Earth lies between the observer and the
+ *      target: the target's flux is then taken as 0 (TOO_FAINT follows).
+ *   5. OI_FLAG_ECLIPSED when illum->shadow.region is OI_SHADOW_UMBRA,
+ *      OI_FLAG_PENUMBRA when it is OI_SHADOW_PENUMBRA or OI_SHADOW_ANNULAR
+ *      (part of the Sun hidden in both).
+ *   6. Not modelled: the Moon or the Earth's limb glow in the field, stray
+ *      light from the Sun outside the exclusion angle, the atmosphere's
+ *      radiance at the limb.
+ *
+ * References: docs/camera.md; PHYSICS.md sections 3-4.
+ */
+int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
+                    const oi_illum *illum, const oi_model *model,
+                    const oi_expose_goal *goal, oi_exposure *out)
+{
+    oi_model m;
+    oi_expose_in in;
+    oi_real b[3], bh[3], neg_obs[3], sun_rel[3], hit[3], sun_hit[3], nh[3], sh[3];
+    oi_real r_obs, r_tgt, range, re, sun_angle, gamma, rho, c, sc, ob, s_hit, cos_i, e0, au_d;
+    int st;
+
+    if (out == NULL) return OI_ERR_NULL;
+    memset(out, 0, sizeof *out);
+    if (camera == NULL || scene == NULL || illum == NULL) return OI_ERR_NULL;
+    if (!scene->has_observer) return OI_ERR_NULL;
+    st = oi__model_resolve(model, &m);
+    if (st != OI_OK) return st;
+    if (!oi__finite3(scene->sun_km) || !oi__finite3(scene->target_km) ||
+        !oi__finite3(scene->observer_km)) {
+        return OI_ERR_NONFINITE;
+    }
+    if (!(scene->earth_albedo >= 0 && scene->earth_albedo <= OI_R(1.0))) return OI_ERR_ALBEDO;
+    re = m.earth_radius_km;
+    r_obs = oi__norm(scene->observer_km);
+    r_tgt = oi__norm(scene->target_km);
+    if (r_obs == 0 || oi__norm(scene->sun_km) == 0) return OI_ERR_ZERO_VECTOR;
+    if (!(r_obs > re) || !(r_tgt > re)) return OI_ERR_BELOW_SURFACE;
+    oi__sub(scene->target_km, scene->observer_km, b);
+    range = oi__unit(b, bh);
+    if (range == 0) return OI_ERR_OBSERVER_AT_TARGET;
+
+    in.flux_w_m2 = illum->flux_obs;
+    in.background_w_m2_sr = 0;
+    in.flags = 0;
+
+    /* Sun exclusion. */
+    oi__sub(scene->sun_km, scene->observer_km, sun_rel);
+    sun_angle = oi_angle(sun_rel, b);
+    if (sun_angle < camera->sun_exclusion_rad) in.flags |= OI_FLAG_SUN_EXCLUSION;
+
+    /* Earth's disc against the field: gamma = boresight to Earth centre,
+     * rho = asin(R/r) as atan2(R, sqrt((r-R)(r+R))) (no cancellation). */
+    neg_obs[0] = -scene->observer_km[0];
+    neg_obs[1] = -scene->observer_km[1];
+    neg_obs[2] = -scene->observer_km[2];
+    gamma = oi_angle(neg_obs, b);
+    c = (r_obs - re) * (r_obs + re); /* |o|^2 - R^2 > 0 */
+    sc = OI_SQRT(c);
+    rho = OI_ATAN2(re, sc);
+    if (gamma - rho < OI_R(0.5) * camera->fov_rad) in.flags |= OI_FLAG_EARTH_IN_FOV;
+
+    /* Boresight ray o + s bh against the sphere |x| = R: s^2 + 2 ob s + c = 0.
+     * It hits when ob < 0 and ob^2 >= c; the near root c / (-ob + sqrt(ob^2 - c))
+     * avoids cancellation, and ob^2 - c = (-ob - sc)(-ob + sc). */
+    ob = oi__dot(scene->observer_km, bh);
+    if (ob < 0 && -ob >= sc) {
+        s_hit = c / (-ob + OI_SQRT((-ob - sc) * (-ob + sc)));
+        hit[0] = scene->observer_km[0] + s_hit * bh[0];
+        hit[1] = scene->observer_km[1] + s_hit * bh[1];
+        hit[2] = scene->observer_km[2] + s_hit * bh[2];
+        if (s_hit < range) in.flags |= OI_FLAG_OCCULTED;
+        oi__sub(scene->sun_km, hit, sun_hit);
+        (void)oi__unit(hit, nh);
+        (void)oi__unit(sun_hit, sh);
+        cos_i = oi__dot(nh, sh);
+        if (cos_i > 0) {
+            au_d = m.au_km / oi__norm(scene->sun_km);
+            e0 = m.tsi_w_m2 * au_d * au_d;
+            in.background_w_m2_sr = scene->earth_albedo * e0 * cos_i / OI_PI_R;
+        }
+    }
+    if (in.flags & OI_FLAG_OCCULTED) in.flux_w_m2 = 0;
+
+    if (illum->shadow.region == OI_SHADOW_UMBRA) {
+        in.flags |= OI_FLAG_ECLIPSED;
+    } else if (illum->shadow.region == OI_SHADOW_PENUMBRA ||
+               illum->shadow.region == OI_SHADOW_ANNULAR) {
+        in.flags |= OI_FLAG_PENUMBRA;
+    }
+
+    st = oi_expose(camera, &in, goal, out);
+    if (st < 0) return st;
+    out->sun_angle_rad = sun_angle;
+    return st;
+}
+
+#endif /* OI_NO_EXPOSURE */
