@@ -1,0 +1,45 @@
+# SPDX-License-Identifier: MIT
+# mk/python.mk: the shared library, the Python binding, real-use examples (issue 7).
+#
+#   make shared        build/liborbillum.so (double) from src/*.c tables/*.c, -fPIC, strict flags
+#   make binding       install the binding (python/) into the venv (pip install ./python)
+#   make pass-example  a shipped TLE case -> planner CSV -> pass plan -> plot + rendered view,
+#                      in build/pass-example/ (PASS_CASE=geo-inspector-eclipse by default)
+#   make gallery       regenerate docs/gallery/ from the three shipped cases
+
+SHARED_LIB := $(BUILDDIR)/liborbillum.so
+RT_HDR := $(wildcard include/*.h src/*.h tables/*.h)
+PY_BINDING_SRC := python/pyproject.toml python/setup.py $(wildcard python/orbillum/*.py)
+PASS_CASE ?= geo-inspector-eclipse
+PASS_DIR := $(BUILDDIR)/pass-example
+
+.PHONY: shared binding pass-example gallery
+
+shared: $(SHARED_LIB) ## build build/liborbillum.so (double precision, for the Python binding)
+
+$(SHARED_LIB): $(RT_SRC) $(RT_HDR)
+	@mkdir -p $(dir $@)
+	$(CC) $(WARN) $(OPT) -fPIC -shared -Iinclude -Isrc -Itables $(RT_SRC) -lm -o $@
+
+binding: $(VENV)/.orbillum-binding ## pip install ./python into the venv (builds its own liborbillum.so)
+$(VENV)/.orbillum-binding: $(PY_BINDING_SRC) $(RT_SRC) $(RT_HDR) | deps-py
+	$(PY) -m pip install -q --disable-pip-version-check --no-build-isolation --no-deps ./python
+	@rm -rf python/build python/*.egg-info
+	@touch $@
+
+# The Python tests exercise the installed binding.
+test-py: binding
+
+pass-example: all binding ## shipped TLE case -> pass plan CSV + plot + rendered view (build/pass-example/)
+	@mkdir -p $(PASS_DIR)
+	$(PY) -m examples.scenarios --case $(PASS_CASE) -o $(PASS_DIR)/$(PASS_CASE).csv
+	$(PLAN) --csv $(PASS_DIR)/$(PASS_CASE).csv > $(PASS_DIR)/$(PASS_CASE)-plan.csv || [ $$? -eq 1 ]
+	$(PY) -m examples.render.pass_plot $(PASS_DIR)/$(PASS_CASE).csv $(PASS_DIR)/$(PASS_CASE)-plan.csv \
+	  -o $(PASS_DIR)/$(PASS_CASE)-pass.png
+	$(PY) -m examples.render.view $(PASS_DIR)/$(PASS_CASE).csv -o $(PASS_DIR)/$(PASS_CASE)-view.png
+	@echo "pass plan: $(PASS_DIR)/$(PASS_CASE)-plan.csv"
+	@echo "plot:      $(PASS_DIR)/$(PASS_CASE)-pass.png"
+	@echo "view:      $(PASS_DIR)/$(PASS_CASE)-view.png"
+
+gallery: all binding ## regenerate docs/gallery/ (pass plots and views of the shipped cases)
+	$(PY) -m examples.render.gallery --plan $(PLAN) --out docs/gallery

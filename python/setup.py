@@ -1,0 +1,50 @@
+# SPDX-License-Identifier: MIT
+"""Build hook: compile the runtime (../src/*.c, ../tables/*.c) into orbillum/liborbillum.so.
+
+The C sources live beside this directory in the repository, so install from a
+checkout: ``pip install ./python``. The flags are the repository's strict flags
+(Makefile WARN) plus -fPIC; the compiler is $CC or cc. Set ORBILLUM_LIB at run
+time to use another build instead (e.g. build/liborbillum.so from ``make shared``).
+"""
+import glob
+import os
+import shlex
+import subprocess
+
+from setuptools import setup
+from setuptools.command.build_py import build_py
+from setuptools.dist import Distribution
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+WARN = ("-std=c99 -Wall -Wextra -Wpedantic -Wconversion -Wshadow -Wdouble-promotion "
+        "-Werror").split()
+
+
+class BuildWithLibrary(build_py):
+    def run(self):
+        super().run()
+        src = sorted(glob.glob(os.path.join(ROOT, "src", "*.c")) +
+                     glob.glob(os.path.join(ROOT, "tables", "*.c")))
+        if not src:
+            raise SystemExit("orbillum: the C sources (../src) are not beside python/: "
+                             "install from a repository checkout with `pip install ./python`")
+        out_dir = os.path.join(self.build_lib, "orbillum")
+        os.makedirs(out_dir, exist_ok=True)
+        out = os.path.join(out_dir, "liborbillum.so")
+        cc = shlex.split(os.environ.get("CC", "cc"))
+        cmd = cc + WARN + ["-O2", "-fPIC", "-shared"] + [
+            "-I" + os.path.join(ROOT, d) for d in ("include", "src", "tables")
+        ] + src + ["-lm", "-o", out]
+        print(" ".join(cmd))
+        subprocess.check_call(cmd)
+
+
+class BinaryDistribution(Distribution):
+    """The wheel carries a compiled library: tag it for this platform."""
+
+    def has_ext_modules(self):
+        return True
+
+
+setup(cmdclass={"build_py": BuildWithLibrary}, distclass=BinaryDistribution)
