@@ -1,0 +1,447 @@
+/* SPDX-License-Identifier: MIT */
+/* batch.c: the batch interface of the planner (see batch.h, docs/planner.md).
+ * Columns are matched by name (case-insensitive), in any order; unknown
+ * columns are ignored with a note. A row that cannot be parsed or computed
+ * gets its status and empty numbers; the batch goes on. */
+#define _POSIX_C_SOURCE 200809L /* isatty, fileno: progress only on a terminal */
+
+#include "batch.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "csv_read.h"
+#include "output.h"
+
+enum column {
+    C_ID,
+    C_SUN_X, C_SUN_Y, C_SUN_Z,
+    C_TARGET_X, C_TARGET_Y, C_TARGET_Z,
+    C_MOON_X, C_MOON_Y, C_MOON_Z,
+    C_OBSERVER_X, C_OBSERVER_Y, C_OBSERVER_Z,
+    C_TERMS, C_EARTH_ALBEDO, C_TARGET_ALBEDO, C_TARGET_RADIUS, C_CAMERA, C_ATMOSPHERE,
+    C_COUNT
+};
+
+static const char *const column_name[C_COUNT] = {
+    "id",
+    "sun_x", "sun_y", "sun_z",
+    "target_x", "target_y", "target_z",
+    "moon_x", "moon_y", "moon_z",
+    "observer_x", "observer_y", "observer_z",
+    "terms", "earth_albedo", "target_albedo", "target_radius_m", "camera", "atmosphere"
+};
+
+typedef struct batch {
+    long col[C_COUNT];        /* field index of each known column, -1 if absent */
+    size_t header_fields;
+    const oi_camera *default_camera;
+    const char *path;
+    int warned_extra;
+} batch;
+
+/* ASCII case-insensitive equality. */
+static int same_nocase(const char *a, const char *b)
+{
+    while (*a && *b) {
+        if (tolower((unsigned char)*a) != tolower((unsigned char)*b)) return 0;
+        a++;
+        b++;
+    }
+    return *a == *b;
+}
+
+/* Report a problem with a row on stderr. */
+static void row_error(const batch *b, unsigned long line, long field, const char *what,
+                      const char *detail)
+{
+    fprintf(stderr, "oi-plan: %s: line %lu", b->path, line);
+    if (field >= 0) fprintf(stderr, ", column %ld", field + 1);
+    fprintf(stderr, ": %s", what);
+    if (detail) fprintf(stderr, " %s", detail);
+    fputc('\n', stderr);
+}
+
+/* Map the header; returns 0 or PLAN_EXIT_INPUT after printing why. */
+static int read_header(batch *b, csv_reader *r)
+{
+    size_t i;
+    int k, st, missing = 0;
+    static const int required[] = {C_SUN_X, C_SUN_Y, C_SUN_Z, C_TARGET_X, C_TARGET_Y, C_TARGET_Z};
+    static const int groups[][3] = {{C_MOON_X, C_MOON_Y, C_MOON_Z},
+                                    {C_OBSERVER_X, C_OBSERVER_Y, C_OBSERVER_Z}};
+
+    for (k = 0; k < C_COUNT; k++) b->col[k] = -1;
+    st = csv_next(r);
+    if (st == CSV_END) {
+        fprintf(stderr, "oi-plan: %s: empty input: expected a header row naming the columns "
+                        "(at least sun_x,sun_y,sun_z,target_x,target_y,target_z)\n", b->path);
+        return PLAN_EXIT_INPUT;
+    }
+    if (st != CSV_RECORD) {
+        fprintf(stderr, "oi-plan: %s: line %lu, column %lu: cannot read the header: %s\n",
+                b->path, r->err_line, r->err_col, csv_result_text(st));
+        return PLAN_EXIT_INPUT;
+    }
+    b->header_fields = csv_nfields(r);
+    for (i = 0; i < csv_nfields(r); i++) {
+        const char *name = csv_field(r, i);
+        int found = 0;
+        for (k = 0; k < C_COUNT; k++) {
+            if (!same_nocase(name, column_name[k])) continue;
+            found = 1;
+            if (b->col[k] >= 0) {
+                fprintf(stderr, "oi-plan: %s: line %lu: column '%s' appears twice "
+                                "(columns %ld and %lu)\n",
+                        b->path, r->rec_line, column_name[k], b->col[k] + 1,
+                        (unsigned long)i + 1);
+                return PLAN_EXIT_INPUT;
+            }
+            b->col[k] = (long)i;
+        }
+        if (!found) {
+            fprintf(stderr, "oi-plan: %s: note: ignoring unknown column %lu '%.60s'\n", b->path,
+                    (unsigned long)i + 1, name);
+        }
+    }
+    for (k = 0; k < (int)(sizeof required / sizeof required[0]); k++) {
+        if (b->col[required[k]] < 0) {
+            fprintf(stderr, "oi-plan: %s: line %lu: missing required column '%s'\n", b->path,
+                    r->rec_line, column_name[required[k]]);
+            missing = 1;
+        }
+    }
+    for (k = 0; k < 2; k++) {
+        int n = (b->col[groups[k][0]] >= 0) + (b->col[groups[k][1]] >= 0) +
+                (b->col[groups[k][2]] >= 0);
+        if (n != 0 && n != 3) {
+            fprintf(stderr, "oi-plan: %s: line %lu: columns %s, %s, %s must come together\n",
+                    b->path, r->rec_line, column_name[groups[k][0]], column_name[groups[k][1]],
+                    column_name[groups[k][2]]);
+            missing = 1;
+        }
+    }
+    if (missing) {
+        fprintf(stderr, "oi-plan: the header must name at least: "
+                        "sun_x,sun_y,sun_z,target_x,target_y,target_z (any order)\n");
+        return PLAN_EXIT_INPUT;
+    }
+    return 0;
+}
+
+/* Text of column k in the current record: NULL when the column is absent
+ * from the header, "" when empty. *short_row is set when the header has the
+ * column but the row is too short. */
+static const char *field_of(const batch *b, const csv_reader *r, int k, int *short_row)
+{
+    const char *s;
+    if (b->col[k] < 0) return NULL;
+    s = csv_field(r, (size_t)b->col[k]);
+    if (s == NULL) {
+        *short_row = 1;
+        return "";
+    }
+    return s;
+}
+
+/* Parse a real; returns 0 and *out, 1 for an empty field, -1 for text that
+ * is not a number. NaN and infinities are numbers here (the library then
+ * reports ERR_NONFINITE); values out of the double range read as inf. */
+static int parse_real(const char *s, double *out)
+{
+    char *end;
+    const char *p = s;
+    while (*p == ' ' || *p == '\t') p++;
+    if (*p == '\0') return 1;
+    errno = 0;
+    *out = strtod(p, &end);
+    if (end == p) return -1;
+    while (*end == ' ' || *end == '\t') end++;
+    return *end == '\0' ? 0 : -1;
+}
+
+/* Parse a terms list ("sun+earth+moon", "all"); 0 or -1. */
+static int parse_terms(const char *s, unsigned *terms)
+{
+    char tok[16];
+    const char *p = s;
+    *terms = 0;
+    for (;;) {
+        size_t n = 0;
+        while (*p == ' ' || *p == '\t') p++;
+        while (*p && *p != '+' && *p != ' ' && *p != '\t') {
+            if (n + 1 >= sizeof tok) return -1;
+            tok[n++] = *p++;
+        }
+        tok[n] = '\0';
+        while (*p == ' ' || *p == '\t') p++;
+        if (same_nocase(tok, "sun")) *terms |= OI_TERM_SUN;
+        else if (same_nocase(tok, "earth")) *terms |= OI_TERM_EARTH;
+        else if (same_nocase(tok, "moon")) *terms |= OI_TERM_MOON;
+        else if (same_nocase(tok, "all")) *terms |= OI_TERM_ALL;
+        else return -1;
+        if (*p == '\0') return 0;
+        if (*p != '+') return -1;
+        p++;
+    }
+}
+
+/* Read a group of three coordinates; returns 1 given, 0 all empty or the
+ * columns absent, -1 after reporting a parse error. */
+static int parse_vec(const batch *b, const csv_reader *r, int k0, oi_real v[3], int required)
+{
+    int i, given = 0, first_empty = -1, short_row = 0;
+    for (i = 0; i < 3; i++) {
+        const char *s = field_of(b, r, k0 + i, &short_row);
+        double x = 0;
+        int st;
+        if (s == NULL) return 0;
+        st = parse_real(s, &x);
+        if (st < 0) {
+            char detail[96];
+            snprintf(detail, sizeof detail, "for %s, got \"%.60s\"", column_name[k0 + i], s);
+            row_error(b, r->rec_line, b->col[k0 + i], "expected a number", detail);
+            return -1;
+        }
+        if (st == 1) {
+            if (first_empty < 0) first_empty = i;
+        } else {
+            given++;
+        }
+        v[i] = (oi_real)x;
+    }
+    if (given == 3) return 1;
+    if (given == 0 && !required) return 0;
+    row_error(b, r->rec_line, b->col[k0 + first_empty],
+              required ? "empty field for a required column:"
+                       : "empty field (give all three coordinates or none):",
+              column_name[k0 + first_empty]);
+    return -1;
+}
+
+/* Optional scalar column: 0 absent or empty (value untouched), 1 given,
+ * -1 parse error (reported). */
+static int parse_opt(const batch *b, const csv_reader *r, int k, double *value)
+{
+    int sr = 0, st;
+    const char *s = field_of(b, r, k, &sr);
+    if (s == NULL) return 0;
+    st = parse_real(s, value);
+    if (st == 1) return 0;
+    if (st < 0) {
+        char detail[96];
+        snprintf(detail, sizeof detail, "for %s, got \"%.60s\"", column_name[k], s);
+        row_error(b, r->rec_line, b->col[k], "expected a number", detail);
+        return -1;
+    }
+    return 1;
+}
+
+/* Build the scene of one record and compute it. Returns 1 when the row is
+ * OK (or a warning), 0 when it is an error; fills row. */
+static int run_row(batch *b, const csv_reader *r, plan_row *row)
+{
+    oi_scene sc;
+    oi_model model;
+    const oi_camera *cam = b->default_camera;
+    int has_moon, st, short_row = 0;
+    double x;
+    const char *s;
+    unsigned terms;
+
+    memset(row, 0, sizeof *row);
+    row->status_name = PLAN_STATUS_PARSE;
+    oi_scene_defaults(&sc);
+    memset(&model, 0, sizeof model);
+
+    if (csv_nfields(r) < b->header_fields) {
+        size_t k;
+        for (k = 0; k < C_COUNT; k++) {
+            if (b->col[k] >= 0 && (size_t)b->col[k] >= csv_nfields(r)) {
+                char detail[96];
+                snprintf(detail, sizeof detail, "(row has %lu fields, the header %lu): %s",
+                         (unsigned long)csv_nfields(r), (unsigned long)b->header_fields,
+                         column_name[k]);
+                row_error(b, r->rec_line, b->col[k], "missing field", detail);
+                return 0;
+            }
+        }
+    } else if (csv_nfields(r) > b->header_fields && !b->warned_extra) {
+        fprintf(stderr, "oi-plan: %s: line %lu: note: row has more fields than the header; "
+                        "extra fields ignored (reported once)\n", b->path, r->rec_line);
+        b->warned_extra = 1;
+    }
+
+    if (parse_vec(b, r, C_SUN_X, sc.sun_km, 1) < 0) return 0;
+    if (parse_vec(b, r, C_TARGET_X, sc.target_km, 1) < 0) return 0;
+    has_moon = parse_vec(b, r, C_MOON_X, sc.moon_km, 0);
+    if (has_moon < 0) return 0;
+    st = parse_vec(b, r, C_OBSERVER_X, sc.observer_km, 0);
+    if (st < 0) return 0;
+    sc.has_observer = st;
+
+    terms = OI_TERM_SUN | OI_TERM_EARTH | (has_moon ? OI_TERM_MOON : 0u);
+    s = field_of(b, r, C_TERMS, &short_row);
+    if (s != NULL && s[0] != '\0') {
+        if (parse_terms(s, &terms) != 0) {
+            char detail[120];
+            snprintf(detail, sizeof detail, "got \"%.60s\"; expected sun, earth, moon joined "
+                                            "by '+', or all", s);
+            row_error(b, r->rec_line, b->col[C_TERMS], "bad terms:", detail);
+            return 0;
+        }
+        if ((terms & OI_TERM_MOON) && !has_moon) {
+            row_error(b, r->rec_line, b->col[C_TERMS],
+                      "terms include moon but moon_x, moon_y, moon_z are not given", NULL);
+            return 0;
+        }
+    }
+    sc.terms = terms;
+
+    x = (double)sc.earth_albedo;
+    if ((st = parse_opt(b, r, C_EARTH_ALBEDO, &x)) < 0) return 0;
+    sc.earth_albedo = (oi_real)x;
+    x = (double)sc.target_albedo;
+    if ((st = parse_opt(b, r, C_TARGET_ALBEDO, &x)) < 0) return 0;
+    sc.target_albedo = (oi_real)x;
+    x = (double)sc.target_radius_m;
+    if ((st = parse_opt(b, r, C_TARGET_RADIUS, &x)) < 0) return 0;
+    sc.target_radius_m = (oi_real)x;
+    x = 1;
+    if ((st = parse_opt(b, r, C_ATMOSPHERE, &x)) < 0) return 0;
+    if (x != 0 && x != 1) {
+        row_error(b, r->rec_line, b->col[C_ATMOSPHERE],
+                  "atmosphere must be 1 (default) or 0 (as if the Earth had none)", NULL);
+        return 0;
+    }
+    model.no_atmosphere = x == 0;
+
+    s = field_of(b, r, C_CAMERA, &short_row);
+    if (s != NULL && s[0] != '\0') {
+        cam = oi_camera_find(s);
+        if (cam == NULL) {
+            int i;
+            fprintf(stderr, "oi-plan: %s: line %lu, column %ld: unknown camera \"%.60s\"; "
+                            "built-in cameras:", b->path, r->rec_line, b->col[C_CAMERA] + 1, s);
+            for (i = 0; oi_camera_builtin(i) != NULL; i++) {
+                fprintf(stderr, " %s", oi_camera_builtin(i)->name);
+            }
+            fputc('\n', stderr);
+            row->status = OI_ERR_CAMERA;
+            row->status_name = oi_status_name(OI_ERR_CAMERA);
+            return 0;
+        }
+    }
+
+    st = oi_illuminate(&sc, &model, &row->illum);
+    row->status = st;
+    row->status_name = oi_status_name(st);
+    if (st < 0) {
+        row_error(b, r->rec_line, -1, "cannot compute the row:", row->status_name);
+        return 0;
+    }
+    if (row->illum.shadow.region == OI_SHADOW_UMBRA) {
+        row->flags |= OI_FLAG_ECLIPSED;
+    } else if (row->illum.shadow.region != OI_SHADOW_LIT) {
+        row->flags |= OI_FLAG_PENUMBRA;
+    }
+    if (sc.has_observer) {
+        int st2 = oi_expose_scene(cam, &sc, &row->illum, &model, NULL, &row->expo);
+        if (st2 < 0) {
+            row->status = st2;
+            row->status_name = oi_status_name(st2);
+            row_error(b, r->rec_line, -1, "cannot compute the exposure:", row->status_name);
+            return 0;
+        }
+        row->flags = row->expo.flags;
+        row->has_observer = 1;
+    }
+    row->has_numbers = 1;
+    return 1;
+}
+
+/* Progress on stderr, only when it is a terminal, at most once a second. */
+static void progress(unsigned long rows, time_t *last, int tty)
+{
+    time_t now;
+    if (!tty || (rows & 1023u) != 0u) return;
+    now = time(NULL);
+    if (now == *last) return;
+    *last = now;
+    fprintf(stderr, "\roi-plan: %lu rows...", rows);
+    fflush(stderr);
+}
+
+int batch_run(const char *path, const oi_camera *default_camera, FILE *out)
+{
+    batch b;
+    csv_reader r;
+    FILE *fp;
+    int st, result = PLAN_EXIT_OK, tty;
+    unsigned long rows = 0, bad = 0;
+    time_t last;
+
+    memset(&b, 0, sizeof b);
+    b.default_camera = default_camera;
+    b.path = strcmp(path, "-") == 0 ? "<stdin>" : path;
+    fp = strcmp(path, "-") == 0 ? stdin : fopen(path, "rb");
+    if (fp == NULL) {
+        fprintf(stderr, "oi-plan: cannot open '%s': %s\n", path, strerror(errno));
+        return PLAN_EXIT_INPUT;
+    }
+    csv_init(&r, fp);
+    st = read_header(&b, &r);
+    if (st != 0) {
+        csv_free(&r);
+        if (fp != stdin) fclose(fp);
+        return st;
+    }
+    out_csv_header(out);
+    tty = isatty(fileno(stderr));
+    last = time(NULL);
+
+    for (;;) {
+        plan_row row;
+        char idbuf[32];
+        const char *id;
+        int sr = 0;
+        st = csv_next(&r);
+        if (st == CSV_END) break;
+        rows++;
+        snprintf(idbuf, sizeof idbuf, "%lu", rows);
+        if (st == CSV_IO || st == CSV_NOMEM) {
+            fprintf(stderr, "oi-plan: %s: line %lu: %s\n", b.path, r.line, csv_result_text(st));
+            result = PLAN_EXIT_INPUT;
+            break;
+        }
+        if (st != CSV_RECORD) {
+            fprintf(stderr, "oi-plan: %s: line %lu, character %lu: %s\n", b.path, r.err_line,
+                    r.err_col, csv_result_text(st));
+            memset(&row, 0, sizeof row);
+            row.status_name = PLAN_STATUS_PARSE;
+            out_csv_row(out, b.col[C_ID] >= 0 ? "" : idbuf, &row);
+            bad++;
+            continue;
+        }
+        id = b.col[C_ID] >= 0 ? field_of(&b, &r, C_ID, &sr) : idbuf;
+        if (!run_row(&b, &r, &row)) bad++;
+        out_csv_row(out, id, &row);
+        progress(rows, &last, tty);
+    }
+    if (tty && rows >= 1024) fprintf(stderr, "\roi-plan: %lu rows done.   \n", rows);
+    if (bad > 0) {
+        fprintf(stderr, "oi-plan: %lu of %lu rows had errors\n", bad, rows);
+        if (result == PLAN_EXIT_OK) result = PLAN_EXIT_ROWS;
+    }
+    if (fflush(out) != 0 || ferror(out)) {
+        fprintf(stderr, "oi-plan: error writing the output\n");
+        result = PLAN_EXIT_INPUT;
+    }
+    csv_free(&r);
+    if (fp != stdin) fclose(fp);
+    return result;
+}

@@ -1,0 +1,26 @@
+/* SPDX-License-Identifier: MIT */
+/* batch.h: the planner's batch interface (--csv FILE|-): read the scenario
+ * CSV, run the library on every row, write the result CSV. */
+#ifndef OI_PLAN_BATCH_H
+#define OI_PLAN_BATCH_H
+
+#include <stdio.h>
+
+#include "orbillum.h"
+
+/* Status name of a row whose text could not be parsed (planner level, not a
+ * library status). */
+#define PLAN_STATUS_PARSE "ERR_PARSE"
+
+/* Exit codes. */
+#define PLAN_EXIT_OK 0       /* every row OK (warnings count as OK) */
+#define PLAN_EXIT_ROWS 1     /* some rows had errors */
+#define PLAN_EXIT_INPUT 2    /* unusable input: no header, missing required
+                                column, unreadable file, bad options */
+
+/* Run the batch on path ("-" for standard input), writing CSV to out and
+ * messages to stderr. Rows without a camera column use default_camera.
+ * Returns a PLAN_EXIT_* code. */
+int batch_run(const char *path, const oi_camera *default_camera, FILE *out);
+
+#endif

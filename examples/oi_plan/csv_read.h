@@ -1,0 +1,53 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * csv_read.h: a streaming CSV record reader (RFC 4180 and the usual
+ * deviations): comma separator, fields optionally in double quotes with ""
+ * for a quote and line breaks allowed inside quotes, LF, CRLF or CR line
+ * ends, a UTF-8 byte-order mark skipped, empty or blank lines skipped,
+ * spaces and tabs around unquoted fields trimmed. A record longer than
+ * CSV_MAX_RECORD bytes is rejected (and skipped) instead of exhausting
+ * memory.
+ */
+#ifndef OI_PLAN_CSV_READ_H
+#define OI_PLAN_CSV_READ_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#define CSV_MAX_RECORD (1u << 20) /* bytes per record */
+
+enum csv_result {
+    CSV_RECORD = 0,   /* a record was read */
+    CSV_END = 1,      /* end of input, no record */
+    CSV_TOO_LONG = 2, /* record longer than CSV_MAX_RECORD: skipped to its line end */
+    CSV_BAD_QUOTE = 3,/* text after a closing quote, or a quote never closed */
+    CSV_BAD_BYTE = 4, /* a NUL byte in the record */
+    CSV_IO = 5,       /* read error */
+    CSV_NOMEM = 6     /* out of memory */
+};
+
+typedef struct csv_reader {
+    FILE *fp;
+    unsigned long line;       /* physical line of the next byte (1-based) */
+    unsigned long col;        /* column (byte in line, 1-based) of the next byte */
+    unsigned long rec_line;   /* line where the last record started */
+    unsigned long err_line;   /* where the last error was found */
+    unsigned long err_col;
+    char *buf;                /* field text, each NUL-terminated */
+    size_t len, cap;
+    size_t *start;            /* offset of each field in buf */
+    size_t nfields, fcap;
+    int started;              /* BOM check done */
+} csv_reader;
+
+void csv_init(csv_reader *r, FILE *fp);
+void csv_free(csv_reader *r);
+/* Read the next non-blank record; returns an enum csv_result. */
+int csv_next(csv_reader *r);
+size_t csv_nfields(const csv_reader *r);
+/* Field i of the last record (NUL-terminated), or NULL past the end. */
+const char *csv_field(const csv_reader *r, size_t i);
+/* Human-readable text of a csv_result. */
+const char *csv_result_text(int result);
+
+#endif

@@ -1,0 +1,164 @@
+/* SPDX-License-Identifier: MIT */
+/* main.c: oi-plan, the exposure planner: command line (docs/planner.md). */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "batch.h"
+#include "orbillum.h"
+#include "scenario.h"
+
+static void usage(FILE *fp)
+{
+    fputs(
+        "usage: oi-plan [--camera NAME] [--step SECONDS]\n"
+        "       oi-plan --csv FILE|- [--camera NAME]\n"
+        "       oi-plan --list-cameras | --help\n"
+        "\n"
+        "How an object in orbit is lit by the Sun, the Earth and the Moon, and how a\n"
+        "camera should expose it.\n"
+        "\n"
+        "Without --csv: the built-in scenario, an inspector photographing a target\n"
+        "over one orbit in LEO through eclipse: a table (time, Sun fraction,\n"
+        "irradiance per source, magnitude, exposure, gain, SNR, flags) and a summary\n"
+        "of the best observation windows.\n"
+        "\n"
+        "options:\n"
+        "  --csv FILE      batch mode: one output row per input row (FILE '-' = stdin)\n"
+        "  --camera NAME   default camera (built-in name; default: the first one)\n"
+        "  --step SECONDS  table step of the built-in scenario (default 120)\n"
+        "  --list-cameras  list the built-in cameras and their parameters\n"
+        "  --help          this text\n"
+        "\n"
+        "Batch input (CSV with a header row; columns in any order, names not\n"
+        "case-sensitive, unknown columns ignored; positions Earth-centred inertial, km):\n"
+        "  required  sun_x,sun_y,sun_z,target_x,target_y,target_z\n"
+        "  optional  id, moon_x,moon_y,moon_z, observer_x,observer_y,observer_z,\n"
+        "            terms (sun+earth+moon; default: all given), earth_albedo (0.30),\n"
+        "            target_albedo (0.2), target_radius_m (1.0), camera (built-in name),\n"
+        "            atmosphere (1, or 0 = as if the Earth had none)\n"
+        "Batch output (numbers with %.17g; empty when not computed):\n"
+        "  id,status,sun_fraction,sun_fraction_atm,e_sun,e_earth,e_moon,earth_theta_deg,\n"
+        "  earth_h_km,flux_obs,mag_v,exposure_s,gain,snr,flags\n"
+        "  status: OK, WARN_* (computed), ERR_* (row failed; ERR_PARSE: bad text).\n"
+        "  flags: sun_exclusion, earth_in_fov, eclipsed, penumbra, occulted, too_faint,\n"
+        "         saturated, joined by '+'.\n"
+        "\n"
+        "exit status: 0 all rows OK (warnings included), 1 some rows had errors,\n"
+        "             2 unusable input (no header, missing required column,\n"
+        "             unreadable file) or bad options.\n"
+        "\n"
+        "examples:\n"
+        "  oi-plan                                 # built-in scenario\n"
+        "  oi-plan --camera telescope-15cm --step 60\n"
+        "  oi-plan --csv pass.csv > plan.csv       # batch\n"
+        "  printf 'sun_x,sun_y,sun_z,target_x,target_y,target_z\\n1.496e8,0,0,0,7000,0\\n' \\\n"
+        "      | oi-plan --csv -\n"
+        "  oi-plan --list-cameras\n",
+        fp);
+}
+
+static void list_cameras(FILE *fp)
+{
+    int i;
+    const double deg = 180.0 / 3.14159265358979323846;
+    for (i = 0; oi_camera_builtin(i) != NULL; i++) {
+        const oi_camera *c = oi_camera_builtin(i);
+        int k;
+        fprintf(fp, "%s%s\n", c->name, i == 0 ? "  (default)" : "");
+        fprintf(fp, "  aperture %.1f mm, focal length %.1f mm, pixel %.2f um, field %.3f deg "
+                    "(diagonal), Sun exclusion %.0f deg\n",
+                (double)c->aperture_m * 1e3, (double)c->focal_length_m * 1e3,
+                (double)c->pixel_pitch_m * 1e6, (double)c->fov_rad * deg,
+                (double)c->sun_exclusion_rad * deg);
+        fprintf(fp, "  transmission %.2f, QE %.2f, in-band sunlight %.4f, photon %.4g J, "
+                    "PSF peak %.2f\n",
+                (double)c->transmission, (double)c->quantum_efficiency,
+                (double)c->band_fraction, (double)c->photon_energy_j,
+                (double)c->psf_peak_fraction);
+        fprintf(fp, "  full well %.0f e-, dark %.3g e-/s\n", (double)c->full_well_e,
+                (double)c->dark_current_e_s);
+        fprintf(fp, "  exposures [s]:");
+        for (k = 0; k < c->n_times; k++) fprintf(fp, " %g", (double)c->times_s[k]);
+        fprintf(fp, "\n  gains (read noise e-):");
+        for (k = 0; k < c->n_gains; k++) {
+            fprintf(fp, " %g (%g)", (double)c->gains[k], (double)c->read_noise_e[k]);
+        }
+        fprintf(fp, "\n");
+    }
+}
+
+/* Value of an option given as "--opt VALUE" or "--opt=VALUE"; NULL if the
+ * argument is not this option. Advances *i past a separate value. */
+static const char *option_value(int argc, char **argv, int *i, const char *name, int *missing)
+{
+    size_t n = strlen(name);
+    const char *a = argv[*i];
+    if (strncmp(a, name, n) != 0) return NULL;
+    if (a[n] == '=') return a + n + 1;
+    if (a[n] != '\0') return NULL;
+    if (*i + 1 >= argc) {
+        *missing = 1;
+        return NULL;
+    }
+    (*i)++;
+    return argv[*i];
+}
+
+int main(int argc, char **argv)
+{
+    const char *csv = NULL, *camera_name = NULL, *step_text = NULL;
+    const oi_camera *camera;
+    double step = 120.0;
+    int i;
+
+    for (i = 1; i < argc; i++) {
+        const char *v;
+        int missing = 0;
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+            usage(stdout);
+            return 0;
+        }
+        if (strcmp(argv[i], "--list-cameras") == 0) {
+            list_cameras(stdout);
+            return 0;
+        }
+        if ((v = option_value(argc, argv, &i, "--csv", &missing)) != NULL) {
+            csv = v;
+        } else if ((v = option_value(argc, argv, &i, "--camera", &missing)) != NULL) {
+            camera_name = v;
+        } else if ((v = option_value(argc, argv, &i, "--step", &missing)) != NULL) {
+            step_text = v;
+        } else if (missing) {
+            fprintf(stderr, "oi-plan: option %s needs a value (see oi-plan --help)\n", argv[i]);
+            return PLAN_EXIT_INPUT;
+        } else {
+            fprintf(stderr, "oi-plan: unknown argument '%s' (see oi-plan --help)\n", argv[i]);
+            return PLAN_EXIT_INPUT;
+        }
+    }
+
+    camera = oi_camera_builtin(0);
+    if (camera_name != NULL) {
+        camera = oi_camera_find(camera_name);
+        if (camera == NULL) {
+            fprintf(stderr, "oi-plan: unknown camera '%s'; built-in cameras:", camera_name);
+            for (i = 0; oi_camera_builtin(i) != NULL; i++) {
+                fprintf(stderr, " %s", oi_camera_builtin(i)->name);
+            }
+            fputc('\n', stderr);
+            return PLAN_EXIT_INPUT;
+        }
+    }
+    if (step_text != NULL) {
+        char *end;
+        step = strtod(step_text, &end);
+        if (end == step_text || *end != '\0' || !(step >= 10.0 && step <= 6000.0)) {
+            fprintf(stderr, "oi-plan: --step wants seconds between 10 and 6000, got '%s'\n",
+                    step_text);
+            return PLAN_EXIT_INPUT;
+        }
+    }
+    if (csv != NULL) return batch_run(csv, camera, stdout);
+    return scenario_run(stdout, camera, step);
+}

@@ -1,0 +1,125 @@
+/* SPDX-License-Identifier: MIT */
+/* output.c: CSV and table output of the planner (see output.h). */
+#include "output.h"
+
+#include <string.h>
+
+const char plan_csv_header[] =
+    "id,status,sun_fraction,sun_fraction_atm,e_sun,e_earth,e_moon,earth_theta_deg,"
+    "earth_h_km,flux_obs,mag_v,exposure_s,gain,snr,flags";
+
+static const double RAD_TO_DEG = 180.0 / 3.14159265358979323846;
+
+void out_csv_header(FILE *fp)
+{
+    fputs(plan_csv_header, fp);
+    fputc('\n', fp);
+}
+
+/* A field, quoted (RFC 4180) when it holds a separator, quote or line end
+ * or starts/ends with a blank (which a reader would trim). */
+static void put_field(FILE *fp, const char *s)
+{
+    size_t n = strlen(s);
+    int quote = n > 0 && (s[0] == ' ' || s[0] == '\t' || s[n - 1] == ' ' || s[n - 1] == '\t');
+    const char *p;
+    for (p = s; *p && !quote; p++) {
+        if (*p == ',' || *p == '"' || *p == '\n' || *p == '\r') quote = 1;
+    }
+    if (!quote) {
+        fputs(s, fp);
+        return;
+    }
+    fputc('"', fp);
+    for (p = s; *p; p++) {
+        if (*p == '"') fputc('"', fp);
+        fputc(*p, fp);
+    }
+    fputc('"', fp);
+}
+
+/* ",%.17g" (negative zero printed as 0), or "," when absent. */
+static void put_num(FILE *fp, int present, double x)
+{
+    if (present) {
+        fprintf(fp, ",%.17g", x + 0.0 == 0.0 ? 0.0 : x);
+    } else {
+        fputc(',', fp);
+    }
+}
+
+void out_flags(unsigned flags, char *buf, size_t size)
+{
+    unsigned bit;
+    size_t len = 0;
+    if (size == 0) return;
+    buf[0] = '\0';
+    for (bit = 1u; bit != 0u && bit <= flags; bit <<= 1) {
+        const char *name;
+        size_t n;
+        if (!(flags & bit)) continue;
+        name = oi_flag_name(bit);
+        if (name == NULL) name = "unknown";
+        n = strlen(name);
+        if (len + n + 2 > size) break;
+        if (len > 0) buf[len++] = '+';
+        memcpy(buf + len, name, n + 1);
+        len += n;
+    }
+}
+
+void out_csv_row(FILE *fp, const char *id, const plan_row *row)
+{
+    const oi_illum *il = &row->illum;
+    int num = row->has_numbers;
+    int obs = num && row->has_observer;
+    char flags[160];
+
+    put_field(fp, id);
+    fputc(',', fp);
+    fputs(row->status_name, fp);
+    put_num(fp, num, (double)il->shadow.fraction);
+    put_num(fp, num, (double)il->shadow.fraction_atm);
+    put_num(fp, num, (double)il->e_sun);
+    put_num(fp, num, (double)il->e_earth);
+    put_num(fp, num, (double)il->e_moon);
+    put_num(fp, num, (double)il->earth_theta * RAD_TO_DEG);
+    put_num(fp, num, (double)il->earth_h_km);
+    put_num(fp, obs, (double)il->flux_obs);
+    put_num(fp, obs, (double)il->mag_v);
+    put_num(fp, obs, (double)row->expo.exposure_s);
+    put_num(fp, obs, (double)row->expo.gain);
+    put_num(fp, obs, (double)row->expo.snr);
+    fputc(',', fp);
+    if (num) {
+        out_flags(row->flags, flags, sizeof flags);
+        fputs(flags, fp);
+    }
+    fputc('\n', fp);
+}
+
+void out_table_header(FILE *fp)
+{
+    fprintf(fp, "%7s %6s %9s %9s %9s %8s %7s %6s %9s %5s %8s  %s\n", "t", "sun", "E_sun",
+            "E_earth", "E_moon", "range", "sun_ang", "mag_V", "exposure", "gain", "SNR",
+            "flags");
+    fprintf(fp, "%7s %6s %9s %9s %9s %8s %7s %6s %9s %5s %8s\n", "[min]", "[frac]", "[W/m2]",
+            "[W/m2]", "[W/m2]", "[km]", "[deg]", "", "[s]", "", "");
+}
+
+void out_table_row(FILE *fp, double t_s, double range_km, const plan_row *row)
+{
+    const oi_illum *il = &row->illum;
+    char flags[160];
+    if (!row->has_numbers) {
+        fprintf(fp, "%7.2f  %s\n", t_s / 60.0, row->status_name);
+        return;
+    }
+    out_flags(row->flags, flags, sizeof flags);
+    fprintf(fp, "%7.2f %6.3f %9.4g %9.4g %9.3g %8.3f %7.1f %6.2f %9.3g %5.2g %8.4g  %s\n",
+            t_s / 60.0, (double)il->shadow.fraction_atm, (double)il->e_sun,
+            (double)il->e_earth, (double)il->e_moon, range_km,
+            (double)row->expo.sun_angle_rad * RAD_TO_DEG, (double)il->mag_v,
+            (double)row->expo.exposure_s, (double)row->expo.gain, (double)row->expo.snr,
+            flags);
+}

@@ -1,0 +1,36 @@
+/* SPDX-License-Identifier: MIT */
+/* output.h: how the planner writes its results: the batch CSV (header, one
+ * row per input row, numbers with %.17g, fields quoted when needed) and the
+ * human-readable table of the built-in scenario. */
+#ifndef OI_PLAN_OUTPUT_H
+#define OI_PLAN_OUTPUT_H
+
+#include <stdio.h>
+
+#include "orbillum.h"
+
+/* Everything one output row needs. */
+typedef struct plan_row {
+    int status;              /* library status of the row (or a planner code) */
+    const char *status_name; /* printed status */
+    int has_numbers;         /* 0: the row failed, numbers are left empty */
+    int has_observer;        /* 0: flux_obs .. snr are left empty */
+    oi_illum illum;
+    oi_exposure expo;
+    unsigned flags;          /* OI_FLAG_* */
+} plan_row;
+
+/* The exact CSV header of the batch interface (without newline). */
+extern const char plan_csv_header[];
+
+void out_csv_header(FILE *fp);
+/* One CSV row; id is quoted when it holds a comma, quote or line break. */
+void out_csv_row(FILE *fp, const char *id, const plan_row *row);
+/* Flag names joined by '+' into buf (empty string for none). */
+void out_flags(unsigned flags, char *buf, size_t size);
+
+/* Human-readable table (built-in scenario). */
+void out_table_header(FILE *fp);
+void out_table_row(FILE *fp, double t_s, double range_km, const plan_row *row);
+
+#endif
