@@ -1,0 +1,229 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * bench.c: host benchmark of the runtime (make bench; driven by
+ * bench/run_bench.py, which also runs it under callgrind and compares the
+ * earthshine table with the baker's quadrature).
+ *
+ *   bench time [reps]          median ns per scene, every configuration
+ *   bench count CONFIG N       run CONFIG N times over the scene mix (for
+ *                              valgrind --tool=callgrind: two N, difference)
+ *   bench dump                 per scene: orbit, light, region, theta, h, phi, psi
+ *   bench configs              list the configurations
+ *
+ * Configurations (the scene mix of bench/scenes.h, observer set):
+ *   all            oi_illuminate, Sun (shadow) + Earth + Moon
+ *   sun            oi_illuminate, Sun only
+ *   sun_earth      oi_illuminate, Sun + Earth
+ *   all_expose     oi_illuminate (all terms) + oi_expose_scene (built-in camera 0)
+ *   sun_fraction   oi_sun_fraction alone
+ *   earthshine     oi_earthshine alone (the baked table), theta and h of each scene
+ *   earthshine_lambert   oi_earthshine with OI_EARTH_LAMBERT (analytic far field)
+ * Output: `name value unit` lines. Timing with clock_gettime(CLOCK_MONOTONIC)
+ * here, never inside the library.
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "orbillum.h"
+#include "scenes.h"
+
+#ifdef OI_SINGLE_PRECISION
+#define PREC "float"
+#else
+#define PREC "double"
+#endif
+
+void oi_target_missing(const char *name);
+static int missing_count;
+void oi_target_missing(const char *name)
+{
+    if (missing_count++ == 0) fprintf(stderr, "bench: %s is not in the library (stub)\n", name);
+}
+
+static oi_scene scenes[BENCH_NSCENES];
+static oi_real es_theta[BENCH_NSCENES], es_h[BENCH_NSCENES];
+static bench_scene_d raw[BENCH_NSCENES];
+static volatile double sink;
+
+enum { C_ALL, C_SUN, C_SUN_EARTH, C_ALL_EXPOSE, C_SUN_FRACTION, C_EARTHSHINE, C_EARTHSHINE_LAMBERT, C_N };
+static const char *const config_name[C_N] = {"all",          "sun",        "sun_earth",
+                                             "all_expose",   "sun_fraction", "earthshine",
+                                             "earthshine_lambert"};
+
+static void setup(void)
+{
+    int i, k;
+    bench_make_scenes(raw);
+    for (i = 0; i < BENCH_NSCENES; i++) {
+        oi_scene *s = &scenes[i];
+        double t[3], r, d, c[3], cn;
+        oi_scene_defaults(s);
+        for (k = 0; k < 3; k++) {
+            s->sun_km[k] = (oi_real)raw[i].sun[k];
+            s->moon_km[k] = (oi_real)raw[i].moon[k];
+            s->target_km[k] = (oi_real)raw[i].target[k];
+            s->observer_km[k] = (oi_real)raw[i].observer[k];
+            t[k] = raw[i].target[k];
+        }
+        s->has_observer = 1;
+        /* theta and h of the earthshine-only configurations, in double */
+        r = sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+        d = raw[i].sun[0] * t[0] + raw[i].sun[1] * t[1] + raw[i].sun[2] * t[2];
+        c[0] = raw[i].sun[1] * t[2] - raw[i].sun[2] * t[1];
+        c[1] = raw[i].sun[2] * t[0] - raw[i].sun[0] * t[2];
+        c[2] = raw[i].sun[0] * t[1] - raw[i].sun[1] * t[0];
+        cn = sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+        es_theta[i] = (oi_real)atan2(cn, d);
+        es_h[i] = (oi_real)(r - 6378.137);
+    }
+}
+
+/* One pass of a configuration over the scene mix; returns a checksum. */
+static double run_config(int cfg)
+{
+    static oi_illum il;
+    static oi_exposure ex;
+    oi_model lambert;
+    oi_real phi, psi;
+    double acc = 0.0;
+    int i;
+    const oi_camera *cam = NULL;
+#ifndef OI_NO_EXPOSURE
+    cam = oi_camera_builtin(0);
+#endif
+    memset(&lambert, 0, sizeof lambert);
+    lambert.earth_model = OI_EARTH_LAMBERT;
+    for (i = 0; i < BENCH_NSCENES; i++) {
+        oi_scene *s = &scenes[i];
+        switch (cfg) {
+        case C_ALL:
+            s->terms = OI_TERM_ALL;
+            (void)oi_illuminate(s, NULL, &il);
+            acc += (double)il.flux_obs;
+            break;
+        case C_SUN:
+            s->terms = OI_TERM_SUN;
+            (void)oi_illuminate(s, NULL, &il);
+            acc += (double)il.flux_obs;
+            break;
+        case C_SUN_EARTH:
+            s->terms = OI_TERM_SUN | OI_TERM_EARTH;
+            (void)oi_illuminate(s, NULL, &il);
+            acc += (double)il.flux_obs;
+            break;
+        case C_ALL_EXPOSE:
+            s->terms = OI_TERM_ALL;
+            (void)oi_illuminate(s, NULL, &il);
+#ifndef OI_NO_EXPOSURE
+            (void)oi_expose_scene(cam, s, &il, NULL, NULL, &ex);
+            acc += (double)ex.exposure_s;
+#else
+            (void)cam;
+            (void)ex;
+#endif
+            break;
+        case C_SUN_FRACTION:
+            (void)oi_sun_fraction(s->sun_km, s->target_km, NULL, &il.shadow);
+            acc += (double)il.shadow.fraction;
+            break;
+        case C_EARTHSHINE:
+            (void)oi_earthshine(es_theta[i], es_h[i], NULL, &phi, &psi);
+            acc += (double)phi;
+            break;
+        default:
+            (void)oi_earthshine(es_theta[i], es_h[i], &lambert, &phi, &psi);
+            acc += (double)phi;
+            break;
+        }
+    }
+    return acc;
+}
+
+static double now_ns(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec * 1e9 + (double)ts.tv_nsec;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+static int find_config(const char *name)
+{
+    int c;
+    for (c = 0; c < C_N; c++)
+        if (strcmp(config_name[c], name) == 0) return c;
+    return -1;
+}
+
+static int do_time(int reps)
+{
+    double *t = malloc(sizeof(double) * (size_t)reps);
+    int c, r, inner;
+    if (t == NULL) return 1;
+    for (c = 0; c < C_N; c++) {
+        double t0, per;
+        missing_count = 0;
+        /* inner passes so that one sample lasts >= ~200 microseconds */
+        t0 = now_ns();
+        sink = run_config(c);
+        per = now_ns() - t0;
+        inner = per > 0 ? (int)(2e5 / per) + 1 : 1000;
+        for (r = 0; r < reps; r++) {
+            int k;
+            t0 = now_ns();
+            for (k = 0; k < inner; k++) sink = run_config(c);
+            t[r] = (now_ns() - t0) / ((double)inner * BENCH_NSCENES);
+        }
+        qsort(t, (size_t)reps, sizeof *t, cmp_double);
+        printf("bench.%s.%s.ns_median %.1f ns\n", PREC, config_name[c], t[reps / 2]);
+        printf("bench.%s.%s.ns_min %.1f ns\n", PREC, config_name[c], t[0]);
+        if (missing_count) printf("bench.%s.%s.incomplete 1 flag  # a stub ran\n", PREC, config_name[c]);
+    }
+    free(t);
+    return 0;
+}
+
+static int do_dump(void)
+{
+    int i;
+    static oi_illum il;
+    printf("# orbit light region theta h_km phi psi status\n");
+    for (i = 0; i < BENCH_NSCENES; i++) {
+        oi_real phi = 0, psi = 0;
+        int st = oi_earthshine(es_theta[i], es_h[i], NULL, &phi, &psi);
+        scenes[i].terms = OI_TERM_ALL;
+        (void)oi_illuminate(&scenes[i], NULL, &il);
+        printf("%s %s %d %.17g %.17g %.17g %.17g %d\n", bench_orbit_name[raw[i].orbit],
+               bench_light_name[raw[i].light], il.shadow.region, (double)es_theta[i], (double)es_h[i],
+               (double)phi, (double)psi, st);
+    }
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    setup();
+    if (argc >= 2 && strcmp(argv[1], "time") == 0) return do_time(argc >= 3 ? atoi(argv[2]) : 31);
+    if (argc >= 2 && strcmp(argv[1], "dump") == 0) return do_dump();
+    if (argc >= 2 && strcmp(argv[1], "configs") == 0) {
+        int c;
+        for (c = 0; c < C_N; c++) printf("%s\n", config_name[c]);
+        printf("nscenes %d\n", BENCH_NSCENES);
+        return 0;
+    }
+    if (argc == 4 && strcmp(argv[1], "count") == 0) {
+        int c = find_config(argv[2]), n = atoi(argv[3]), k;
+        if (c < 0 || n < 0) return 2;
+        for (k = 0; k < n; k++) sink = run_config(c);
+        return 0;
+    }
+    fprintf(stderr, "usage: bench time [reps] | count CONFIG N | dump | configs\n");
+    return 2;
+}

@@ -1,0 +1,216 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+"""run_bench.py: the driver of `make bench`.
+
+1. Wall time: runs `bench-{double,float} time` (median ns per scene over
+   repeated runs, clock_gettime inside the benchmark program).
+2. Instructions: runs `bench-<prec> count CONFIG N` under
+   `valgrind --tool=callgrind` for two run lengths N1 < N2 and divides the
+   difference of the instruction totals by (N2 - N1) * scenes, so start-up,
+   scene set-up and the dynamic loader cancel out.
+3. The slow way: the baker's quadrature `bake.reference.phi_psi_reference`
+   called per scene (scalar calls, as a runtime would have to), timed here;
+   the runtime's table (and the analytic Lambert model) compared with it:
+   speed-up and the error the table costs.
+
+Prints `name value unit` lines (also written to --out) and a JSON file next
+to it (bench.json) that bake/report_perf.py reads.
+"""
+import argparse
+import json
+import os
+import shutil
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+sys.path.insert(0, ROOT)
+
+CONFIGS = ["all", "sun", "sun_earth", "all_expose", "sun_fraction", "earthshine", "earthshine_lambert"]
+R_EARTH_KM = 6378.137
+
+GOAL_INSTR = 2000
+GOAL_NS = 300.0
+GOAL_SPEEDUP = 1e4
+
+
+class Out:
+    def __init__(self, path):
+        self.lines = []
+        self.path = path
+        self.data = {}
+
+    def put(self, name, value, unit, comment=""):
+        line = "%s %s %s" % (name, value, unit) + (("  # " + comment) if comment else "")
+        print(line, flush=True)
+        self.lines.append(line)
+        self.data[name] = {"value": value, "unit": unit}
+
+    def save(self):
+        os.makedirs(os.path.dirname(os.path.abspath(self.path)), exist_ok=True)
+        with open(self.path, "w") as f:
+            f.write("\n".join(self.lines) + "\n")
+        with open(os.path.join(os.path.dirname(os.path.abspath(self.path)), "bench.json"), "w") as f:
+            json.dump(self.data, f, indent=1, sort_keys=True)
+
+
+def run(cmd):
+    return subprocess.run(cmd, check=True, capture_output=True, text=True)
+
+
+def nscenes(binary):
+    for line in run([binary, "configs"]).stdout.splitlines():
+        if line.startswith("nscenes"):
+            return int(line.split()[1])
+    raise SystemExit("bench: no scene count")
+
+
+def callgrind_total(binary, config, n, tmp):
+    out = os.path.join(tmp, "cg.%s.%d.out" % (config, n))
+    subprocess.run(["valgrind", "--tool=callgrind", "--callgrind-out-file=" + out, binary,
+                    "count", config, str(n)], check=True, capture_output=True, text=True)
+    total = None
+    with open(out) as f:
+        for line in f:
+            if line.startswith("summary:") or line.startswith("totals:"):
+                total = int(line.split()[1])
+    os.remove(out)
+    return total
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--bindir", required=True)
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--reps", type=int, default=31)
+    ap.add_argument("--n1", type=int, default=2)
+    ap.add_argument("--n2", type=int, default=12)
+    ap.add_argument("--no-quadrature", action="store_true")
+    args = ap.parse_args()
+    out = Out(args.out)
+
+    # 1. wall time
+    for prec in ("double", "float"):
+        b = os.path.join(args.bindir, "bench-" + prec)
+        for line in run([b, "time", str(args.reps)]).stdout.splitlines():
+            parts = line.split(None, 2)
+            if len(parts) >= 3:
+                unit, _, comment = parts[2].partition("  # ")
+                out.put(parts[0], parts[1], unit.strip(), comment)
+
+    # 2. instructions (callgrind)
+    if shutil.which("valgrind"):
+        tmp = os.path.join(args.bindir, "cg")
+        os.makedirs(tmp, exist_ok=True)
+        for prec in ("double", "float"):
+            b = os.path.join(args.bindir, "bench-" + prec)
+            ns = nscenes(b)
+            for c in CONFIGS:
+                t1 = callgrind_total(b, c, args.n1, tmp)
+                t2 = callgrind_total(b, c, args.n2, tmp)
+                per = (t2 - t1) / float((args.n2 - args.n1) * ns)
+                out.put("bench.%s.%s.instructions" % (prec, c), "%.0f" % per, "instructions",
+                        "callgrind, (I(%d) - I(%d)) / (%d x %d scenes)" % (args.n2, args.n1,
+                                                                           args.n2 - args.n1, ns))
+    else:
+        out.put("bench.instructions", "unavailable", "-", "valgrind not installed")
+
+    # 3. the slow way: quadrature per scene
+    if not args.no_quadrature:
+        quadrature(args, out)
+
+    goals(out)
+    out.save()
+    return 0
+
+
+def quadrature(args, out):
+    try:
+        from bake import reference as ref
+    except Exception as e:  # the baker is another module; say so, do not fail
+        out.put("bench.quadrature", "unavailable", "-", "bake.reference: %s" % e)
+        return
+    import numpy as np
+
+    rows = []
+    b = os.path.join(args.bindir, "bench-double")
+    for line in run([b, "dump"]).stdout.splitlines():
+        if line.startswith("#"):
+            continue
+        f = line.split()
+        rows.append((f[0], f[1], float(f[3]), float(f[4]), float(f[5]), float(f[6]), int(f[7])))
+    theta = np.array([r[2] for r in rows])
+    h = np.array([r[3] for r in rows])
+    x = R_EARTH_KM / (R_EARTH_KM + h)
+    phi_tab = np.array([r[4] for r in rows])
+    status = np.array([r[6] for r in rows])
+
+    # per-scene scalar calls, as an on-board implementation would make them
+    times = []
+    phi_ref = np.empty(len(rows))
+    psi_ref = np.empty(len(rows))
+    for i in range(len(rows)):
+        t0 = time.perf_counter()
+        p, s = ref.phi_psi_reference(float(theta[i]), float(x[i]))
+        times.append(time.perf_counter() - t0)
+        phi_ref[i], psi_ref[i] = float(p), float(s)
+    times.sort()
+    t_quad_ns = times[len(times) // 2] * 1e9
+    out.put("bench.quadrature.phi_psi_reference.ns_median", "%.0f" % t_quad_ns, "ns",
+            "bake.reference.phi_psi_reference, one scalar call per scene (numpy Gauss-Legendre)")
+
+    lam = x * x * ref.lambert_phase(theta)
+    # Two error measures: relative where earthshine is at least 1e-3 of its
+    # sub-solar value at that altitude, and absolute in units of that value.
+    phi0 = np.array([float(ref.phi_reference(0.0, float(xi))) for xi in x])
+    big = phi_ref >= 1e-3 * phi0
+    ok = status >= 0
+    for name, approx, sel in (("earthshine", phi_tab, ok), ("earthshine_lambert", lam, np.ones_like(ok))):
+        if not sel.any():
+            continue
+        rel = np.abs(approx - phi_ref)[sel & big] / phi_ref[sel & big]
+        nrm = np.abs(approx - phi_ref)[sel] / phi0[sel]
+        what = "runtime table" if name == "earthshine" else "far-field Lambert x^2 p(theta), computed here"
+        if rel.size:
+            out.put("bench.double.%s.max_rel_err_vs_quadrature" % name, "%.3g" % rel.max(), "1",
+                    "%s; scenes where phi >= 1e-3 phi(0, h)" % what)
+        out.put("bench.double.%s.max_err_over_subsolar" % name, "%.3g" % nrm.max(), "1",
+                "%s; |approx - quadrature| / phi(0, h), all scenes" % what)
+    for prec in ("double", "float"):
+        d = out.data.get("bench.%s.earthshine.ns_median" % prec)
+        if d:
+            t = float(d["value"])
+            out.put("bench.%s.earthshine.speedup_vs_quadrature" % prec, "%.0f" % (t_quad_ns / max(t, 1e-3)),
+                    "x", "quadrature ns / table ns")
+    if not ok.all():
+        out.put("bench.double.earthshine.scenes_with_error_status", int((~ok).sum()), "scenes")
+
+
+def goals(out):
+    def val(name):
+        d = out.data.get(name)
+        try:
+            return float(d["value"]) if d else None
+        except ValueError:
+            return None
+
+    incomplete = [k for k in out.data if k.endswith(".incomplete")]
+    note = " (INCOMPLETE: %d configurations ran a stub)" % len(incomplete) if incomplete else ""
+    i = val("bench.double.all_expose.instructions")
+    if i is not None:
+        out.put("goal.full_scene_at_most_%d_instructions" % GOAL_INSTR, "met" if i <= GOAL_INSTR else "missed",
+                "", "double, all terms + exposure: %.0f instructions%s" % (i, note))
+    t = val("bench.double.all_expose.ns_median")
+    if t is not None:
+        out.put("goal.full_scene_under_%d_ns" % GOAL_NS, "met" if t < GOAL_NS else "missed", "",
+                "double, all terms + exposure: %.1f ns median%s" % (t, note))
+    s = val("bench.double.earthshine.speedup_vs_quadrature")
+    if s is not None:
+        out.put("goal.earthshine_%dx_faster_than_quadrature" % GOAL_SPEEDUP, "met" if s >= GOAL_SPEEDUP else "missed",
+                "", "%.0fx%s" % (s, note))
+
+
+if __name__ == "__main__":
+    sys.exit(main())
