@@ -1,0 +1,24 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * oi_earth_diffuse.h: generated earthshine table (see oi_earth_diffuse.c for its provenance).
+ */
+#ifndef OI_EARTH_DIFFUSE_H
+#define OI_EARTH_DIFFUSE_H
+
+#include "oi_table.h"
+
+#if OI_TABLE_FORMAT != 2
+#error "oi_earth_diffuse.h: table format mismatch: regenerate tables (make bake)"
+#endif
+
+#define OI_EARTH_DIFFUSE_N_LIT 41
+#define OI_EARTH_DIFFUSE_N_TERM 81
+#define OI_EARTH_DIFFUSE_N_ALT 64
+#define OI_EARTH_DIFFUSE_N_VALUES 7808
+
+#ifndef OI_NO_EARTH_TABLE
+/* oi_earth_diffuse: altitude 100 km to infinity, max relative error 4.530e-04 (see oi_earth_diffuse.c). */
+extern const oi_earth_table oi_earth_diffuse;
+#endif
+
+#endif /* OI_EARTH_DIFFUSE_H */
