@@ -164,6 +164,9 @@ static int parse_real(const char *s, double *out)
     return *end == '\0' ? 0 : -1;
 }
 
+/* "all" in a terms list: every term whose inputs the row gives. */
+#define TERMS_ALL_AVAILABLE (0x100u)
+
 /* Parse a terms list ("sun+earth+moon", "all"); 0 or -1. */
 static int parse_terms(const char *s, unsigned *terms)
 {
@@ -182,7 +185,7 @@ static int parse_terms(const char *s, unsigned *terms)
         if (same_nocase(tok, "sun")) *terms |= OI_TERM_SUN;
         else if (same_nocase(tok, "earth")) *terms |= OI_TERM_EARTH;
         else if (same_nocase(tok, "moon")) *terms |= OI_TERM_MOON;
-        else if (same_nocase(tok, "all")) *terms |= OI_TERM_ALL;
+        else if (same_nocase(tok, "all")) *terms |= TERMS_ALL_AVAILABLE;
         else return -1;
         if (*p == '\0') return 0;
         if (*p != '+') return -1;
@@ -293,6 +296,10 @@ static int run_row(batch *b, const csv_reader *r, plan_row *row)
                                             "by '+', or all", s);
             row_error(b, r->rec_line, b->col[C_TERMS], "bad terms:", detail);
             return 0;
+        }
+        if (terms & TERMS_ALL_AVAILABLE) {
+            terms = (terms & ~TERMS_ALL_AVAILABLE) | OI_TERM_SUN | OI_TERM_EARTH |
+                    (has_moon ? OI_TERM_MOON : 0u);
         }
         if ((terms & OI_TERM_MOON) && !has_moon) {
             row_error(b, r->rec_line, b->col[C_TERMS],

@@ -1,0 +1,410 @@
+# SPDX-License-Identifier: MIT
+"""The planner's batch interface (build/oi-plan --csv) on normal and hostile
+input: the CSV contract of issue 2 (header, columns in any order, unknown
+columns ignored, %.17g numbers, statuses, exit codes 0/1/2) and the
+usability of issue 7 (messages with line and column, --help, cameras).
+
+Numbers are checked against closed forms written here (inverse-square Sun,
+full shadow), never against the planner itself.
+"""
+import csv
+import io
+import math
+import os
+import subprocess
+from pathlib import Path
+
+import pytest
+from hypothesis import given, settings, HealthCheck
+from hypothesis import strategies as st
+
+ROOT = Path(__file__).resolve().parents[2]
+PLAN = Path(os.environ.get("OI_PLAN", ROOT / "build" / "oi-plan"))
+
+HEADER = ("id,status,sun_fraction,sun_fraction_atm,e_sun,e_earth,e_moon,earth_theta_deg,"
+          "earth_h_km,flux_obs,mag_v,exposure_s,gain,snr,flags")
+NUMERIC = HEADER.split(",")[2:14]
+FLAG_NAMES = {"sun_exclusion", "earth_in_fov", "eclipsed", "too_faint", "saturated",
+              "penumbra", "occulted"}
+AU = 149597870.7
+TSI = 1361.0
+
+# Target 7000 km on +y, Sun on +x (lit, theta = 90 deg); observer 10 km further out.
+LIT = dict(sun_x=AU, sun_y=0, sun_z=0, target_x=0, target_y=7000, target_z=0)
+LIT_OBS = dict(LIT, observer_x=0, observer_y=7010, observer_z=0)
+# Target behind the Earth on the Sun line, 7000 km: deep umbra.
+DARK = dict(sun_x=AU, sun_y=0, sun_z=0, target_x=-7000, target_y=0, target_z=0)
+
+
+def run(args, stdin=None):
+    assert PLAN.exists(), f"{PLAN} is not built (make all)"
+    p = subprocess.run([str(PLAN)] + list(args), input=stdin, capture_output=True, timeout=60)
+    return p.returncode, p.stdout.decode("utf-8", "replace"), p.stderr.decode("utf-8", "replace")
+
+
+def run_csv(text, *extra):
+    data = text.encode("utf-8") if isinstance(text, str) else text
+    return run(["--csv", "-"] + list(extra), stdin=data)
+
+
+def table(rows, columns=None):
+    """CSV text from dicts (columns in the given order)."""
+    if columns is None:
+        columns = []
+        for r in rows:
+            columns += [c for c in r if c not in columns]
+    out = io.StringIO()
+    w = csv.writer(out, lineterminator="\n")
+    w.writerow(columns)
+    for r in rows:
+        w.writerow([r.get(c, "") for c in columns])
+    return out.getvalue()
+
+
+def parse(out):
+    lines = out.splitlines()
+    assert lines[0] == HEADER
+    rows = list(csv.DictReader(io.StringIO(out)))
+    for r in rows:
+        assert list(r.keys()) == HEADER.split(",")
+    return rows
+
+
+def check_number_format(row):
+    for c in NUMERIC:
+        s = row[c]
+        if s == "":
+            continue
+        x = float(s)
+        assert math.isfinite(x), (c, s)
+        assert "%.17g" % x == s, f"{c}: {s!r} is not %.17g"
+
+
+# ---------------------------------------------------------------- normal use
+
+def test_help_and_cameras():
+    code, out, _ = run(["--help"])
+    assert code == 0
+    assert "--csv" in out and "examples:" in out and "exit status" in out
+    code, out, _ = run(["--list-cameras"])
+    assert code == 0
+    assert "star-tracker" in out and "telescope-15cm" in out
+
+
+def test_builtin_scenario():
+    code, out, err = run([])
+    assert code == 0, err
+    assert "[W/m2]" in out and "[min]" in out
+    assert "Best observation windows" in out
+    assert "eclipsed" in out  # the pass goes through eclipse
+
+
+def test_builtin_scenario_other_camera_and_step():
+    code, out, _ = run(["--camera", "telescope-15cm", "--step", "600"])
+    assert code == 0
+    assert "telescope-15cm" in out
+
+
+def test_lit_and_umbra_closed_forms():
+    code, out, err = run_csv(table([dict(LIT, id="lit"), dict(DARK, id="dark")]))
+    assert code == 0, err
+    lit, dark = parse(out)
+    for r in (lit, dark):
+        assert r["status"] == "OK"
+        check_number_format(r)
+    d2 = AU ** 2 + 7000.0 ** 2
+    assert float(lit["sun_fraction"]) == 1.0
+    assert abs(float(lit["e_sun"]) - TSI * AU ** 2 / d2) <= 1e-12 * TSI
+    assert abs(float(lit["earth_theta_deg"]) - 90.0) < 1e-9
+    assert abs(float(lit["earth_h_km"]) - (7000.0 - 6378.137)) < 1e-9
+    assert float(dark["sun_fraction"]) == 0.0 and float(dark["e_sun"]) == 0.0
+    assert abs(float(dark["earth_theta_deg"]) - 180.0) < 1e-9
+    assert "eclipsed" in dark["flags"].split("+")
+    # no observer: observer columns empty; no moon columns: moon term off
+    for r in (lit, dark):
+        for c in ("flux_obs", "mag_v", "exposure_s", "gain", "snr"):
+            assert r[c] == ""
+        assert float(r["e_moon"]) == 0.0
+
+
+def test_observer_columns_and_flags():
+    code, out, err = run_csv(table([LIT_OBS]))
+    assert code == 0, err
+    (r,) = parse(out)
+    check_number_format(r)
+    for c in ("flux_obs", "mag_v", "exposure_s", "gain", "snr"):
+        assert r[c] != ""
+    assert float(r["flux_obs"]) > 0
+    assert float(r["exposure_s"]) > 0 and float(r["snr"]) >= 0
+    # magnitude from the flux, written out here: m = -26.74 - 2.5 log10(F / TSI)
+    want = -26.74 - 2.5 * math.log10(float(r["flux_obs"]) / TSI)
+    assert abs(float(r["mag_v"]) - want) < 1e-9
+    if r["flags"]:
+        assert set(r["flags"].split("+")) <= FLAG_NAMES
+
+
+def test_moon_columns_turn_the_moon_on():
+    moon = dict(LIT, moon_x=-384400 * 0.5, moon_y=384400 * 0.866, moon_z=0)
+    code, out, err = run_csv(table([moon, dict(moon, terms="sun+earth")]))
+    assert code == 0, err
+    on, off = parse(out)
+    assert float(on["e_moon"]) > 0
+    assert float(off["e_moon"]) == 0
+
+
+def test_terms():
+    rows = [dict(LIT, terms="sun"), dict(LIT, terms="earth"), dict(LIT, terms="Sun + Earth"),
+            dict(LIT, terms="all")]
+    code, out, err = run_csv(table(rows))
+    assert code == 0, err
+    sun, earth, both, alls = parse(out)
+    assert float(sun["e_earth"]) == 0 and float(sun["e_sun"]) > 1000
+    assert float(earth["e_sun"]) == 0 and float(earth["e_earth"]) > 0
+    assert both["e_sun"] == sun["e_sun"] and both["e_earth"] == earth["e_earth"]
+    assert alls["e_sun"] == sun["e_sun"]
+
+
+def test_atmosphere_off_equals_geometric_fraction():
+    rows = [dict(LIT, atmosphere=0), dict(DARK, atmosphere=0),
+            dict(LIT, target_x=-6000, target_y=3400, atmosphere=0)]
+    code, out, err = run_csv(table(rows))
+    assert code == 0, err
+    for r in parse(out):
+        assert r["sun_fraction_atm"] == r["sun_fraction"]
+
+
+def test_column_order_and_unknown_columns():
+    rows = [dict(LIT_OBS, id="a"), dict(DARK, id="b")]
+    cols = list(LIT_OBS.keys()) + ["id"]
+    code, out1, _ = run_csv(table(rows, cols))
+    shuffled = ["observer_z", "target_y", "zzz", "sun_z", "id", "target_x", "observer_x",
+                "sun_y", "target_z", "observer_y", "sun_x", "comment"]
+    code2, out2, err2 = run_csv(table(rows, shuffled))
+    assert code == code2 == 0
+    assert out1 == out2
+    assert "zzz" in err2 and "comment" in err2  # a note about ignored columns
+    upper = table(rows, cols).replace("sun_x", "SUN_X", 1)
+    assert run_csv(upper)[1] == out1
+
+
+def test_ids_default_to_row_numbers():
+    code, out, _ = run_csv(table([LIT, DARK, LIT]))
+    assert code == 0
+    assert [r["id"] for r in parse(out)] == ["1", "2", "3"]
+
+
+def test_camera_column_and_option():
+    rows = [dict(LIT_OBS), dict(LIT_OBS, camera="telescope-15cm"), dict(LIT_OBS, camera="nope")]
+    code, out, err = run_csv(table(rows))
+    assert code == 1
+    default, tele, bad = parse(out)
+    assert default["status"] == "OK" and tele["status"] == "OK"
+    assert default["exposure_s"] != tele["exposure_s"] or default["snr"] != tele["snr"]
+    assert bad["status"] == "ERR_CAMERA" and bad["e_sun"] == ""
+    assert "unknown camera" in err and "star-tracker" in err
+    code, out2, _ = run_csv(table([LIT_OBS]), "--camera", "telescope-15cm")
+    assert code == 0 and parse(out2)[0]["snr"] == tele["snr"]
+    code, _, err = run_csv(table([LIT_OBS]), "--camera", "nope")
+    assert code == 2 and "star-tracker" in err
+
+
+def test_stdin_and_file_agree(tmp_path):
+    text = table([LIT_OBS, DARK])
+    f = tmp_path / "in.csv"
+    f.write_text(text)
+    code, out_file, _ = run(["--csv", str(f)])
+    code2, out_stdin, _ = run_csv(text)
+    assert code == code2 == 0 and out_file == out_stdin
+    code3, out_eq, _ = run([f"--csv={f}"])
+    assert code3 == 0 and out_eq == out_file
+
+
+# ---------------------------------------------------------------- hostile input
+
+def test_missing_required_column():
+    text = table([LIT]).replace("target_z", "target_q")
+    code, out, err = run_csv(text)
+    assert code == 2
+    assert out == ""
+    assert "target_z" in err and "line 1" in err
+
+
+def test_partial_vector_group_in_header():
+    text = table([dict(LIT, moon_x=1, moon_y=2)])
+    code, _, err = run_csv(text)
+    assert code == 2 and "moon_z" in err
+
+
+def test_duplicate_column():
+    text = "sun_x,sun_y,sun_z,target_x,target_y,target_z,sun_x\n1,2,3,4,5,6,7\n"
+    code, _, err = run_csv(text)
+    assert code == 2 and "twice" in err
+
+
+@pytest.mark.parametrize("text", ["", "\n\n", "  \r\n\t\n"])
+def test_no_header(text):
+    code, out, err = run_csv(text)
+    assert code == 2 and out == "" and "header" in err
+
+
+def test_unreadable_file(tmp_path):
+    code, out, err = run(["--csv", str(tmp_path / "missing.csv")])
+    assert code == 2 and "cannot open" in err
+    code, _, err = run(["--csv", str(tmp_path)])  # a directory
+    assert code == 2
+
+
+def test_header_only_is_ok():
+    code, out, _ = run_csv("sun_x,sun_y,sun_z,target_x,target_y,target_z\n")
+    assert code == 0 and out.splitlines() == [HEADER]
+
+
+def test_bad_number_row_goes_on():
+    rows = [dict(LIT, id="good1"), dict(LIT, id="bad", target_y="7e3x"), dict(LIT, id="good2")]
+    code, out, err = run_csv(table(rows))
+    assert code == 1
+    g1, bad, g2 = parse(out)
+    assert g1["status"] == "OK" and g2["status"] == "OK"
+    assert bad["status"] == "ERR_PARSE"
+    assert all(bad[c] == "" for c in NUMERIC) and bad["flags"] == ""
+    assert "line 3" in err and "column 5" in err and "target_y" in err and "7e3x" in err
+
+
+@pytest.mark.parametrize("value", ["nan", "NaN", "inf", "-inf", "1e999"])
+def test_nonfinite_values(value):
+    code, out, err = run_csv(table([dict(LIT, sun_y=value), LIT]))
+    assert code == 1
+    bad, good = parse(out)
+    assert bad["status"] == "ERR_NONFINITE" and bad["e_sun"] == ""
+    assert good["status"] == "OK"
+
+
+@pytest.mark.parametrize("field,value,status", [
+    ("target_x", "", "ERR_PARSE"),
+    ("sun_z", "  ", "ERR_PARSE"),
+    ("earth_albedo", "1.5", "ERR_ALBEDO"),
+    ("target_albedo", "-0.1", "ERR_ALBEDO"),
+    ("target_radius_m", "-1", "ERR_RADIUS"),
+    ("earth_albedo", "lots", "ERR_PARSE"),
+    ("terms", "sun+", "ERR_PARSE"),
+    ("terms", "sunlight", "ERR_PARSE"),
+    ("terms", "moon", "ERR_PARSE"),       # moon asked for without a position
+    ("atmosphere", "2", "ERR_PARSE"),
+    ("observer_y", "", "ERR_PARSE"),      # two of three observer coordinates
+])
+def test_bad_fields(field, value, status):
+    row = dict(LIT_OBS)
+    row[field] = value
+    code, out, err = run_csv(table([row]))
+    assert code == 1
+    (r,) = parse(out)
+    assert r["status"] == status, err
+    assert r["e_sun"] == ""
+    assert "line 2" in err
+
+
+def test_geometry_errors():
+    rows = [dict(LIT, target_y=6000),                                   # below the surface
+            dict(LIT_OBS, observer_y=7000),                             # observer at target
+            dict(LIT, sun_x=0)]                                         # Sun at the centre
+    code, out, _ = run_csv(table(rows))
+    assert code == 1
+    st = [r["status"] for r in parse(out)]
+    assert st[0] == "ERR_BELOW_SURFACE"
+    assert st[1] == "ERR_OBSERVER_AT_TARGET"
+    assert st[2].startswith("ERR_")
+
+
+def test_short_and_long_rows():
+    head = "sun_x,sun_y,sun_z,target_x,target_y,target_z\n"
+    good = f"{AU},0,0,0,7000,0"
+    text = head + good + "\n" + f"{AU},0,0,0,7000\n" + good + ",extra,fields\n"
+    code, out, err = run_csv(text)
+    assert code == 1
+    rows = parse(out)
+    assert [r["status"] for r in rows] == ["OK", "ERR_PARSE", "OK"]
+    assert "line 3" in err and "target_z" in err
+
+
+def test_crlf_blank_lines_bom_and_quotes():
+    lf = table([dict(LIT_OBS, id="x"), dict(DARK, id="y")])
+    code, out_lf, _ = run_csv(lf)
+    crlf = "\ufeff" + lf.replace("\n", "\r\n\r\n")
+    code2, out_crlf, err = run_csv(crlf)
+    assert code == code2 == 0, err
+    assert out_crlf == out_lf
+    quoted = lf.replace(f"{AU}", f'" {AU}"')
+    assert run_csv(quoted)[1] == out_lf
+    cr_only = lf.replace("\n", "\r")
+    assert run_csv(cr_only)[1] == out_lf
+
+
+def test_quoted_ids_round_trip():
+    ids = ['a,b', 'say "hi"', "two\nlines", "plain"]
+    code, out, err = run_csv(table([dict(LIT, id=i) for i in ids]))
+    assert code == 0, err
+    assert [r["id"] for r in parse(out)] == ids
+    # blanks: trimmed around unquoted fields, kept inside quotes (and re-quoted)
+    text = table([LIT, LIT], ["id"] + list(LIT)).splitlines()
+    text[1] = '  unquoted  ' + text[1]
+    text[2] = '" quoted "' + text[2]
+    code, out, err = run_csv("\n".join(text) + "\n")
+    assert code == 0, err
+    assert [r["id"] for r in parse(out)] == ["unquoted", " quoted "]
+
+
+def test_bad_quotes():
+    head = "id,sun_x,sun_y,sun_z,target_x,target_y,target_z\n"
+    good = f"ok,{AU},0,0,0,7000,0\n"
+    text = head + f'"x"y,{AU},0,0,0,7000,0\n' + good + '"never closed,1,2\n'
+    code, out, err = run_csv(text)
+    assert code == 1
+    st = [r["status"] for r in parse(out)]
+    assert st == ["ERR_PARSE", "OK", "ERR_PARSE"]
+    assert "line 2" in err and "quote" in err
+
+
+def test_huge_line_is_rejected_and_batch_goes_on():
+    head = "id,sun_x,sun_y,sun_z,target_x,target_y,target_z\n"
+    huge = "big," + "1" * (2 << 20) + ",0,0,0,7000,0\n"
+    good = f"ok,{AU},0,0,0,7000,0\n"
+    code, out, err = run_csv(head + good + huge + good)
+    assert code == 1
+    st = [r["status"] for r in parse(out)]
+    assert st == ["OK", "ERR_PARSE", "OK"]
+    assert "line 3" in err and "longer" in err
+
+
+def test_nul_byte():
+    text = table([LIT]).encode() + b"1\x002,0,0,0,7000,0\n"
+    code, out, _ = run_csv(text)
+    assert code == 1
+    assert [r["status"] for r in parse(out)] == ["OK", "ERR_PARSE"]
+
+
+def test_no_progress_when_stderr_is_not_a_terminal():
+    rows = [LIT] * 3000
+    code, out, err = run_csv(table(rows))
+    assert code == 0
+    assert len(parse(out)) == 3000
+    assert err == ""
+
+
+@pytest.mark.parametrize("args", [["--bogus"], ["--csv"], ["--step", "abc"], ["--step", "1"],
+                                  ["--camera"]])
+def test_bad_options(args):
+    code, _, err = run(args)
+    assert code == 2 and "oi-plan" in err
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.binary(max_size=400))
+def test_garbage_never_crashes(data):
+    text = b"id,sun_x,sun_y,sun_z,target_x,target_y,target_z\n" + data
+    code, out, _ = run_csv(text)
+    assert code in (0, 1, 2)
+    if code != 2:
+        lines = out.splitlines()
+        assert lines[0] == HEADER
+        for r in csv.DictReader(io.StringIO(out)):
+            check_number_format(r)
