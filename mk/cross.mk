@@ -55,6 +55,8 @@ CROSS_LIBS := -lm -lc -lgcc
 HARNESS_CFLAGS = $(WARN) -$(call cfg_opt,$(1)) $(CPU_$(call cfg_core,$(1))) \
   -ffunction-sections -fdata-sections -Iinclude -Isrc -Itables -Itarget -Itests/c
 
+# golden-vector groups of the self-test (target/golden_<name>.c)
+GOLDEN := phase moon shadow earthshine
 # golden vectors: -DOI_HAVE_REF_<NAME> for each committed tests/c/ref_<name>.h
 REF_HEADERS := $(sort $(wildcard tests/c/ref_*.h))
 REF_DEFS := $(foreach h,$(REF_HEADERS),-DOI_HAVE_$(shell echo $(basename $(notdir $(h))) | tr a-z A-Z))
@@ -92,7 +94,7 @@ $(call xdir,$(1),$(2))/stubs/%.o: target/stubs.c | deps-cross
 $(call xdir,$(1),$(2))/libstubs.a: $(patsubst %,$(call xdir,$(1),$(2))/stubs/%.o,$(OI_PUBLIC))
 	rm -f $$@ && $$(CROSS_AR) rcs $$@ $$^
 
-$(call xdir,$(1),$(2))/harness/%.o: target/%.c target/semihost.h target/golden.h $(REF_HEADERS) | deps-cross
+$(call xdir,$(1),$(2))/harness/%.o: target/%.c target/semihost.h target/check.h $(REF_HEADERS) | deps-cross
 	@mkdir -p $$(dir $$@)
 	$$(CROSS_CC) $$(call HARNESS_CFLAGS,$(1)) $$(OPTSET_$(2)) $$(REF_DEFS) -c $$< -o $$@
 
@@ -109,6 +111,7 @@ $(foreach c,$(CROSS_CFGS),$(foreach s,$(CROSS_OPTSETS),$(eval $(call CROSS_LIB_R
 # the self-test image per configuration (full option set)
 define CROSS_IMG_RULES
 $(CROSS_DIR)/$(1)/selftest.elf: $(CROSS_DIR)/$(1)/harness/selftest.o $(CROSS_DIR)/$(1)/harness/startup.o \
+    $(patsubst %,$(CROSS_DIR)/$(1)/harness/golden_%.o,$(GOLDEN)) \
     $(CROSS_DIR)/$(1)/harness/semihost.o $(CROSS_DIR)/$(1)/liborbillum.a $(CROSS_DIR)/$(1)/libstubs.a \
     target/mps2.ld
 	$$(CROSS_CC) $$(call CROSS_LDFLAGS,$(1)) -Wl,-Map=$$(basename $$@).map $$(filter %.o %.a,$$^) \
