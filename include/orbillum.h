@@ -311,7 +311,7 @@ typedef struct oi_exposure {
     unsigned flags;          /* OI_FLAG_* */
 } oi_exposure;
 
-/* Choose exposure time and gain (see README for the rule). */
+/* Choose exposure time and gain (rule: docs/camera.md, src/exposure.c). */
 int oi_expose(const oi_camera *camera, const oi_expose_in *in,
               const oi_expose_goal *goal, oi_exposure *out);
 
