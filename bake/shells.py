@@ -286,95 +286,102 @@ def trace(origins, dirs, atm: Atmosphere, region=None, max_steps=None) -> TraceR
     if max_steps is None:
         max_steps = 8 * (K + 2) + 64
 
-    status = np.full(n, -1, dtype=np.int8)
+    # global results, written when a ray finishes
+    status = np.full(n, TRAPPED, dtype=np.int8)
     n_cross = np.zeros(n, dtype=np.int64)
     n_tir = np.zeros(n, dtype=np.int64)
     path = np.zeros(n)
     tau = np.zeros(n)
     r_min = r0.copy()
 
-    act = np.arange(n)
+    # compact state of the rays still in flight (no scatter per step)
+    idx = np.arange(n)
+    p, dd, rg = pos.copy(), d.copy(), reg.copy()
+    l_cross = np.zeros(n, dtype=np.int64)
+    l_tir = np.zeros(n, dtype=np.int64)
+    l_path = np.zeros(n)
+    l_tau = np.zeros(n)
+    l_rmin = r0.copy()
+
+    def finish(mask, code):
+        j = idx[mask]
+        status[j] = code
+        pos[j] = p[mask]
+        d[j] = dd[mask]
+        reg[j] = rg[mask]
+        n_cross[j] = l_cross[mask]
+        n_tir[j] = l_tir[mask]
+        path[j] = l_path[mask]
+        tau[j] = l_tau[mask]
+        r_min[j] = l_rmin[mask]
+
     for _ in range(max_steps):
-        if act.size == 0:
+        if idx.size == 0:
             break
-        p = pos[act]
-        dd = d[act]
-        rg = reg[act]
-        pp = _dot(p, p)
-        b = _dot(p, dd)
-        # closest approach to the centre along the infinite line (stable form)
-        h2 = np.einsum("ij,ij->i", np.cross(p, dd), np.cross(p, dd))
+        pp = np.einsum("ij,ij->i", p, p)
+        b = np.einsum("ij,ij->i", p, dd)
+        h2 = np.maximum(pp - b * b, 0.0)  # squared closest approach of the line
 
         # sphere below (B[rg-1]), approached from outside: first root
         c_in = pp - B2[rg - 1]
         disc_in = b * b - c_in
         hit_in = (b < 0.0) & (disc_in > 0.0)
-        sq_in = np.sqrt(np.maximum(disc_in, 0.0))
         with np.errstate(divide="ignore", invalid="ignore"):
-            t_in = np.where(hit_in, np.maximum(c_in, 0.0) / (sq_in - b), np.inf)
-
-        # sphere above (B[rg]), from inside: the positive root (stable forms)
-        inside = rg <= K
-        rg_up = np.minimum(rg, K)
-        c_out = pp - B2[rg_up]
-        sq_out = np.sqrt(np.maximum(b * b - c_out, 0.0))
-        with np.errstate(divide="ignore", invalid="ignore"):
+            t_in = np.where(hit_in, np.maximum(c_in, 0.0)
+                            / (np.sqrt(np.maximum(disc_in, 0.0)) - b), np.inf)
+            # sphere above (B[rg]), from inside: the positive root (stable forms)
+            rg_up = np.minimum(rg, K)
+            c_out = pp - B2[rg_up]
+            sq_out = np.sqrt(np.maximum(b * b - c_out, 0.0))
             t_out = np.where(b <= 0.0, sq_out - b, -c_out / (b + sq_out))
-        t_out = np.where(inside, np.maximum(t_out, 0.0), np.inf)
+        t_out = np.where(rg <= K, np.maximum(t_out, 0.0), np.inf)
 
         go_in = t_in <= t_out
         t = np.where(go_in, t_in, t_out)
-        leave = ~np.isfinite(t)  # in the vacuum and missing the sphere below
+        leave = np.isinf(t)  # in the vacuum and missing the sphere below
+        if leave.any():
+            l_rmin[leave] = np.minimum(l_rmin[leave], np.where(
+                b[leave] < 0.0, np.sqrt(h2[leave]), l_rmin[leave]))
+            finish(leave, ESCAPED)
+            keep = ~leave
+            idx, p, dd, rg, l_cross, l_tir, l_path, l_tau, l_rmin = (
+                idx[keep], p[keep], dd[keep], rg[keep], l_cross[keep], l_tir[keep],
+                l_path[keep], l_tau[keep], l_rmin[keep])
+            b, t, go_in, h2 = b[keep], t[keep], go_in[keep], h2[keep]
+            if idx.size == 0:
+                break
 
-        # leaving rays: done (ESCAPED), min radius from the closest approach
-        if np.any(leave):
-            idx = act[leave]
-            status[idx] = ESCAPED
-            ahead = b[leave] < 0.0
-            r_min[idx] = np.minimum(r_min[idx],
-                                    np.where(ahead, np.sqrt(h2[leave]), r_min[idx]))
-        keep = ~leave
-        act, p, dd, rg, b, t, go_in, h2 = (act[keep], p[keep], dd[keep], rg[keep],
-                                           b[keep], t[keep], go_in[keep], h2[keep])
-        if act.size == 0:
-            break
-
-        # bookkeeping along the segment
-        seg_in_shell = rg <= K
-        path[act] += np.where(seg_in_shell, t, 0.0)
-        tau[act] += k_reg[rg] * t
-        closest_inside = (b < 0.0) & (-b < t)
-        q = p + t[:, None] * dd
+        # move to the boundary; bookkeeping along the segment
+        l_path += np.where(rg <= K, t, 0.0)
+        l_tau += k_reg[rg] * t
         rb = np.where(go_in, B[rg - 1], B[np.minimum(rg, K)])
-        q *= (rb / np.linalg.norm(q, axis=1))[:, None]  # snap onto the sphere
-        r_seg = np.where(closest_inside, np.sqrt(h2), rb)
-        r_min[act] = np.minimum(r_min[act], r_seg)
-        pos[act] = q
+        q = p + t[:, None] * dd
+        q *= (rb / np.sqrt(np.einsum("ij,ij->i", q, q)))[:, None]  # snap onto the sphere
+        l_rmin = np.minimum(l_rmin, np.where((b < 0.0) & (-b < t), np.sqrt(h2), rb))
+        p = q
 
-        # the Earth: stop
+        # the Earth: stop there
         earth = go_in & (rg == 1)
-        if np.any(earth):
-            status[act[earth]] = HIT_EARTH
-            d[act[earth]] = dd[earth]
-            reg[act[earth]] = 1
-        bnd = ~earth
-        act, q, dd, rg, go_in, rb = act[bnd], q[bnd], dd[bnd], rg[bnd], go_in[bnd], rb[bnd]
-        if act.size == 0:
-            break
-
-        # refraction or total internal reflection at the boundary
-        normal = q / rb[:, None]
-        nf = np.where(go_in[:, None], normal, -normal)
+        # refraction or total internal reflection at the other boundaries
+        nf = p / rb[:, None]
+        nf = np.where(go_in[:, None], nf, -nf)
         nxt = np.where(go_in, rg - 1, rg + 1)
-        new_d, tir = refract(dd, nf, n_reg[rg], n_reg[nxt])
-        d[act] = new_d
-        n_tir[act] += tir
-        n_cross[act] += ~tir
-        new_rg = np.where(tir, rg, nxt)
-        reg[act] = new_rg
-        gone = new_rg == K + 1  # crossed the top shell outwards
-        status[act[gone]] = ESCAPED
-        act = act[~gone]
+        new_d, tir = refract(dd, nf, n_reg[rg], n_reg[np.maximum(nxt, 0)])
+        tir &= ~earth
+        dd = np.where(earth[:, None], dd, new_d)
+        l_tir += tir
+        l_cross += ~(tir | earth)
+        rg = np.where(tir | earth, rg, nxt)
+        gone = (rg == K + 1) & ~go_in  # crossed the top shell outwards
+        done = earth | gone
+        if done.any():
+            finish(earth, HIT_EARTH)
+            finish(gone, ESCAPED)
+            keep = ~done
+            idx, p, dd, rg, l_cross, l_tir, l_path, l_tau, l_rmin = (
+                idx[keep], p[keep], dd[keep], rg[keep], l_cross[keep], l_tir[keep],
+                l_path[keep], l_tau[keep], l_rmin[keep])
 
-    status[act] = TRAPPED
+    if idx.size:
+        finish(np.ones(idx.size, dtype=bool), TRAPPED)
     return TraceResult(pos, d, status, reg, n_cross, n_tir, path, tau, r_min)
