@@ -39,6 +39,8 @@ import numpy as np
 
 from .common import read_csv, scene_inputs
 
+#: a target fewer pixels across than this is rendered as a PSF blob
+RESOLVED_PX = 4.0
 #: decades of radiance shown by the HDR (logarithmic) tone map
 HDR_DECADES = 8.0
 #: sub-pixels across the target's disc at least (anti-aliasing of the limb)
@@ -86,10 +88,19 @@ def radiance_image(sc: dict, res: dict, cam: dict, crop_px: int | None = None):
     diam_px = 2 * rho / ifov
     if crop_px is None:
         crop_px = int(min(max(24, math.ceil(2.6 * diam_px) + 8), 400))
-    os_ = int(min(max(1, math.ceil(MIN_SUBPIX_ACROSS / max(diam_px, 1e-9))), 64))
-    m = crop_px * os_
+    resolved = diam_px >= RESOLVED_PX
+    if resolved:
+        # sub-pixel grid over the whole crop
+        os_ = int(max(1, math.ceil(MIN_SUBPIX_ACROSS / diam_px)))
+        m = crop_px * os_
+        sub = ifov / os_
+    else:
+        # unresolved: a close-up grid over the disc only; the detector sees a PSF
+        m = int(math.ceil(1.25 * MIN_SUBPIX_ACROSS))
+        sub = 2 * rho / MIN_SUBPIX_ACROSS
+        os_ = ifov / sub
     # angular offsets of sub-pixel centres (rad), image row 0 at the top
-    c = (np.arange(m) - (m - 1) / 2.0) * (ifov / os_)
+    c = (np.arange(m) - (m - 1) / 2.0) * sub
     ax, ay = np.meshgrid(c, -c)
     # rays from the observer; intersect with the sphere |p - tgt| = a
     dirs = (f[None, None, :] + np.tan(ax)[..., None] * r + np.tan(ay)[..., None] * u)
@@ -111,7 +122,7 @@ def radiance_image(sc: dict, res: dict, cam: dict, crop_px: int | None = None):
         else:
             L[s] = np.zeros((m, m))
     meta = {"range_km": d, "ifov_rad": ifov, "diam_px": diam_px, "crop_px": crop_px,
-            "oversample": os_, "subpix_sr": (ifov / os_) ** 2}
+            "oversample": os_, "subpix_sr": sub * sub, "resolved": resolved}
     return L, meta
 
 
@@ -137,11 +148,28 @@ def render(sc: dict, res: dict, cam: dict, seed: int = 1) -> dict:
     gain = float(res["gain"])
     gi = int(res["gain_index"])
     e_per_L = electrons_per_radiance(cam, t_exp, meta["subpix_sr"])
-    sigma = psf_sigma_px(cam["psf_peak_fraction"]) * k
+    sigma_px = psf_sigma_px(cam["psf_peak_fraction"])
     sig_e = {}
-    for s, img in L.items():
-        blurred = gaussian_filter(img * e_per_L, sigma, mode="constant") if sigma > 0 else img * e_per_L
-        sig_e[s] = _bin(blurred, k)
+    if meta["resolved"]:
+        for s, img in L.items():
+            e = img * e_per_L
+            sig_e[s] = _bin(gaussian_filter(e, sigma_px * k, mode="constant")
+                            if sigma_px > 0 else e, k)
+    else:
+        # point source centred on the middle pixel: Gaussian PSF integrated
+        # over each detector pixel (erf differences)
+        n = meta["crop_px"] | 1
+        meta["crop_px"] = n
+        edges = np.arange(n + 1) - n / 2.0
+        if sigma_px > 0:
+            cdf = np.array([0.5 * (1 + math.erf(x / (math.sqrt(2) * sigma_px)))
+                            for x in edges])
+        else:
+            cdf = (edges >= 0).astype(float)
+        w1 = np.diff(cdf)
+        psf = np.outer(w1, w1)
+        for s, img in L.items():
+            sig_e[s] = psf * (img.sum() * e_per_L)
     signal = sum(sig_e.values())
     bg = float(res["background_e"])
     rng = np.random.default_rng(seed)
@@ -193,12 +221,13 @@ def plot_view(out_png, img: dict, sc: dict, res: dict, cam: dict, when: str) -> 
     import matplotlib.pyplot as plt
 
     meta = img["meta"]
-    resolved = meta["diam_px"] >= 8
+    resolved = meta["resolved"]
     fig, ax = plt.subplots(1, 3, figsize=(13, 5.4))
     ext = None
     ax[0].imshow(img["frame"], cmap="gray", vmin=0, vmax=1, interpolation="nearest")
     ax[0].set_title(f"camera frame: {res['exposure_s']:g} s, gain {res['gain']:g}\n"
-                    f"(linear, 0..saturation; photon + read noise)", fontsize=9)
+                    f"(linear 0..saturation, noise; peak {meta['peak_e'] / meta['saturation_e']:.1%}"
+                    f" of saturation)", fontsize=9)
     ax[1].imshow(img["hdr"], cmap="gray", vmin=0, vmax=1, interpolation="nearest", extent=ext)
     ax[1].set_title(f"HDR: log radiance, {HDR_DECADES:g} decades\nnoiseless, sub-pixel grid",
                     fontsize=9)
@@ -218,8 +247,8 @@ def plot_view(out_png, img: dict, sc: dict, res: dict, cam: dict, when: str) -> 
             f"target {meta['diam_px']:.2f} px across; crop {meta['crop_px']} x "
             f"{meta['crop_px']} detector px" +
             ("" if resolved else
-             f"; UNRESOLVED: shown upsampled (nearest pixel), HDR/colour panels on a "
-             f"{meta['oversample']}x sub-pixel grid") +
+             f"; UNRESOLVED: the frame is the PSF blob, upsampled (nearest pixel); the "
+             f"HDR/colour panels show the sphere {meta['oversample']:.0f}x finer than a pixel") +
             f"; up = away from the Earth")
     fig.text(0.01, 0.01, note, fontsize=8, va="bottom")
     fig.tight_layout(rect=(0, 0.12, 1, 0.97))
