@@ -16,6 +16,7 @@
 
 #include "csv_read.h"
 #include "output.h"
+#include "windows.h"
 
 enum column {
     C_ID,
@@ -383,9 +384,10 @@ static void progress(unsigned long rows, time_t *last, int tty)
     fflush(stderr);
 }
 
-int batch_run(const char *path, const oi_camera *default_camera, FILE *out)
+int batch_run(const char *path, const oi_camera *default_camera, FILE *out, FILE *summary)
 {
     batch b;
+    window_list wins;
     csv_reader r;
     FILE *fp;
     int st, result = PLAN_EXIT_OK, tty;
@@ -393,6 +395,7 @@ int batch_run(const char *path, const oi_camera *default_camera, FILE *out)
     time_t last;
 
     memset(&b, 0, sizeof b);
+    windows_init(&wins, 5.0); /* the default SNR goal of oi_expose */
     b.default_camera = default_camera;
     b.path = strcmp(path, "-") == 0 ? "<stdin>" : path;
     fp = strcmp(path, "-") == 0 ? stdin : fopen(path, "rb");
@@ -431,15 +434,24 @@ int batch_run(const char *path, const oi_camera *default_camera, FILE *out)
             memset(&row, 0, sizeof row);
             row.status_name = PLAN_STATUS_PARSE;
             out_csv_row(out, b.col[C_ID] >= 0 ? "" : idbuf, &row);
+            if (summary && windows_add(&wins, b.col[C_ID] >= 0 ? "" : idbuf, &row) != 0) {
+                summary = NULL;
+            }
             bad++;
             continue;
         }
         id = b.col[C_ID] >= 0 ? field_of(&b, &r, C_ID, &sr) : idbuf;
         if (!run_row(&b, &r, &row)) bad++;
         out_csv_row(out, id, &row);
+        if (summary && windows_add(&wins, id, &row) != 0) {
+            fprintf(stderr, "oi-plan: out of memory: no window summary\n");
+            summary = NULL;
+        }
         progress(rows, &last, tty);
     }
     if (tty && rows >= 1024) fprintf(stderr, "\roi-plan: %lu rows done.   \n", rows);
+    if (summary) windows_print(&wins, summary);
+    windows_free(&wins);
     if (bad > 0) {
         fprintf(stderr, "oi-plan: %lu of %lu rows had errors\n", bad, rows);
         if (result == PLAN_EXIT_OK) result = PLAN_EXIT_ROWS;

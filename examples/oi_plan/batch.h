@@ -20,7 +20,9 @@
 
 /* Run the batch on path ("-" for standard input), writing CSV to out and
  * messages to stderr. Rows without a camera column use default_camera.
+ * summary: NULL, or where to print the observation windows of the pass
+ * (consecutive rows, labelled by id) at the end.
  * Returns a PLAN_EXIT_* code. */
-int batch_run(const char *path, const oi_camera *default_camera, FILE *out);
+int batch_run(const char *path, const oi_camera *default_camera, FILE *out, FILE *summary);
 
 #endif

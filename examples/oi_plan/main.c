@@ -12,7 +12,7 @@ static void usage(FILE *fp)
 {
     fputs(
         "usage: oi-plan [--camera NAME] [--step SECONDS]\n"
-        "       oi-plan --csv FILE|- [--camera NAME]\n"
+        "       oi-plan --csv FILE|- [--camera NAME] [--summary]\n"
         "       oi-plan --list-cameras | --help\n"
         "\n"
         "How an object in orbit is lit by the Sun, the Earth and the Moon, and how a\n"
@@ -25,6 +25,8 @@ static void usage(FILE *fp)
         "\n"
         "options:\n"
         "  --csv FILE      batch mode: one output row per input row (FILE '-' = stdin)\n"
+        "  --summary       with --csv: print the observation windows of the pass\n"
+        "                  (runs of consecutive observable rows, named by id) on stderr\n"
         "  --camera NAME   default camera (built-in name; default: the first one)\n"
         "  --step SECONDS  table step of the built-in scenario (default 120)\n"
         "  --list-cameras  list the built-in cameras and their parameters\n"
@@ -52,6 +54,7 @@ static void usage(FILE *fp)
         "  oi-plan                                 # built-in scenario\n"
         "  oi-plan --camera telescope-15cm --step 60\n"
         "  oi-plan --csv pass.csv > plan.csv       # batch\n"
+        "  oi-plan --csv pass.csv --summary > plan.csv   # and its windows on stderr\n"
         "  printf 'sun_x,sun_y,sun_z,target_x,target_y,target_z\\n1.496e8,0,0,0,7000,0\\n' \\\n"
         "      | oi-plan --csv -\n"
         "  oi-plan --list-cameras\n",
@@ -110,7 +113,7 @@ int main(int argc, char **argv)
     const char *csv = NULL, *camera_name = NULL, *step_text = NULL;
     const oi_camera *camera;
     double step = 120.0;
-    int i;
+    int i, summary = 0;
 
     for (i = 1; i < argc; i++) {
         const char *v;
@@ -118,6 +121,10 @@ int main(int argc, char **argv)
         if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
             usage(stdout);
             return 0;
+        }
+        if (strcmp(argv[i], "--summary") == 0) {
+            summary = 1;
+            continue;
         }
         if (strcmp(argv[i], "--list-cameras") == 0) {
             list_cameras(stdout);
@@ -159,6 +166,6 @@ int main(int argc, char **argv)
             return PLAN_EXIT_INPUT;
         }
     }
-    if (csv != NULL) return batch_run(csv, camera, stdout);
+    if (csv != NULL) return batch_run(csv, camera, stdout, summary ? stderr : NULL);
     return scenario_run(stdout, camera, step);
 }

@@ -408,3 +408,21 @@ def test_garbage_never_crashes(data):
         assert lines[0] == HEADER
         for r in csv.DictReader(io.StringIO(out)):
             check_number_format(r)
+
+
+def test_summary_of_windows():
+    dark_obs = dict(DARK, observer_x=-7010, observer_y=0, observer_z=0)
+    rows = [dict(LIT_OBS, id="t0"), dict(LIT_OBS, id="t1"), dict(dark_obs, id="t2"),
+            dict(LIT_OBS, id="t3"), dict(LIT, id="t4")]
+    code, out, err = run_csv(table(rows), "--summary")
+    assert code == 0, err
+    st = parse(out)
+    assert "eclipsed" in st[2]["flags"]
+    good = [float(r["snr"]) >= 5 and not (set(r["flags"].split("+")) &
+            {"eclipsed", "penumbra", "sun_exclusion", "occulted", "saturated"})
+            for r in st[:4]]
+    assert good == [True, True, False, True]
+    assert "observation windows" in err
+    assert "3 of 5 rows observable, in 2 windows" in err
+    # the same CSV on stdout with and without --summary
+    assert run_csv(table(rows))[1] == out
