@@ -43,7 +43,11 @@ typedef struct batch {
     const oi_camera *default_camera;
     const char *path;
     int warned_extra;
+    unsigned long messages;   /* row messages printed so far */
 } batch;
+
+/* Row messages beyond this many are counted, not printed. */
+#define MAX_ROW_MESSAGES 50
 
 /* ASCII case-insensitive equality. */
 static int same_nocase(const char *a, const char *b)
@@ -57,9 +61,16 @@ static int same_nocase(const char *a, const char *b)
 }
 
 /* Report a problem with a row on stderr. */
-static void row_error(const batch *b, unsigned long line, long field, const char *what,
+static void row_error(batch *b, unsigned long line, long field, const char *what,
                       const char *detail)
 {
+    if (++b->messages > MAX_ROW_MESSAGES) {
+        if (b->messages == MAX_ROW_MESSAGES + 1) {
+            fprintf(stderr, "oi-plan: %s: more row errors; further messages suppressed "
+                            "(see the status column)\n", b->path);
+        }
+        return;
+    }
     fprintf(stderr, "oi-plan: %s: line %lu", b->path, line);
     if (field >= 0) fprintf(stderr, ", column %ld", field + 1);
     fprintf(stderr, ": %s", what);
@@ -137,7 +148,7 @@ static int read_header(batch *b, csv_reader *r)
 /* Text of column k in the current record: NULL when the column is absent
  * from the header, "" when empty. *short_row is set when the header has the
  * column but the row is too short. */
-static const char *field_of(const batch *b, const csv_reader *r, int k, int *short_row)
+static const char *field_of(batch *b, const csv_reader *r, int k, int *short_row)
 {
     const char *s;
     if (b->col[k] < 0) return NULL;
@@ -196,7 +207,7 @@ static int parse_terms(const char *s, unsigned *terms)
 
 /* Read a group of three coordinates; returns 1 given, 0 all empty or the
  * columns absent, -1 after reporting a parse error. */
-static int parse_vec(const batch *b, const csv_reader *r, int k0, oi_real v[3], int required)
+static int parse_vec(batch *b, const csv_reader *r, int k0, oi_real v[3], int required)
 {
     int i, given = 0, first_empty = -1, short_row = 0;
     for (i = 0; i < 3; i++) {
@@ -229,7 +240,7 @@ static int parse_vec(const batch *b, const csv_reader *r, int k0, oi_real v[3], 
 
 /* Optional scalar column: 0 absent or empty (value untouched), 1 given,
  * -1 parse error (reported). */
-static int parse_opt(const batch *b, const csv_reader *r, int k, double *value)
+static int parse_opt(batch *b, const csv_reader *r, int k, double *value)
 {
     int sr = 0, st;
     const char *s = field_of(b, r, k, &sr);
@@ -333,12 +344,13 @@ static int run_row(batch *b, const csv_reader *r, plan_row *row)
         cam = oi_camera_find(s);
         if (cam == NULL) {
             int i;
-            fprintf(stderr, "oi-plan: %s: line %lu, column %ld: unknown camera \"%.60s\"; "
-                            "built-in cameras:", b->path, r->rec_line, b->col[C_CAMERA] + 1, s);
-            for (i = 0; oi_camera_builtin(i) != NULL; i++) {
-                fprintf(stderr, " %s", oi_camera_builtin(i)->name);
+            char detail[400];
+            size_t n = (size_t)snprintf(detail, sizeof detail, "\"%.60s\"; built-in cameras:", s);
+            for (i = 0; oi_camera_builtin(i) != NULL && n < sizeof detail; i++) {
+                n += (size_t)snprintf(detail + n, sizeof detail - n, " %s",
+                                      oi_camera_builtin(i)->name);
             }
-            fputc('\n', stderr);
+            row_error(b, r->rec_line, b->col[C_CAMERA], "unknown camera", detail);
             row->status = OI_ERR_CAMERA;
             row->status_name = oi_status_name(OI_ERR_CAMERA);
             return 0;
@@ -429,8 +441,9 @@ int batch_run(const char *path, const oi_camera *default_camera, FILE *out, FILE
             break;
         }
         if (st != CSV_RECORD) {
-            fprintf(stderr, "oi-plan: %s: line %lu, character %lu: %s\n", b.path, r.err_line,
-                    r.err_col, csv_result_text(st));
+            char where[48];
+            snprintf(where, sizeof where, "(at character %lu of the line)", r.err_col);
+            row_error(&b, r.err_line, -1, csv_result_text(st), where);
             memset(&row, 0, sizeof row);
             row.status_name = PLAN_STATUS_PARSE;
             out_csv_row(out, b.col[C_ID] >= 0 ? "" : idbuf, &row);

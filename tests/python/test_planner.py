@@ -426,3 +426,13 @@ def test_summary_of_windows():
     assert "3 of 5 rows observable, in 2 windows" in err
     # the same CSV on stdout with and without --summary
     assert run_csv(table(rows))[1] == out
+
+
+def test_row_messages_are_capped():
+    rows = [dict(LIT, target_y="x")] * 200 + [LIT]
+    code, out, err = run_csv(table(rows))
+    assert code == 1
+    st = [r["status"] for r in parse(out)]
+    assert st.count("ERR_PARSE") == 200 and st[-1] == "OK"
+    assert err.count("expected a number") == 50
+    assert "suppressed" in err and "200 of 201 rows had errors" in err
