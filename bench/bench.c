@@ -5,7 +5,8 @@
  * earthshine table with the baker's quadrature).
  *
  *   bench time [reps]          median ns per scene, every configuration
- *   bench count CONFIG N       run CONFIG N times over the scene mix (for
+ *   bench count CONFIG N [LIGHT]  run CONFIG N times over the scene mix, or
+ *                              over its lit/penumbra/umbra scenes only (for
  *                              valgrind --tool=callgrind: two N, difference)
  *   bench dump                 per scene: orbit, light, region, theta, h, phi, psi
  *   bench configs              list the configurations
@@ -80,6 +81,9 @@ static void setup(void)
     }
 }
 
+/* scenes of one lighting class only (-1: all) */
+static int only_light = -1;
+
 /* One pass of a configuration over the scene mix; returns a checksum. */
 static double run_config(int cfg)
 {
@@ -97,6 +101,7 @@ static double run_config(int cfg)
     lambert.earth_model = OI_EARTH_LAMBERT;
     for (i = 0; i < BENCH_NSCENES; i++) {
         oi_scene *s = &scenes[i];
+        if (only_light >= 0 && raw[i].light != only_light) continue;
         switch (cfg) {
         case C_ALL:
             s->terms = OI_TERM_ALL;
@@ -218,12 +223,17 @@ int main(int argc, char **argv)
         printf("nscenes %d\n", BENCH_NSCENES);
         return 0;
     }
-    if (argc == 4 && strcmp(argv[1], "count") == 0) {
+    if ((argc == 4 || argc == 5) && strcmp(argv[1], "count") == 0) {
         int c = find_config(argv[2]), n = atoi(argv[3]), k;
+        if (argc == 5) {
+            for (k = 0; k < BENCH_LIGHTS; k++)
+                if (strcmp(bench_light_name[k], argv[4]) == 0) only_light = k;
+            if (only_light < 0) return 2;
+        }
         if (c < 0 || n < 0) return 2;
         for (k = 0; k < n; k++) sink = run_config(c);
         return 0;
     }
-    fprintf(stderr, "usage: bench time [reps] | count CONFIG N | dump | configs\n");
+    fprintf(stderr, "usage: bench time [reps] | count CONFIG N [LIGHT] | dump | configs\n");
     return 2;
 }

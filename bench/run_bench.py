@@ -29,6 +29,7 @@ ROOT = os.path.dirname(HERE)
 sys.path.insert(0, ROOT)
 
 CONFIGS = ["all", "sun", "sun_earth", "all_expose", "sun_fraction", "earthshine", "earthshine_lambert"]
+LIGHTS = ["lit", "penumbra", "umbra"]
 R_EARTH_KM = 6378.137
 
 GOAL_INSTR = 2000
@@ -67,10 +68,11 @@ def nscenes(binary):
     raise SystemExit("bench: no scene count")
 
 
-def callgrind_total(binary, config, n, tmp):
+def callgrind_total(binary, config, n, tmp, light=None):
     out = os.path.join(tmp, "cg.%s.%d.out" % (config, n))
     subprocess.run(["valgrind", "--tool=callgrind", "--callgrind-out-file=" + out, binary,
-                    "count", config, str(n)], check=True, capture_output=True, text=True)
+                    "count", config, str(n)] + ([light] if light else []), check=True,
+                   capture_output=True, text=True)
     total = None
     with open(out) as f:
         for line in f:
@@ -114,6 +116,13 @@ def main():
                 out.put("bench.%s.%s.instructions" % (prec, c), "%.0f" % per, "instructions",
                         "callgrind, (I(%d) - I(%d)) / (%d x %d scenes)" % (args.n2, args.n1,
                                                                            args.n2 - args.n1, ns))
+                if c in ("all_expose", "sun_fraction"):
+                    for light in LIGHTS:  # where the cost is: lit, penumbra, umbra
+                        t1 = callgrind_total(b, c, args.n1, tmp, light)
+                        t2 = callgrind_total(b, c, args.n2, tmp, light)
+                        per = (t2 - t1) / float((args.n2 - args.n1) * ns / len(LIGHTS))
+                        out.put("bench.%s.%s.%s.instructions" % (prec, c, light), "%.0f" % per,
+                                "instructions", "the %s third of the mix" % light)
     else:
         out.put("bench.instructions", "unavailable", "-", "valgrind not installed")
 
@@ -184,6 +193,31 @@ def quadrature(args, out):
             t = float(d["value"])
             out.put("bench.%s.earthshine.speedup_vs_quadrature" % prec, "%.0f" % (t_quad_ns / max(t, 1e-3)),
                     "x", "quadrature ns / table ns")
+    # The same quadrature at the lowest order (of a fixed ladder) whose error on
+    # these scenes is no larger than the table's: the slow way at matched accuracy.
+    tab_err = out.data.get("bench.double.earthshine.max_err_over_subsolar")
+    if tab_err is not None:
+        target = float(tab_err["value"])
+        for order in (4, 6, 8, 12, 16, 24, 32):
+            approx = np.array([float(ref.phi_psi_reference(float(theta[i]), float(x[i]), order, order)[0])
+                               for i in range(len(rows))])
+            err = float((np.abs(approx - phi_ref) / phi0).max())
+            if err <= target:
+                tt = []
+                for i in range(len(rows)):
+                    t0 = time.perf_counter()
+                    ref.phi_psi_reference(float(theta[i]), float(x[i]), order, order)
+                    tt.append(time.perf_counter() - t0)
+                tt.sort()
+                tq = tt[len(tt) // 2] * 1e9
+                out.put("bench.quadrature.matched_accuracy.order", order, "nodes",
+                        "Gauss-Legendre order per axis reaching the table's error (%.2g of phi(0,h))" % err)
+                out.put("bench.quadrature.matched_accuracy.ns_median", "%.0f" % tq, "ns")
+                d = out.data.get("bench.double.earthshine.ns_median")
+                if d:
+                    out.put("bench.double.earthshine.speedup_vs_quadrature_matched", "%.0f" % (
+                        tq / max(float(d["value"]), 1e-3)), "x", "quadrature at matched accuracy / table")
+                break
     if not ok.all():
         out.put("bench.double.earthshine.scenes_with_error_status", int((~ok).sum()), "scenes")
 
