@@ -436,3 +436,28 @@ def test_row_messages_are_capped():
     assert st.count("ERR_PARSE") == 200 and st[-1] == "OK"
     assert err.count("expected a number") == 50
     assert "suppressed" in err and "200 of 201 rows had errors" in err
+
+
+def _render(columns, rows, quote_mask, pad, eol):
+    """CSV text with some fields quoted, unquoted ones padded, a given line end."""
+    def cell(c, v, i):
+        s = str(v)
+        if quote_mask[i % len(quote_mask)] or "," in s or '"' in s:
+            return '"' + s.replace('"', '""') + '"'
+        return pad + s + pad
+    lines = [",".join(cell("", c, i) for i, c in enumerate(columns))]
+    for r in rows:
+        lines.append(",".join(cell(c, r.get(c, ""), i) for i, c in enumerate(columns)))
+    return eol.join(lines) + eol
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(perm=st.permutations(list(LIT_OBS.keys()) + ["id", "note"]),
+       quote_mask=st.lists(st.booleans(), min_size=1, max_size=5),
+       pad=st.sampled_from(["", " ", "\t"]), eol=st.sampled_from(["\n", "\r\n", "\r"]))
+def test_layout_does_not_change_results(perm, quote_mask, pad, eol):
+    rows = [dict(LIT_OBS, id="a", note="x, y"), dict(DARK, id="b", note="")]
+    canonical = run_csv(table(rows))[1]
+    code, out, err = run_csv(_render(perm, rows, quote_mask, pad, eol))
+    assert code == 0, err
+    assert out == canonical
