@@ -4,6 +4,7 @@
 #   make size         flash and RAM per configuration and compile-time option set
 #   make stack        worst-case stack of every public function (-fstack-usage + call graph)
 #   make target-test  bare-metal self-test images run under qemu-system-arm
+#                     (TARGET_STRICT=1: known deviations count as failures)
 #   make bench        host benchmark: ns and instructions per scene, against quadrature
 # Every runtime file is compiled with the host's strict flags ($(WARN), -Werror included).
 
@@ -53,13 +54,18 @@ CROSS_LDFLAGS = $(CPU_$(call cfg_core,$(1))) -nostartfiles -T target/mps2.ld -Wl
 CROSS_LIBS := -lm -lc -lgcc
 # The harness (startup, semihosting, self-test) is not the runtime: same warnings, no -fstack-usage.
 HARNESS_CFLAGS = $(WARN) -$(call cfg_opt,$(1)) $(CPU_$(call cfg_core,$(1))) \
-  -ffunction-sections -fdata-sections -Iinclude -Isrc -Itables -Itarget -Itests/c
+  -ffunction-sections -fdata-sections -Iinclude -Isrc -Itables -Itarget -Itests/c -Itests \
+  $(if $(TARGET_STRICT),-DOI_TARGET_STRICT)
 
 # golden-vector groups of the self-test (target/golden_<name>.c)
-GOLDEN := phase moon shadow earthshine
+GOLDEN := phase moon shadow earthshine stability
 # golden vectors: -DOI_HAVE_REF_<NAME> for each committed tests/c/ref_<name>.h
 REF_HEADERS := $(sort $(wildcard tests/c/ref_*.h))
 REF_DEFS := $(foreach h,$(REF_HEADERS),-DOI_HAVE_$(shell echo $(basename $(notdir $(h))) | tr a-z A-Z))
+# the stability suite's vectors (issue 5)
+STAB_VECTORS := $(wildcard tests/stability/vectors.h)
+REF_HEADERS += $(STAB_VECTORS)
+REF_DEFS += $(if $(STAB_VECTORS),-DOI_HAVE_STABILITY_VECTORS)
 
 .PHONY: cross size stack target-test bench deps-cross cross-clean
 
