@@ -279,6 +279,7 @@ const oi_camera *oi_camera_find(const char *name);
 #define OI_FLAG_SATURATED     (16u)  /* saturated even at the shortest exposure, lowest gain */
 #define OI_FLAG_PENUMBRA      (32u)  /* target in the penumbra */
 #define OI_FLAG_OCCULTED      (64u)  /* the Earth hides the target from the observer */
+#define OI_FLAG_RESOLVED      (128u) /* target wider than a pixel: peak limited by its radiance */
 
 /* Name of one flag bit ("sun_exclusion", ...); NULL if unknown. */
 const char *oi_flag_name(unsigned flag_bit);

@@ -37,7 +37,7 @@
 /* Flags that describe the geometry (kept from the input); the others are
  * computed here. */
 #define FLAGS_GEOMETRIC (OI_FLAG_SUN_EXCLUSION | OI_FLAG_EARTH_IN_FOV | OI_FLAG_ECLIPSED | \
-                         OI_FLAG_PENUMBRA | OI_FLAG_OCCULTED)
+                         OI_FLAG_PENUMBRA | OI_FLAG_OCCULTED | OI_FLAG_RESOLVED)
 #define FLAGS_ALL (FLAGS_GEOMETRIC | OI_FLAG_TOO_FAINT | OI_FLAG_SATURATED)
 
 /* lo < x <= hi (false for NaN). */
@@ -136,7 +136,7 @@ static void evaluate(const oi_camera *c, oi_real rate_s, oi_real rate_b, int ti,
  * Returned (function value):
  *             const char *  "sun_exclusion", "earth_in_fov", "eclipsed",
  *                           "too_faint", "saturated", "penumbra",
- *                           "occulted"; NULL for 0, a combination of bits
+ *                           "occulted", "resolved"; NULL for 0, a combination of bits
  *                           or an unknown bit.
  */
 const char *oi_flag_name(unsigned flag_bit)
@@ -149,6 +149,7 @@ const char *oi_flag_name(unsigned flag_bit)
     case OI_FLAG_SATURATED: return "saturated";
     case OI_FLAG_PENUMBRA: return "penumbra";
     case OI_FLAG_OCCULTED: return "occulted";
+    case OI_FLAG_RESOLVED: return "resolved";
     default: return NULL;
     }
 }
@@ -205,9 +206,9 @@ const char *oi_flag_name(unsigned flag_bit)
  *      [0, pi], 1..OI_CAMERA_MAX_TIMES times in (0, 1e4] s strictly
  *      ascending, 1..OI_CAMERA_MAX_GAINS gains in (0, 1e3] strictly
  *      ascending, read noise [0, 1e6] e-. name is not used (may be NULL).
- *   5. The target is treated as a point source: a resolved target puts less
- *      than psf_peak_fraction of its light in one pixel, so fill and SNR
- *      are then upper bounds.
+ *   5. The target is treated as a point source here: a resolved target puts
+ *      less than psf_peak_fraction of its light in one pixel (oi_expose_scene
+ *      bounds that, see its Note 5).
  *
  * References: docs/camera.md; PHYSICS.md section 3 ("The camera").
  */
@@ -306,7 +307,10 @@ int oi_expose(const oi_camera *camera, const oi_expose_in *in,
  *                 OI_ERR_BELOW_SURFACE  observer or target at or below the
  *                                   surface;
  *                 OI_ERR_OBSERVER_AT_TARGET  observer and target coincide;
- *                 OI_ERR_ALBEDO     earth_albedo outside [0, 1];
+ *                 OI_ERR_ALBEDO     earth_albedo or target_albedo outside [0, 1];
+ *                 OI_ERR_NONFINITE  also for a non-finite irradiance or flux
+ *                                   in illum; OI_ERR_MAGNITUDE for a negative
+ *                                   one;
  *                 any status of oi_expose.  On error *out is zeroed.
  *
  * Notes:
@@ -322,10 +326,16 @@ int oi_expose(const oi_camera *camera, const oi_expose_in *in,
  *      The background is physical and does not depend on scene->terms.
  *   4. OI_FLAG_OCCULTED when the Earth lies between the observer and the
  *      target: the target's flux is then taken as 0 (TOO_FAINT follows).
- *   5. OI_FLAG_ECLIPSED when illum->shadow.region is OI_SHADOW_UMBRA,
+ *   5. Resolved target: no pixel can collect more than a Lambertian surface
+ *      of the target's albedo facing every source at once, of radiance
+ *      target_albedo (e_sun + e_earth + e_moon) / pi, over the pixel's solid
+ *      angle (pitch / focal)^2. When psf_peak_fraction * flux exceeds that,
+ *      the flux given to oi_expose is reduced so that the brightest pixel
+ *      gets exactly that bound, and OI_FLAG_RESOLVED is raised.
+ *   6. OI_FLAG_ECLIPSED when illum->shadow.region is OI_SHADOW_UMBRA,
  *      OI_FLAG_PENUMBRA when it is OI_SHADOW_PENUMBRA or OI_SHADOW_ANNULAR
  *      (part of the Sun hidden in both).
- *   6. Not modelled: the Moon or the Earth's limb glow in the field, stray
+ *   7. Not modelled: the Moon or the Earth's limb glow in the field, stray
  *      light from the Sun outside the exclusion angle, the atmosphere's
  *      radiance at the limb.
  *
@@ -339,6 +349,7 @@ int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
     oi_expose_in in;
     oi_real b[3], bh[3], neg_obs[3], sun_rel[3], hit[3], sun_hit[3], nh[3], sh[3];
     oi_real r_obs, r_tgt, range, re, sun_angle, gamma, rho, c, sc, ob, s_hit, cos_i, e0, au_d;
+    oi_real ifov, cap;
     int st;
 
     if (out == NULL) return OI_ERR_NULL;
@@ -351,7 +362,18 @@ int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
         !oi__finite3(scene->observer_km)) {
         return OI_ERR_NONFINITE;
     }
-    if (!(scene->earth_albedo >= 0 && scene->earth_albedo <= OI_R(1.0))) return OI_ERR_ALBEDO;
+    if (!(scene->earth_albedo >= 0 && scene->earth_albedo <= OI_R(1.0)) ||
+        !(scene->target_albedo >= 0 && scene->target_albedo <= OI_R(1.0))) {
+        return OI_ERR_ALBEDO;
+    }
+    if (!OI_ISFINITE(illum->e_sun) || !OI_ISFINITE(illum->e_earth) ||
+        !OI_ISFINITE(illum->e_moon) || !OI_ISFINITE(illum->flux_obs)) {
+        return OI_ERR_NONFINITE;
+    }
+    if (illum->e_sun < 0 || illum->e_earth < 0 || illum->e_moon < 0 || illum->flux_obs < 0) {
+        return OI_ERR_MAGNITUDE;
+    }
+    if (!camera_valid(camera)) return OI_ERR_CAMERA;
     re = m.earth_radius_km;
     r_obs = oi__norm(scene->observer_km);
     r_tgt = oi__norm(scene->target_km);
@@ -402,6 +424,16 @@ int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
         }
     }
     if (in.flags & OI_FLAG_OCCULTED) in.flux_w_m2 = 0;
+
+    /* Resolved target: the brightest pixel sees at most the radiance
+     * albedo * sum(E) / pi over its solid angle (Note 5). */
+    ifov = camera->pixel_pitch_m / camera->focal_length_m;
+    cap = scene->target_albedo * (illum->e_sun + illum->e_earth + illum->e_moon) / OI_PI_R *
+          (ifov * ifov) / camera->psf_peak_fraction;
+    if (in.flux_w_m2 > cap) {
+        in.flux_w_m2 = cap;
+        in.flags |= OI_FLAG_RESOLVED;
+    }
 
     if (illum->shadow.region == OI_SHADOW_UMBRA) {
         in.flags |= OI_FLAG_ECLIPSED;

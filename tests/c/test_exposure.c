@@ -434,9 +434,10 @@ static void test_flag_names(void **state)
     assert_string_equal(oi_flag_name(OI_FLAG_SATURATED), "saturated");
     assert_string_equal(oi_flag_name(OI_FLAG_PENUMBRA), "penumbra");
     assert_string_equal(oi_flag_name(OI_FLAG_OCCULTED), "occulted");
+    assert_string_equal(oi_flag_name(OI_FLAG_RESOLVED), "resolved");
     assert_null(oi_flag_name(0));
     assert_null(oi_flag_name(OI_FLAG_SUN_EXCLUSION | OI_FLAG_ECLIPSED));
-    assert_null(oi_flag_name(128u));
+    assert_null(oi_flag_name(256u));
 }
 #endif /* OI_NO_EXPOSURE */
 
@@ -484,6 +485,7 @@ static oi_illum lit_illum(double flux)
     oi_illum il;
     memset(&il, 0, sizeof il);
     il.flux_obs = (oi_real)flux;
+    il.e_sun = (oi_real)TSI;
     il.shadow.region = OI_SHADOW_LIT;
     return il;
 }
@@ -589,6 +591,41 @@ static void test_scene_sun_and_earth_angles(void **state)
     assert_false(out.flags & OI_FLAG_EARTH_IN_FOV);
 }
 
+/* A target wider than a pixel: the brightest pixel sees at most the
+ * radiance albedo * (E_sun + E_earth + E_moon) / pi over the pixel's solid
+ * angle. Synthetic camera: IFOV 1e-3 rad, k = 1e19 e-/J, area 1 m^2, psf 0.5:
+ * peak rate 0.2 * 1000 / pi * 1e-6 * 1e19 e-/s. A flux below the bound
+ * (divided by psf) is left alone. */
+static void test_scene_resolved_target(void **state)
+{
+    oi_camera c = synth();
+    oi_scene s;
+    oi_illum il = lit_illum(1e-3);
+    oi_exposure out;
+    double peak_rate = 0.2 * (600.0 + 300.0 + 100.0) / PI * 1e-6 * 1e19;
+    (void)state;
+    c.psf_peak_fraction = (oi_real)0.5;
+    c.full_well_e = (oi_real)1e9;
+    c.gains[0] = (oi_real)0.001;  /* saturation 1e12 e- at the lowest gain */
+    oi_scene_defaults(&s);
+    s.has_observer = 1;
+    s.target_albedo = (oi_real)0.2;
+    set3(s.sun_km, 0, 0, -AU);
+    set3(s.observer_km, 0, RE + 700, 0);
+    set3(s.target_km, 0, RE + 700, 1);
+    il.e_sun = 600;
+    il.e_earth = 300;
+    il.e_moon = 100;
+    check_int(OI_OK, oi_expose_scene(&c, &s, &il, NULL, NULL, &out), "status");
+    assert_true(out.flags & OI_FLAG_RESOLVED);
+    check_rel(peak_rate * out.exposure_s, out.signal_e, REL_TOL * 10, "capped signal");
+    /* just below the bound: unchanged, no flag (flux * psf * 1e19 < peak_rate) */
+    il.flux_obs = (oi_real)(0.99 * peak_rate / 1e19 / 0.5);
+    check_int(OI_OK, oi_expose_scene(&c, &s, &il, NULL, NULL, &out), "status 2");
+    assert_false(out.flags & OI_FLAG_RESOLVED);
+    check_rel(0.99 * peak_rate * out.exposure_s, out.signal_e, REL_TOL * 10, "signal");
+}
+
 static void test_scene_shadow_flags(void **state)
 {
     oi_camera c = synth();
@@ -668,6 +705,14 @@ static void test_scene_errors(void **state)
     s = base;
     s.earth_albedo = (oi_real)1.5;
     expect_scene_status(OI_ERR_ALBEDO, &c, &s, &il, NULL, "albedo");
+    s = base;
+    s.target_albedo = (oi_real)-0.5;
+    expect_scene_status(OI_ERR_ALBEDO, &c, &s, &il, NULL, "target albedo");
+    il.e_earth = (oi_real)INFINITY;
+    expect_scene_status(OI_ERR_NONFINITE, &c, &base, &il, NULL, "e_earth inf");
+    il.e_earth = -1;
+    expect_scene_status(OI_ERR_MAGNITUDE, &c, &base, &il, NULL, "e_earth negative");
+    il = lit_illum(1e-15);
     memset(&m, 0, sizeof m);
     m.tsi_w_m2 = -1;
     expect_scene_status(OI_ERR_MODEL, &c, &base, &il, &m, "model");
@@ -700,6 +745,7 @@ int main(void)
         cmocka_unit_test(test_scene_nadir_subsolar),
         cmocka_unit_test(test_scene_occulted),
         cmocka_unit_test(test_scene_sun_and_earth_angles),
+        cmocka_unit_test(test_scene_resolved_target),
         cmocka_unit_test(test_scene_shadow_flags),
         cmocka_unit_test(test_scene_errors),
 #endif

@@ -25,7 +25,7 @@ HEADER = ("id,status,sun_fraction,sun_fraction_atm,e_sun,e_earth,e_moon,earth_th
           "earth_h_km,flux_obs,mag_v,exposure_s,gain,snr,flags")
 NUMERIC = HEADER.split(",")[2:14]
 FLAG_NAMES = {"sun_exclusion", "earth_in_fov", "eclipsed", "too_faint", "saturated",
-              "penumbra", "occulted"}
+              "penumbra", "occulted", "resolved"}
 AU = 149597870.7
 TSI = 1361.0
 
