@@ -95,8 +95,9 @@ static int read_header(batch *b, csv_reader *r)
         return PLAN_EXIT_INPUT;
     }
     if (st != CSV_RECORD) {
-        fprintf(stderr, "oi-plan: %s: line %lu, column %lu: cannot read the header: %s\n",
-                b->path, r->err_line, r->err_col, csv_result_text(st));
+        fprintf(stderr, "oi-plan: %s: line %lu, character %lu: cannot read the header: %s%s\n",
+                b->path, r->err_line, r->err_col, csv_result_text(st),
+                st == CSV_BAD_BYTE ? " (save the file as UTF-8 or ASCII CSV, not UTF-16)" : "");
         return PLAN_EXIT_INPUT;
     }
     b->header_fields = csv_nfields(r);

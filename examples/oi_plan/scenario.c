@@ -264,7 +264,8 @@ int scenario_run(FILE *out, const oi_camera *camera, double step_s)
                 exclusions[k].start / 60.0, (exclusions[k].last + FINE_STEP_S) / 60.0);
     }
     fprintf(out, "\nBest observation windows (target in full sunlight, Sun outside the "
-                 "exclusion angle, not saturated, SNR >= %.0f):\n", snr_goal);
+                 "exclusion angle,\nnot behind the Earth, not saturated, SNR >= %.0f):\n",
+            snr_goal);
     if (n_windows == 0) {
         fprintf(out, "  none\n");
     } else {
