@@ -461,3 +461,10 @@ def test_layout_does_not_change_results(perm, quote_mask, pad, eol):
     code, out, err = run_csv(_render(perm, rows, quote_mask, pad, eol))
     assert code == 0, err
     assert out == canonical
+
+
+def test_header_too_long_or_binary():
+    code, out, err = run_csv("sun_x," + "x" * (2 << 20) + "\n1\n")
+    assert code == 2 and out == "" and "longer" in err
+    code, out, err = run_csv("s\0u\0n\0_\0x\0\n".encode("latin-1"))
+    assert code == 2 and "UTF-16" in err
