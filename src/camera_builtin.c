@@ -55,7 +55,7 @@ static const oi_camera builtin[] = {
      * 1: "telescope-15cm": a 15 cm space telescope of the NEOSSat / MOST
      * class: 15 cm aperture f/5.88 Maksutov (Wallace et al. 2006, Proc. SPIE
      * 6265, 626526: 15 cm, Sun exclusion 45 deg; Laurin et al. 2008, Proc.
-     * SPIE 7010, 701013), e2v CCD47-20 frame-transfer CCD (1024 x 1024,
+     * SPIE 7010), e2v CCD47-20 frame-transfer CCD (1024 x 1024,
      * 13 um pixels; e2v CCD47-20 datasheet).
      */
     {
