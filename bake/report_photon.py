@@ -113,9 +113,12 @@ def section(outdir) -> str:
             if interp == "linear":
                 expected[nb] = gather_function(f, T, R / X, R)[0]   # 96 x 96, as gather()
     md.append("")
+    nb_ok = min((nb for (nb, it) in bias if bias[nb, it][0] <= GOAL), default=None)
     md.append("The largest bias sits at the terminator (theta = 90 deg) in LEO, where the map's "
               "kink at 90 deg is smeared over one bin. The default (1 deg, linear) is the seed's "
-              "resolution; below 1e-3 the bins must be <= 0.25 deg.\n")
+              "resolution; a bias below 1e-3 needs "
+              + (f"{nb_ok} bins ({180.0 / nb_ok:g} deg) or more." if nb_ok else "more than 1440 bins.")
+              + "\n")
 
     # ---- convergence with photon count
     ns = [100_000, 300_000, 1_000_000, 3_000_000, 10_000_000]
