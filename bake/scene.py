@@ -21,7 +21,7 @@ from . import reference as ref
 # for scenes, smallest first.
 THETA_LADDER = [(3, 5), (5, 9), (7, 13), (9, 17), (13, 25), (17, 33), (25, 49), (33, 65), (41, 81)]
 ALT_LADDER = [2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64]
-SEARCH_MARGIN = 0.8  # a candidate passes the search at 80 % of the goal
+SEARCH_MARGIN = 0.6  # a candidate passes the (sparser) search at 60 % of the goal
 
 
 def load(path):
@@ -63,6 +63,7 @@ def choose_grid(cfg, log=print, progress=None):
     order = int(cfg["reference_order"])
     best = None
     for n_lit, n_term in THETA_LADDER:
+        prev = None
         for n_alt in ALT_LADDER:
             spec = grid.TableSpec(n_lit, n_term, n_alt, w_lo, w_hi)
             if best is not None and spec.bytes() >= best[0].bytes():
@@ -77,6 +78,9 @@ def choose_grid(cfg, log=print, progress=None):
             if ok:
                 best = (spec, q, psi)
                 break
+            if prev is not None and m["max_score"] > 0.9 * prev:
+                break  # limited by the theta resolution: next rung
+            prev = m["max_score"]
         if best is not None and best[0].n_alt == ALT_LADDER[0]:
             break
     if best is None:

@@ -1,0 +1,24 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * oi_earth_leo.h: generated earthshine table (see oi_earth_leo.c for its provenance).
+ */
+#ifndef OI_EARTH_LEO_H
+#define OI_EARTH_LEO_H
+
+#include "oi_table.h"
+
+#if OI_TABLE_FORMAT != 2
+#error "oi_earth_leo.h: table format mismatch: regenerate tables (make bake)"
+#endif
+
+#define OI_EARTH_LEO_N_LIT 33
+#define OI_EARTH_LEO_N_TERM 65
+#define OI_EARTH_LEO_N_ALT 24
+#define OI_EARTH_LEO_N_VALUES 2352
+
+#ifndef OI_NO_EARTH_TABLE
+/* oi_earth_leo: altitude 200 km to 2000 km, max relative error 2.812e-04 (see oi_earth_leo.c). */
+extern const oi_earth_table oi_earth_leo;
+#endif
+
+#endif /* OI_EARTH_LEO_H */
