@@ -63,7 +63,12 @@ def main(argv=None) -> int:
     p.add_argument("-o", "--output", default="-", help="output CSV (default: standard output)")
     a = p.parse_args(argv)
 
+    import warnings
+
     from . import scenario as S  # astropy import is slow: only after --help
+
+    warnings.showwarning = lambda m, c, f, l, file=None, line=None: print(
+        f"warning: {m}", file=sys.stderr)
 
     if a.list:
         for name in S.list_cases():
@@ -113,6 +118,9 @@ def main(argv=None) -> int:
     except S.ScenarioError as e:
         print(f"error: {e}", file=sys.stderr)
         return 2
+    except BrokenPipeError:  # e.g. piped into head
+        sys.stderr.close()
+        return 0
     return 0
 
 

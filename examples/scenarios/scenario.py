@@ -110,6 +110,14 @@ def read_tles(path: str) -> list[Tle]:
         i += 1
         if not line.strip() or line.lstrip().startswith("#"):
             continue
+        if line.startswith("1 ") and len(line) < 64 and (
+                i < len(raw) and raw[i].startswith("2 ")):
+            raise ScenarioError(f"{path}:{lineno}: TLE line 1 is too short "
+                                f"({len(line)} characters, expected 69)")
+        if line.startswith("1 ") and len(line) < 64 and not name and len(line) > 20 \
+                and line[2:7].strip().isdigit():
+            raise ScenarioError(f"{path}:{lineno}: looks like a TLE line 1 but is too short "
+                                f"({len(line)} characters, expected 69) and has no line 2")
         if line.startswith("1 ") and len(line) >= 64:
             if i >= len(raw) or not raw[i].startswith("2 "):
                 raise ScenarioError(
@@ -260,10 +268,20 @@ def times_utc(start: str, stop: str, step_s: float) -> Time:
     return t0 + (np.arange(n) * step_s) * u.s
 
 
+#: beyond this many days from the element epoch a warning is printed
+EPOCH_WARN_DAYS = 14.0
+
+
 def propagate_gcrs(sat: Satrec, t: Time, label: str = "satellite") -> np.ndarray:
     """Positions (N, 3) km in GCRS of an sgp4 satellite at UTC epochs t."""
     jd1 = np.asarray(t.utc.jd1, dtype=float)
     jd2 = np.asarray(t.utc.jd2, dtype=float)
+    age = np.max(np.abs((jd1 - sat.jdsatepoch) + (jd2 - sat.jdsatepochF)))
+    if age > EPOCH_WARN_DAYS:
+        warnings.warn(f"{label}: epochs up to {age:.0f} days from the element epoch "
+                      f"({Time(sat.jdsatepoch + sat.jdsatepochF, format='jd').utc.isot[:16]}Z): "
+                      "SGP4 predictions degrade by kilometres per day; use TLEs closer to "
+                      "the dates", stacklevel=2)
     err, r, _v = sat.sgp4_array(jd1, jd2)
     bad = np.nonzero(err)[0]
     if bad.size:

@@ -176,3 +176,14 @@ def test_cli_writes_file(tmp_path):
     rows = list(csv.DictReader(out.open()))
     assert len(rows) == 5 and rows[0]["camera"] == "star-tracker"
     assert main(["--case", "no-such-case"]) == 2
+
+
+def test_short_tle_line_and_old_elements(tmp_path):
+    with pytest.raises(S.ScenarioError, match=r"x.tle:1: .*too short \(54 characters"):
+        S.read_tles(_write(tmp_path, L1[:54] + "\n"))
+    with pytest.raises(S.ScenarioError, match=r"x.tle:1: TLE line 1 is too short"):
+        S.read_tles(_write(tmp_path, L1[:50] + "\n" + L2 + "\n"))
+    sat = S.satrec_from_tle(S.read_tles(_write(tmp_path, L1 + "\n" + L2 + "\n"))[0])
+    t = S.times_utc("2006-08-01T00:00:00", "2006-08-01T00:01:00", 60.0)
+    with pytest.warns(UserWarning, match="36 days from the element epoch"):
+        S.propagate_gcrs(sat, t, "x")
