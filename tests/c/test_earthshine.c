@@ -337,7 +337,7 @@ static void test_huge_altitude(void **state)
     const oi_real h = 1e300;
 #endif
     assert_int_equal(oi_earthshine(OI_R(0.5), h, NULL, &phi, &psi), OI_OK);
-    assert_true(phi >= 0 && phi < 1e-20 && psi == 0);
+    assert_true(phi >= 0 && (double)phi < 1e-20 && psi == 0);
 }
 
 int main(void)
