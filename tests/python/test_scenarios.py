@@ -179,7 +179,7 @@ def test_cli_writes_file(tmp_path):
 
 
 def test_short_tle_line_and_old_elements(tmp_path):
-    with pytest.raises(S.ScenarioError, match=r"x.tle:1: .*too short \(54 characters"):
+    with pytest.raises(S.ScenarioError, match=r"x.tle:1: .*too short \(\d+ characters, expected 69\) and has no line 2"):
         S.read_tles(_write(tmp_path, L1[:54] + "\n"))
     with pytest.raises(S.ScenarioError, match=r"x.tle:1: TLE line 1 is too short"):
         S.read_tles(_write(tmp_path, L1[:50] + "\n" + L2 + "\n"))
