@@ -5,6 +5,7 @@
 #   make stack        worst-case stack of every public function (-fstack-usage + call graph)
 #   make target-test  bare-metal self-test images run under qemu-system-arm
 #                     (TARGET_STRICT=1: known deviations count as failures)
+#   make target-bench instructions per scene on the Cortex-M builds (qemu -icount)
 #   make bench        host benchmark: ns and instructions per scene, against quadrature
 # Every runtime file is compiled with the host's strict flags ($(WARN), -Werror included).
 
@@ -67,7 +68,7 @@ STAB_VECTORS := $(wildcard tests/stability/vectors.h)
 REF_HEADERS += $(STAB_VECTORS)
 REF_DEFS += $(if $(STAB_VECTORS),-DOI_HAVE_STABILITY_VECTORS)
 
-.PHONY: cross size stack target-test bench deps-cross cross-clean
+.PHONY: cross size stack target-test target-bench bench deps-cross cross-clean
 
 deps-cross: $(BUILDDIR)/.deps-cross
 $(BUILDDIR)/.deps-cross:
@@ -125,6 +126,17 @@ $(CROSS_DIR)/$(1)/selftest.elf: $(CROSS_DIR)/$(1)/harness/selftest.o $(CROSS_DIR
 endef
 $(foreach c,$(CROSS_CFGS),$(eval $(call CROSS_IMG_RULES,$(c))))
 
+# instructions per scene on the target (target/bench_target.c, qemu -icount)
+define CROSS_TBENCH_RULES
+$(CROSS_DIR)/$(1)/bench.elf: $(CROSS_DIR)/$(1)/harness/bench_target.o $(CROSS_DIR)/$(1)/harness/startup.o \
+    $(CROSS_DIR)/$(1)/harness/semihost.o $(CROSS_DIR)/$(1)/liborbillum.a $(CROSS_DIR)/$(1)/libstubs.a \
+    target/mps2.ld bench/scenes.h
+	$$(CROSS_CC) $$(call CROSS_LDFLAGS,$(1)) -Wl,-Map=$$(basename $$@).map $$(filter %.o %.a,$$^) \
+	  $$(CROSS_LIBS) -o $$@
+endef
+$(foreach c,$(CROSS_CFGS),$(eval $(call CROSS_TBENCH_RULES,$(c))))
+TBENCH_ELFS := $(foreach c,$(CROSS_CFGS),$(CROSS_DIR)/$(c)/bench.elf)
+
 CROSS_LIBS_FULL := $(foreach c,$(CROSS_CFGS),$(CROSS_DIR)/$(c)/liborbillum.a)
 SIZE_ELFS := $(foreach c,$(CROSS_CFGS),$(foreach s,$(CROSS_OPTSETS),$(call xdir,$(c),$(s))/size.elf))
 SELFTEST_ELFS := $(foreach c,$(CROSS_CFGS),$(CROSS_DIR)/$(c)/selftest.elf)
@@ -150,6 +162,13 @@ target-test: $(SELFTEST_ELFS) ## run the golden vectors on Cortex-M4F and M7 und
 	  cat $(CROSS_DIR)/$$c/selftest.log; echo "target-test.$$c.exit $$rc status"; \
 	  [ $$rc = 0 ] || fail=1; done; \
 	  [ $$fail = 0 ] && echo "target-test passed" || { echo "target-test FAILED"; exit 1; }
+
+target-bench: $(TBENCH_ELFS) ## instructions per scene on Cortex-M4F/M7 (qemu -icount, same scene mix as bench)
+	@set -e; for c in $(CROSS_CFGS); do core=$${c%%-*}; \
+	  case $$core in m4f) m=$(MACHINE_m4f); q=$(QCPU_m4f);; m7) m=$(MACHINE_m7); q=$(QCPU_m7);; esac; \
+	  timeout $(QEMU_TIMEOUT) $(QEMU) -machine $$m -cpu $$q -icount shift=0 \
+	    -semihosting-config enable=on,target=native -nographic -monitor none -serial none \
+	    -kernel $(CROSS_DIR)/$$c/bench.elf 2>&1 | sed "s/^target\.[a-z]*\./target.$$c./"; done
 
 cross-clean:
 	rm -rf $(CROSS_DIR)
