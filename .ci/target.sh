@@ -12,3 +12,4 @@ make cross
 make size
 make stack
 make target-test
+make target-bench
