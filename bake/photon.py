@@ -106,13 +106,16 @@ def _bin(theta, n_bins):
 def photon_map(n_photons: int, atm: Atmosphere | None = None, seed: int = 0,
                n_bins: int = DEFAULT_N_BINS, disc_margin: float = 1.02,
                sun_radius_km: float = SUN_RADIUS_KM, sun_distance_km: float = AU_KM,
-               progress=None) -> PhotonMaps:
+               sampling: str = "random", progress=None) -> PhotonMaps:
     """Pass 1: cast n_photons from the solar disc and build the maps.
 
     atm: shells (None = bare Earth). seed: numpy PCG64 seed. n_bins: theta
     bins on [0, pi]. disc_margin: target disc radius / outermost radius.
-    sun_radius_km = 0 gives parallel light. progress: optional callable
-    (done, total) called after each chunk.
+    sun_radius_km = 0 gives parallel light. sampling: "random" (independent
+    uniform points on both discs) or "jittered" (the seed's IV.1.1: the
+    target-disc points are jittered in a k x k grid of the polar unit square,
+    k = isqrt(N), the few photons beyond k^2 and the solar-disc points random).
+    progress: optional callable (done, total) called after each chunk.
     Returns PhotonMaps; stats holds the power budget (km^2 per unit E0):
     incident, missed, transmitted, absorbed (reached the ground), reflected
     (left the outer shell after reflection), returned (fell back to the
@@ -122,7 +125,12 @@ def photon_map(n_photons: int, atm: Atmosphere | None = None, seed: int = 0,
     n_photons = int(n_photons)
     if n_photons < 1:
         raise ValueError("n_photons must be >= 1")
+    if sampling not in ("random", "jittered"):
+        raise ValueError("sampling must be 'random' or 'jittered'")
     rng = np.random.default_rng(seed)
+    kgrid = int(np.sqrt(n_photons)) if sampling == "jittered" else 0
+    while kgrid * kgrid > n_photons:
+        kgrid -= 1
     rho = atm.outer_radius
     rd = disc_margin * rho
     K = atm.K
@@ -136,6 +144,11 @@ def photon_map(n_photons: int, atm: Atmosphere | None = None, seed: int = 0,
     while done < n_photons:
         m = min(CHUNK, n_photons - done)
         u = rng.random((m, 4))
+        if kgrid:
+            j = np.arange(done, done + m)
+            cell = j < kgrid * kgrid
+            u[cell, 2] = (j[cell] // kgrid + u[cell, 2]) / kgrid
+            u[cell, 3] = (j[cell] % kgrid + u[cell, 3]) / kgrid
         rs = sun_radius_km * np.sqrt(u[:, 0])
         a = 2.0 * np.pi * u[:, 1]
         re = rd * np.sqrt(u[:, 2])
@@ -284,7 +297,8 @@ def gather(maps: PhotonMaps, theta, r_km, mode: str = "shell", interp: str = "li
 
 def bake_phi(theta, x, n_photons: int = 4_000_000, seed: int = 1, atm: Atmosphere | None = None,
              n_bins: int = DEFAULT_N_BINS, mode: str = "shell", interp: str = "linear",
-             n_s: int = 96, n_beta: int = 96, progress=None, return_maps: bool = False):
+             n_s: int = 96, n_beta: int = 96, sampling: str = "random", progress=None,
+             return_maps: bool = False):
     """phi(theta, x) and psi(theta, x) by photon mapping (x = R/r, broadcast
     with theta; same meaning as bake.reference.phi_psi_reference).
 
@@ -297,6 +311,6 @@ def bake_phi(theta, x, n_photons: int = 4_000_000, seed: int = 1, atm: Atmospher
     x = np.asarray(x, dtype=float)
     if np.any(x <= 0.0) or np.any(x > 1.0):
         raise ValueError("x = R/r must be in (0, 1)")
-    maps = photon_map(n_photons, atm, seed, n_bins, progress=progress)
+    maps = photon_map(n_photons, atm, seed, n_bins, sampling=sampling, progress=progress)
     phi, psi = gather(maps, theta, atm.earth_radius / x, mode, interp, n_s, n_beta)
     return (phi, psi, maps) if return_maps else (phi, psi)

@@ -178,3 +178,20 @@ def test_atmosphere_surface_gathering_close_to_bare():
     phi, _ = gather(m, th, R / 0.3, mode="surface", n_s=32, n_beta=32)
     want = reference.phi_reference(th, 0.3)
     np.testing.assert_allclose(phi, want, rtol=1.5e-2)
+
+
+def test_jittered_sampling_stratifies_the_disc():
+    # the seed's jittered grid: the fraction of photons inside the Earth's
+    # outline is exact to about one row of strata (1/k), far below binomial noise
+    n = 250_000
+    k = 500
+    m = photon_map(n, None, seed=4, sampling="jittered", sun_radius_km=0.0)
+    f = (1 / 1.02) ** 2
+    frac = m.stats["n_absorbed"] / n
+    assert abs(frac - f) < 2.0 / k, f"want {f!r} got {frac!r}"
+    assert m.stats["n_absorbed"] + m.stats["n_missed"] == n
+    th = np.radians([0.0, 45.0])
+    phi, _ = gather(m, th, R / 0.5)
+    np.testing.assert_allclose(phi, reference.phi_reference(th, 0.5), rtol=1e-2)
+    with pytest.raises(ValueError):
+        photon_map(10, None, sampling="sobol")
