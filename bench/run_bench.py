@@ -19,6 +19,7 @@ to it (bench.json) that bake/report_perf.py reads.
 import argparse
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -66,6 +67,38 @@ def nscenes(binary):
         if line.startswith("nscenes"):
             return int(line.split()[1])
     raise SystemExit("bench: no scene count")
+
+
+def callgrind_profile(binary, config, n, ns, tmp, out, prec, top=14):
+    """Inclusive instructions per scene of the runtime's functions (and the libm
+    functions they call) for one configuration: where the time goes."""
+    path = os.path.join(tmp, "cg.profile.out")
+    subprocess.run(["valgrind", "--tool=callgrind", "--callgrind-out-file=" + path, binary,
+                    "count", config, str(n)], check=True, capture_output=True, text=True)
+    ann = subprocess.run(["callgrind_annotate", "--inclusive=yes", "--threshold=100", path],
+                         check=True, capture_output=True, text=True).stdout
+    os.remove(path)
+    rows = []
+    pat = re.compile(r"^\s*([\d,]+) \(\s*[\d.]+%\)\s+(\S*):(\S+) \[")
+    for line in ann.splitlines():
+        m = pat.match(line)
+        if not m:
+            continue
+        name = m.group(3)
+        if name in ("main", "run_config") or name.startswith("0x") or "(below" in line or "libc_start" in name:
+            continue
+        rows.append((int(m.group(1).replace(",", "")) / float(n * ns), name))
+    seen = set()
+    k = 0
+    for per, name in sorted(rows, reverse=True):
+        if name in seen or per < 1.0:
+            continue
+        seen.add(name)
+        out.put("profile.%s.%s.%s" % (prec, config, name), "%.0f" % per, "instructions",
+                "inclusive, per scene")
+        k += 1
+        if k >= top:
+            break
 
 
 def callgrind_total(binary, config, n, tmp, light=None):
@@ -123,6 +156,9 @@ def main():
                         per = (t2 - t1) / float((args.n2 - args.n1) * ns / len(LIGHTS))
                         out.put("bench.%s.%s.%s.instructions" % (prec, c, light), "%.0f" % per,
                                 "instructions", "the %s third of the mix" % light)
+        b = os.path.join(args.bindir, "bench-double")
+        if shutil.which("callgrind_annotate"):
+            callgrind_profile(b, "all_expose", args.n2, nscenes(b), tmp, out, "double")
     else:
         out.put("bench.instructions", "unavailable", "-", "valgrind not installed")
 
