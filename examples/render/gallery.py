@@ -20,7 +20,8 @@ VIEWS = {
     ],
     "leo-leo-pass": [("view", None, None)],
     "leo-inspector": [("view", None, None), ("view-umbra", "2006-06-26T18:45:00Z",
-                                             None)],
+                                             None),
+                      ("view-boxwing", None, None, "examples/render/models/boxwing.obj")],
 }
 
 
@@ -50,8 +51,10 @@ def main(argv=None) -> int:
             return 2
         pass_plot.main([inp, plan, "-o", os.path.join(a.out, f"{case}-pass.png"),
                         "--title", f"{case}: {sc.target_label} seen by {sc.observer_label}"])
-        for suffix, when, cam in views:
+        for suffix, when, cam, *obj in views:
             args = [inp, "-o", os.path.join(a.out, f"{case}-{suffix}.png")]
+            if obj:
+                args += ["--obj", obj[0]]
             if when:
                 args += ["--time", when]
             if cam:

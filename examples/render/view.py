@@ -3,9 +3,9 @@
 
     python -m examples.render.view INPUT.csv [--time ISO | --row N] -o view.png
 
-The target is a Lambertian sphere (radius and albedo from the row). For each
-sub-pixel the ray from the observer is intersected with the sphere and the
-surface radiance is
+The target is a Lambertian sphere (radius and albedo from the row), or with
+--obj an OBJ facet model (examples/render/facets.py). For each sub-pixel the
+ray from the observer is intersected with the surface and the radiance is
 
     L = (albedo / pi) * sum_s E_s max(0, n . d_s)
 
@@ -72,14 +72,21 @@ def _basis(forward, observer):
     return f, r, u
 
 
-def radiance_image(sc: dict, res: dict, cam: dict, crop_px: int | None = None):
+def radiance_image(sc: dict, res: dict, cam: dict, crop_px: int | None = None,
+                   model=None):
     """Noiseless radiance (W/m^2/sr) on a sub-pixel grid, per source.
 
     Returns (L_sources dict name -> (M, M) array, meta dict). sc holds one row's
     positions (km) and target radius/albedo; res one row of orbillum.expose().
+    model: None (the sphere of sc's radius) or (vertices in m, triangles) of an
+    OBJ facet model, oriented by facets.nadir_sun_attitude (needs sc["sun"]).
     """
     tgt, obs = sc["target"], sc["observer"]
-    a_km = sc["target_radius_m"] / 1000.0
+    if model is None:
+        a_km = sc["target_radius_m"] / 1000.0
+    else:
+        verts_m, tris = model
+        a_km = float(np.max(np.linalg.norm(verts_m, axis=1))) / 1000.0
     los = tgt - obs
     d = np.linalg.norm(los)
     f, r, u = _basis(los, obs)
@@ -106,12 +113,23 @@ def radiance_image(sc: dict, res: dict, cam: dict, crop_px: int | None = None):
     dirs = (f[None, None, :] + np.tan(ax)[..., None] * r + np.tan(ay)[..., None] * u)
     dirs /= np.linalg.norm(dirs, axis=-1, keepdims=True)
     oc = obs - tgt
-    b = dirs @ oc
-    disc = b * b - (oc @ oc - a_km * a_km)
-    hit = disc >= 0
-    tnear = -b - np.sqrt(np.where(hit, disc, 0.0))
-    p = obs + tnear[..., None] * dirs
-    n = (p - tgt) / a_km
+    if model is None:
+        b = dirs @ oc
+        disc = b * b - (oc @ oc - a_km * a_km)
+        hit = disc >= 0
+        tnear = -b - np.sqrt(np.where(hit, disc, 0.0))
+        p = obs + tnear[..., None] * dirs
+        n = (p - tgt) / a_km
+    else:
+        from .facets import cast, nadir_sun_attitude
+        rot = nadir_sun_attitude(tgt, sc["sun"])
+        tri_xyz = (verts_m @ rot.T / 1000.0)[tris]  # (F, 3, 3) km, target-centred
+        fn = np.cross(tri_xyz[:, 1] - tri_xyz[:, 0], tri_xyz[:, 2] - tri_xyz[:, 0])
+        fn /= np.linalg.norm(fn, axis=1, keepdims=True)
+        hit, face, _t = cast(oc, dirs, tri_xyz)
+        n = fn[np.where(hit, face, 0)]
+        # two-sided facets: the normal that faces the viewer
+        n = np.where((np.sum(n * dirs, axis=-1) > 0)[..., None], -n, n)
     alb = sc["target_albedo"]
     L = {}
     for s in ("sun", "earth", "moon"):
@@ -122,7 +140,8 @@ def radiance_image(sc: dict, res: dict, cam: dict, crop_px: int | None = None):
         else:
             L[s] = np.zeros((m, m))
     meta = {"range_km": d, "ifov_rad": ifov, "diam_px": diam_px, "crop_px": crop_px,
-            "oversample": os_, "subpix_sr": sub * sub, "resolved": resolved}
+            "oversample": os_, "subpix_sr": sub * sub, "resolved": resolved,
+            "shape": "sphere" if model is None else f"facet model ({len(tris)} triangles)"}
     return L, meta
 
 
@@ -138,11 +157,11 @@ def _bin(img, k):
     return img[:m * k, :m * k].reshape(m, k, m, k).sum(axis=(1, 3))
 
 
-def render(sc: dict, res: dict, cam: dict, seed: int = 1) -> dict:
+def render(sc: dict, res: dict, cam: dict, seed: int = 1, model=None) -> dict:
     """Camera frame (electrons, DN fraction of saturation), HDR view and false colour."""
     from scipy.ndimage import gaussian_filter
 
-    L, meta = radiance_image(sc, res, cam)
+    L, meta = radiance_image(sc, res, cam, model=model)
     k = meta["oversample"]
     t_exp = float(res["exposure_s"])
     gain = float(res["gain"])
@@ -238,8 +257,10 @@ def plot_view(out_png, img: dict, sc: dict, res: dict, cam: dict, when: str) -> 
         a.set_xticks([])
         a.set_yticks([])
     e = [f"{s} {res['e_' + s]:.3g}" for s in ("sun", "earth", "moon")]
+    shape = (f"target {sc['target_radius_m']:g} m radius" if meta["shape"] == "sphere"
+             else f"target: {meta['shape']}, nadir/Sun attitude")
     note = (f"{when}   camera {cam['name']}   range {meta['range_km']:.3f} km   "
-            f"target {sc['target_radius_m']:g} m radius, albedo {sc['target_albedo']:g}\n"
+            f"{shape}, albedo {sc['target_albedo']:g}\n"
             f"irradiance W/m$^2$: {', '.join(e)}   Sun fraction (atm) "
             f"{res['sun_fraction_atm']:.4f}   phase(Sun) {math.degrees(res['phase_sun']):.1f} deg"
             f"   V = {res['mag_v']:.2f}   SNR {res['snr']:.3g}   flags: "
@@ -258,6 +279,7 @@ def plot_view(out_png, img: dict, sc: dict, res: dict, cam: dict, when: str) -> 
 
 def row_scene(inputs: dict, i: int) -> dict:
     return {"target": inputs["target"][i], "observer": inputs["observer"][i],
+            "sun": inputs["sun"][i],
             "target_radius_m": float(inputs.get("target_radius_m", [1.0] * (i + 1))[i]),
             "target_albedo": float(inputs.get("target_albedo", [0.2] * (i + 1))[i])}
 
@@ -276,6 +298,8 @@ def main(argv=None) -> int:
     g.add_argument("--row", type=int, help="row number (0 = first data row)")
     p.add_argument("--camera", help="built-in camera (default: the CSV's camera column)")
     p.add_argument("--seed", type=int, default=1, help="noise seed")
+    p.add_argument("--obj", help="render this OBJ facet model (metres) instead of the sphere; "
+                                 "the exposure is still the runtime's (sphere) suggestion")
     p.add_argument("-o", "--output", required=True, help="PNG file")
     a = p.parse_args(argv)
 
@@ -312,7 +336,15 @@ def main(argv=None) -> int:
               file=sys.stderr)
         return 1
     sc = row_scene(inputs, i)
-    img = render(sc, r, cam, seed=a.seed)
+    model = None
+    if a.obj:
+        from .facets import load_obj
+        try:
+            model = load_obj(a.obj)
+        except (OSError, ValueError) as e:
+            print(f"error: {e}", file=sys.stderr)
+            return 2
+    img = render(sc, r, cam, seed=a.seed, model=model)
     plot_view(a.output, img, sc, r, cam, ids[i])
     print(f"{a.output}: row {i} ({ids[i]})", file=sys.stderr)
     return 0

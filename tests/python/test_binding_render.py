@@ -93,3 +93,42 @@ def test_pass_example_pipeline(tmp_path):
     for p in ("pass.png", "view.png"):
         b = (tmp_path / p).read_bytes()
         assert b[:8] == b"\x89PNG\r\n\x1a\n" and len(b) > 5000
+
+
+def test_obj_facet_model_flat_face(tmp_path, monkeypatch):
+    """A cube seen face-on with the Sun behind the observer: the visible face is
+    a Lambertian plate, F = albedo/pi * E * A / d^2 (closed form)."""
+    monkeypatch.setattr(V, "MIN_SUBPIX_ACROSS", 192)
+    F = pytest.importorskip("examples.render.facets")
+    h = 0.5  # metres: a 1 m cube
+    obj = tmp_path / "cube.obj"
+    vs = [(x, y, z) for x in (-h, h) for y in (-h, h) for z in (-h, h)]
+    quads = [(1, 3, 4, 2), (5, 6, 8, 7), (1, 2, 6, 5), (3, 7, 8, 4), (1, 5, 7, 3),
+             (2, 4, 8, 6)]
+    obj.write_text("".join(f"v {x} {y} {z}\n" for x, y, z in vs) +
+                   "".join("f %d %d %d %d\n" % q for q in quads))
+    model = F.load_obj(str(obj))
+    assert model[1].shape == (12, 3)
+    au = 149597870.7
+    sun = np.array([au, 0.0, 0.0])
+    tgt = np.array([0.0, 42164.0, 0.0])
+    d = 0.2
+    obs = tgt + np.array([d, 0.0, 0.0])  # on the Sun side: phase ~0, face-on
+    x = orbillum.expose("telescope-15cm", sun, None, tgt, obs, terms="sun")
+    r = V.row_result(x, 0)
+    sc = {"target": tgt, "observer": obs, "sun": sun, "target_radius_m": 1.0,
+          "target_albedo": 0.3}
+    L, meta = V.radiance_image(sc, r, orbillum.camera("telescope-15cm"), model=model)
+    got = L["sun"].sum() * meta["subpix_sr"]
+    # the face is h closer than the centre
+    want = 0.3 / math.pi * r["e_sun"] * (2 * h) ** 2 / (d * 1000.0 - h) ** 2
+    # the body +x axis points at the Sun, so the +x face is seen face-on
+    assert abs(got / want - 1) < 3e-3, f"want {want:.17g} got {got:.17g}"
+    with pytest.raises(ValueError, match="no vertices or faces"):
+        F.load_obj(str(_empty(tmp_path)))
+
+
+def _empty(tmp_path):
+    p = tmp_path / "empty.obj"
+    p.write_text("# nothing\n")
+    return p
