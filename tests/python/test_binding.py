@@ -65,7 +65,9 @@ def _compare(rows_csv, camera, tmp_path):
     n_ok = 0
     for i, o in enumerate(out):
         assert o["id"] == rows[i]["id"]
-        st = x["status"][i] if x["status"][i] < 0 else x["expose_status"][i]
+        # the planner's row status: the illumination's (warnings included)
+        # unless the exposure failed
+        st = x["expose_status"][i] if x["expose_status"][i] < 0 else x["status"][i]
         assert o["status"] == orbillum.status_name(st), (i, o["status"])
         if st < 0:
             for k in ("sun_fraction", "e_sun", "flux_obs", "mag_v", "snr"):
@@ -128,6 +130,8 @@ BAD_ROWS = [
     ("sun_only", SUN, MOON, "-7000,0,0", "-7000,5,0", "0.3,0.2,1", "sun", ""),
     ("geo_umbra", "1.496e8,0,0", MOON, "-42164,0,0", "-42164,10,0", "0.3,0.2,2",
      "sun+earth", ""),
+    ("grazing_warn", SUN, MOON, "6378.2,0,0", "6378.2,0,10", "0.3,0.2,1", "", ""),
+    ("cislunar", SUN, MOON, "3e5,1e5,0", "3e5,1e5,10", "0.3,0.2,1", "sun+earth+moon", ""),
 ]
 
 
@@ -156,6 +160,7 @@ def test_error_statuses_and_zeroed_outputs():
     assert by["zero_sun"] == "ERR_ZERO_VECTOR" and by["zero_moon"] == "ERR_ZERO_VECTOR"
     assert by["albedo"] == "ERR_ALBEDO" and by["tgt_albedo"] == "ERR_ALBEDO"
     assert by["radius"] == "ERR_RADIUS"
+    assert by["grazing_warn"] == "WARN_TABLE_RANGE"  # computed, with a warning
     bad = r["status"] < 0
     for k, v in r.items():
         if k.startswith("status"):
