@@ -274,6 +274,7 @@ def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None
     fill, snr, sun_angle_rad, flags), flag_names, expose_status and
     expose_status_name. Rows whose illumination failed are not exposed
     (expose_status equals their illumination status, exposure fields 0).
+    row_status / row_status_name: the status build/oi-plan prints for the row.
     """
     cp, _ = _camera_ptr(camera)
     m = _model(model)
@@ -294,6 +295,11 @@ def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None
             est[i] = fn(cp, s0 + i * ss, r0 + i * rs, mp, gp, e0 + i * es)
     out = _flatten(res, status)
     out.update(_exposure_dict(ex, est))
+    # the planner's row status: the illumination's (warnings included) unless
+    # the exposure failed
+    row = np.where(est < 0, est, status).astype(np.int32)
+    out["row_status"] = row
+    out["row_status_name"] = np.array([status_name(s) for s in row], dtype=object)
     return out
 
 

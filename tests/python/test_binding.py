@@ -68,7 +68,7 @@ def _compare(rows_csv, camera, tmp_path):
         # the planner's row status: the illumination's (warnings included)
         # unless the exposure failed
         st = x["expose_status"][i] if x["expose_status"][i] < 0 else x["status"][i]
-        assert o["status"] == orbillum.status_name(st), (i, o["status"])
+        assert o["status"] == orbillum.status_name(st) == x["row_status_name"][i], i
         if st < 0:
             for k in ("sun_fraction", "e_sun", "flux_obs", "mag_v", "snr"):
                 assert o[k] in ("", "0"), (i, k, o[k])
