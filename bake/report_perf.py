@@ -196,6 +196,9 @@ def section(outdir) -> str:
             f(ns_lam, "%.1f"), f(ins_lam, "%.0f"), lam["max_rel_err"]),
         "| quadrature bake.reference (Python, one call) | %s | n/a | 0 | < 1e-12 (bake/reference.py) |" % (
             f(ns_quad, "%.0f")),
+        "| same quadrature at the table's accuracy (order %s per axis) | %s | n/a | 0 | <= the table's, on the bench scenes |" % (
+            f(_val(bench, "bench.quadrature.matched_accuracy.order"), "%.0f"),
+            f(_val(bench, "bench.quadrature.matched_accuracy.ns_median"), "%.0f")),
         "",
         "Resolution sweep (same coordinates as the runtime table; float32 nodes):",
         "",
