@@ -1,0 +1,124 @@
+# SPDX-License-Identifier: MIT
+# mk/fuzz.mk: fuzzing (libFuzzer), sanitizers, static analysers (issue 5).
+#
+#   make fuzz       each libFuzzer target for FUZZ_SECONDS (60) per precision,
+#                   starting from fuzz/corpus/<target>; new crashers land in
+#                   $(BUILDDIR)/fuzz/artifacts/ (copy them into fuzz/corpus/).
+#   make fuzz-ci    the same, FUZZ_CI_SECONDS (15) each, after replaying the
+#                   committed corpus (the regression inputs).
+#   make fuzz-replay  replay the committed corpus only (no new inputs).
+#   make sanitize   every C test program (both precisions) built with
+#                   -fsanitize=address,undefined -fno-sanitize-recover, and run.
+#   make analyze    cppcheck (both precisions) and gcc -fanalyzer on src/ and
+#                   tables/, both must be clean.
+# Each installs what it needs (clang, libclang-rt-dev, cppcheck) with apt-get.
+
+FUZZ_SECONDS ?= 60
+FUZZ_CI_SECONDS ?= 15
+FUZZ_CC ?= clang
+FUZZ_DIR := $(BUILDDIR)/fuzz
+FUZZ_SAN := -fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all
+FUZZ_CFLAGS := -std=c99 -g -O1 -fno-omit-frame-pointer -Iinclude -Isrc -Itables $(FUZZ_SAN)
+FUZZ_TARGETS := api csv
+FUZZ_BINS := $(foreach t,$(FUZZ_TARGETS),$(FUZZ_DIR)/double/fuzz_$(t) $(FUZZ_DIR)/float/fuzz_$(t))
+# The planner's modules except its main(): the CSV target links the reader.
+PLAN_LIB_SRC := $(filter-out examples/oi_plan/main.c,$(PLAN_SRC))
+
+SUDO_APT = SUDO=; [ "$$(id -u)" = 0 ] || SUDO=sudo; \
+  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq
+
+.PHONY: deps-fuzz deps-analyze fuzz fuzz-ci fuzz-replay fuzz-build sanitize analyze \
+        analyze-cppcheck analyze-gcc
+
+deps-fuzz: $(BUILDDIR)/.deps-fuzz
+$(BUILDDIR)/.deps-fuzz:
+	@mkdir -p $(BUILDDIR)
+	@if ! printf 'int LLVMFuzzerTestOneInput(const unsigned char *d, unsigned long n)\n{ (void)d; (void)n; return 0; }\n' \
+	    | $(FUZZ_CC) -x c -fsanitize=fuzzer,address,undefined - -o $(BUILDDIR)/.fuzz-probe >/dev/null 2>&1; then \
+	  echo "installing clang libclang-rt-dev"; $(SUDO_APT) clang libclang-rt-dev; \
+	fi
+	@rm -f $(BUILDDIR)/.fuzz-probe
+	@touch $@
+
+deps-analyze: $(BUILDDIR)/.deps-analyze
+$(BUILDDIR)/.deps-analyze:
+	@mkdir -p $(BUILDDIR)
+	@command -v cppcheck >/dev/null 2>&1 || { echo "installing cppcheck"; $(SUDO_APT) cppcheck; }
+	@touch $@
+
+# ---- libFuzzer targets: the runtime compiled into each binary with the sanitizers.
+$(FUZZ_DIR)/double/fuzz_api: fuzz/fuzz_api.c fuzz/fuzz_common.h $(RT_SRC) | deps-fuzz
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer $< $(RT_SRC) -lm -o $@
+
+$(FUZZ_DIR)/float/fuzz_api: fuzz/fuzz_api.c fuzz/fuzz_common.h $(RT_SRC) | deps-fuzz
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -DOI_SINGLE_PRECISION -fsanitize=fuzzer $< $(RT_SRC) -lm -o $@
+
+$(FUZZ_DIR)/double/fuzz_csv: fuzz/fuzz_csv.c $(PLAN_SRC) $(RT_SRC) | deps-fuzz
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -Iexamples/oi_plan -fsanitize=fuzzer $< $(PLAN_LIB_SRC) $(RT_SRC) -lm -o $@
+
+$(FUZZ_DIR)/float/fuzz_csv: fuzz/fuzz_csv.c $(PLAN_SRC) $(RT_SRC) | deps-fuzz
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -DOI_SINGLE_PRECISION -Iexamples/oi_plan -fsanitize=fuzzer $< $(PLAN_LIB_SRC) $(RT_SRC) -lm -o $@
+
+fuzz-build: $(FUZZ_BINS) ## build the libFuzzer targets (both precisions)
+
+# run_fuzz(seconds): replay the corpus, then fuzz into a scratch corpus seeded
+# from the committed one (the committed corpus only grows by hand).
+define run_fuzz
+	@set -e; for b in $(FUZZ_BINS); do \
+	  t=$$(basename $$b); p=$$(basename $$(dirname $$b)); \
+	  c=fuzz/corpus/$$t; w=$(FUZZ_DIR)/work/$$p/$$t; a=$(FUZZ_DIR)/artifacts/$$p/; \
+	  mkdir -p $$c $$w $$a; \
+	  echo "== $$b: replay $$c"; \
+	  $$b -runs=0 $$c >$(FUZZ_DIR)/$$p-$$t-replay.log 2>&1 \
+	    || { tail -40 $(FUZZ_DIR)/$$p-$$t-replay.log; exit 1; }; \
+	  if [ "$(1)" -gt 0 ]; then \
+	    echo "== $$b: fuzz $(1) s"; \
+	    q=; [ $$t = fuzz_csv ] && q=-close_fd_mask=2; \
+	    $$b $$q -max_total_time=$(1) -timeout=10 -rss_limit_mb=1024 -max_len=4096 -print_final_stats=1 \
+	      -artifact_prefix=$$a $$w $$c >$(FUZZ_DIR)/$$p-$$t.log 2>&1 \
+	      || { tail -60 $(FUZZ_DIR)/$$p-$$t.log; echo "crasher saved in $$a"; exit 1; }; \
+	    grep -E '^stat::number_of_executed_units|^stat::peak_rss_mb' $(FUZZ_DIR)/$$p-$$t.log | tr '\n' ' '; echo; \
+	  fi; \
+	done
+endef
+
+fuzz-replay: $(FUZZ_BINS) ## replay the committed fuzz corpus (regression inputs)
+	$(call run_fuzz,0)
+
+fuzz: $(FUZZ_BINS) ## run every fuzz target FUZZ_SECONDS (60) per precision
+	$(call run_fuzz,$(FUZZ_SECONDS))
+
+fuzz-ci: $(FUZZ_BINS) ## short fuzz run for CI (FUZZ_CI_SECONDS each)
+	$(call run_fuzz,$(FUZZ_CI_SECONDS))
+
+# ---- the C test suite under ASan + UBSan (a separate build tree).
+SAN_CC ?= gcc
+SAN_FLAGS := -fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all -fno-omit-frame-pointer
+sanitize: deps-c ## every C test (both precisions) under ASan and UBSan
+	$(MAKE) --no-print-directory BUILDDIR=$(BUILDDIR)/san CC="$(SAN_CC) $(SAN_FLAGS)" OPT="-O1 -g" \
+	  ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 test-c
+
+# ---- static analysis: cppcheck and gcc -fanalyzer, both precisions.
+CPPCHECK_SUPP := tests/stability/cppcheck.supp
+CPPCHECK_FLAGS := --std=c99 --enable=warning,style,performance,portability --inconclusive \
+  --error-exitcode=1 --quiet --inline-suppr --suppressions-list=$(CPPCHECK_SUPP) \
+  -Iinclude -Isrc -Itables --platform=unix64
+
+# One explicit configuration per run (cppcheck then checks exactly that one):
+# double, single, and every feature removed.
+analyze-cppcheck: deps-analyze
+	cppcheck $(CPPCHECK_FLAGS) -DOI_ANALYZE_DOUBLE $(RT_SRC)
+	cppcheck $(CPPCHECK_FLAGS) -DOI_SINGLE_PRECISION $(RT_SRC)
+	cppcheck $(CPPCHECK_FLAGS) -DOI_NO_MOON -DOI_NO_EXPOSURE -DOI_NO_ATMOSPHERE -DOI_NO_EARTH_TABLE $(RT_SRC)
+
+analyze-gcc:
+	@set -e; for f in $(RT_SRC); do for d in "" -DOI_SINGLE_PRECISION; do \
+	  echo "gcc -fanalyzer $$d $$f"; \
+	  gcc $(WARN) -O2 -fanalyzer -Iinclude -Isrc -Itables $$d -c $$f -o /dev/null; \
+	done; done
+
+analyze: analyze-cppcheck analyze-gcc ## cppcheck and gcc -fanalyzer on the runtime, must be clean
