@@ -169,10 +169,18 @@ def _cr_weights(f):
             0.5 * (-3 * f3 + 4 * f2 + f), 0.5 * (f3 - f2))
 
 
-def _segment_interp(tab, fv, fw):
+def _segment_interp(tab, fv, fw, kind="cubic"):
     """Catmull-Rom on one segment tab[n_alt, n] at fractional indices (fv along
-    theta, fw along altitude), ghosts by linear extrapolation."""
+    theta, fw along altitude), ghosts by linear extrapolation; kind="linear":
+    bilinear (for the comparison in the report)."""
     n_alt, n = tab.shape
+    if kind == "linear":
+        i = np.clip(np.floor(fv).astype(int), 0, n - 2)
+        a = fv - i
+        j = np.clip(np.floor(fw).astype(int), 0, n_alt - 2)
+        b = fw - j
+        return ((1 - a) * (1 - b) * tab[j, i] + a * (1 - b) * tab[j, i + 1]
+                + (1 - a) * b * tab[j + 1, i] + a * b * tab[j + 1, i + 1])
     T = np.pad(tab, 1, mode="reflect", reflect_type="odd")  # ghost = 2 f0 - f1
     i = np.clip(np.floor(fv).astype(int), 0, n - 2)
     a = fv - i
@@ -189,7 +197,7 @@ def _segment_interp(tab, fv, fw):
     return out
 
 
-def lookup(spec, q_tab, psi_tab, theta, x):
+def lookup(spec, q_tab, psi_tab, theta, x, kind="cubic"):
     """Interpolated (phi, psi) at (theta, x) inside the altitude range of the
     table: the numpy mirror of the runtime's lookup (double precision)."""
     theta = np.clip(np.asarray(theta, dtype=float), 0.0, math.pi)
@@ -202,10 +210,12 @@ def lookup(spec, q_tab, psi_tab, theta, x):
     with np.errstate(divide="ignore", invalid="ignore"):
         v_lit = np.where(tb > 0, theta / np.where(tb > 0, tb, 1.0), 0.0)
         v_term = (theta - tb) / (2.0 * w)
-    q_lit = _segment_interp(q_tab[:, :spec.n_lit], v_lit * (spec.n_lit - 1), fw)
-    q_term = _segment_interp(q_tab[:, spec.n_lit:], np.clip(v_term, 0, 1) * (spec.n_term - 1), fw)
-    p_lit = _segment_interp(psi_tab[:, :spec.n_lit], v_lit * (spec.n_lit - 1), fw)
-    p_term = _segment_interp(psi_tab[:, spec.n_lit:], np.clip(v_term, 0, 1) * (spec.n_term - 1), fw)
+    fl = np.clip(v_lit, 0, 1) * (spec.n_lit - 1)
+    ft = np.clip(v_term, 0, 1) * (spec.n_term - 1)
+    q_lit = _segment_interp(q_tab[:, :spec.n_lit], fl, fw, kind)
+    q_term = _segment_interp(q_tab[:, spec.n_lit:], ft, fw, kind)
+    p_lit = _segment_interp(psi_tab[:, :spec.n_lit], fl, fw, kind)
+    p_term = _segment_interp(psi_tab[:, spec.n_lit:], ft, fw, kind)
     q = np.where(lit, q_lit, q_term)
     ps = np.where(lit, p_lit, p_term)
     dark = theta >= HALF_PI + w
@@ -262,14 +272,15 @@ def sample_points(spec, n_random, seed=12345):
 
 
 def measure(spec, q_tab, psi_tab, n_random=4000, order=32, progress=None, rel_goal=1e-3,
-            seed=12345):
+            seed=12345, kind="cubic"):
     """Maximum interpolation error of the table against the reference at
     points between the nodes. q_tab, psi_tab: the stored (float32) values."""
     theta, w = sample_points(spec, n_random, seed)
     x = np.cos(w)
     phi_ref, psi_ref = reference_chunked(theta, x, order, "measure", progress)
     phi0, _ = reference_chunked(np.zeros_like(x), x, order, "measure phi(0,x)", progress)
-    phi_i, psi_i = lookup(spec, q_tab.astype(np.float64), psi_tab.astype(np.float64), theta, x)
+    phi_i, psi_i = lookup(spec, q_tab.astype(np.float64), psi_tab.astype(np.float64), theta, x,
+                          kind)
     s, big = goal_score(phi_i, phi_ref, phi0, rel_goal=rel_goal)
     with np.errstate(divide="ignore", invalid="ignore"):
         rel = np.where(big, np.abs(phi_i - phi_ref) / phi_ref, 0.0)
