@@ -74,25 +74,31 @@ def test_render_electrons_match_exposure():
 
 
 def test_pass_example_pipeline(tmp_path):
-    """Scenario -> planner -> plot and view, as `make pass-example` runs them."""
+    """Scenario -> planner -> plot and view, as `make pass-example` runs them
+    (the Python steps in-process, the planner as a program)."""
     plan = os.path.join(ROOT, "build", "oi-plan")
     if not os.path.exists(plan):
         pytest.fail(f"{plan} is missing: run `make all` first")
-    py = sys.executable
+    from examples.render import pass_plot
+    from examples.scenarios.__main__ import main as scenarios_main
     inp, out = tmp_path / "in.csv", tmp_path / "plan.csv"
-    env = dict(os.environ, PYTHONPATH=ROOT)
-    subprocess.run([py, "-m", "examples.scenarios", "--case", "leo-inspector", "--stop",
-                    "2006-06-26T18:20:00", "-o", str(inp)], check=True, cwd=ROOT, env=env)
+    assert scenarios_main(["--case", "leo-inspector", "--stop", "2006-06-26T18:20:00",
+                           "-o", str(inp)]) == 0
     with open(out, "w") as f:
         rc = subprocess.run([plan, "--csv", str(inp)], stdout=f).returncode
     assert rc in (0, 1)
-    subprocess.run([py, "-m", "examples.render.pass_plot", str(inp), str(out), "-o",
-                    str(tmp_path / "pass.png")], check=True, cwd=ROOT, env=env)
-    subprocess.run([py, "-m", "examples.render.view", str(inp), "-o",
-                    str(tmp_path / "view.png")], check=True, cwd=ROOT, env=env)
-    for p in ("pass.png", "view.png"):
+    assert pass_plot.main([str(inp), str(out), "-o", str(tmp_path / "pass.png")]) == 0
+    assert V.main([str(inp), "-o", str(tmp_path / "view.png")]) == 0
+    assert V.main([str(inp), "--row", "3", "--obj",
+                   os.path.join(ROOT, "examples", "render", "models", "boxwing.obj"),
+                   "-o", str(tmp_path / "obj.png")]) == 0
+    for p in ("pass.png", "view.png", "obj.png"):
         b = (tmp_path / p).read_bytes()
         assert b[:8] == b"\x89PNG\r\n\x1a\n" and len(b) > 5000
+    # user errors are reported, not raised
+    assert V.main([str(inp), "--time", "1999-01-01T00:00:00Z", "-o",
+                   str(tmp_path / "x.png")]) == 2
+    assert pass_plot.main([str(inp), str(inp), "-o", str(tmp_path / "x.png")]) == 2
 
 
 def test_obj_facet_model_flat_face(tmp_path, monkeypatch):
