@@ -206,3 +206,37 @@ def test_vectorised_broadcast_and_argument_errors():
         orbillum.expose("hubble", sun, None, tgt, tgt + 1)
     assert orbillum.terms_mask("sun+moon") == 5 and orbillum.terms_mask("all") == 7
     assert set(orbillum.cameras()) >= {"star-tracker", "telescope-15cm"}
+
+
+def test_other_entry_points_agree_with_illuminate():
+    rows, kw = _inputs(_bad_csv("star-tracker"))
+    r = orbillum.illuminate(**kw)
+    ok = r["status"] >= 0
+    sf = orbillum.sun_fraction(kw["sun"], kw["target"])
+    for k in ("fraction", "fraction_atm", "sun_radius_rad", "separation_rad", "region"):
+        assert np.array_equal(sf[k][ok], r[f"shadow_{k}"][ok]), k
+    e_ok = ok & np.array([orbillum.terms_mask(t) & orbillum.OI_TERM_EARTH != 0
+                          for t in kw["terms"]])
+    phi, psi, st = orbillum.earthshine(r["earth_theta"][e_ok], r["earth_h_km"][e_ok])
+    assert np.array_equal(phi, r["earth_phi"][e_ok]) and np.array_equal(psi, r["earth_psi"][e_ok])
+    assert orbillum.lambert_phase(0.0) == pytest.approx(2 / 3, rel=1e-15)
+    # math.pi = pi - t with t = sin(math.pi) = 1.2246e-16: p = 2/(3 pi) t^3/3 (series)
+    t = math.sin(math.pi)
+    assert orbillum.lambert_phase(math.pi) == pytest.approx(2 / (3 * math.pi) * t ** 3 / 3,
+                                                            rel=1e-9)
+    assert orbillum.moon_phase_law(0.0) == 1.0
+    f = r["flux_obs"][ok & (r["flux_obs"] > 0)]
+    m = orbillum.magnitude_v(f)
+    back, st = orbillum.flux_from_magnitude(m)
+    assert np.all(st == 0) and np.allclose(back, f, rtol=1e-13, atol=0)
+    _, st = orbillum.flux_from_magnitude([np.nan, 60.0])
+    assert [orbillum.status_name(s) for s in st] == ["ERR_MAGNITUDE", "ERR_MAGNITUDE"]
+    ex = orbillum.expose_flux("telescope-15cm", [1e-12, 1e-20, 1.0])
+    assert "too_faint" in ex["flag_names"][1] and "saturated" in ex["flag_names"][2]
+    assert orbillum.flag_names(orbillum.OI_FLAG_SUN_EXCLUSION | orbillum.OI_FLAG_ECLIPSED) == \
+        "sun_exclusion+eclipsed"
+    with pytest.raises(ValueError, match="unknown model field"):
+        orbillum.illuminate(kw["sun"], None, kw["target"], model={"tsi": 1})
+    lam = orbillum.illuminate(kw["sun"][0], None, kw["target"][0],
+                              model={"earth_model": "lambert"})
+    assert lam["status"][0] >= 0
