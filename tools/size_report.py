@@ -109,6 +109,7 @@ def main():
     args = ap.parse_args()
     ok = True
     goals = []
+    table = {}
     for cfg in args.cfgs.split():
         for s in args.sets.split():
             d = os.path.join(args.objdir, cfg) if s == "full" else os.path.join(args.objdir, cfg, "opt-" + s)
@@ -117,6 +118,8 @@ def main():
             text, rodata = get(t, "lib", "text"), get(t, "lib", "rodata")
             data, bss = get(t, "lib", "data"), get(t, "lib", "bss")
             flash = text + rodata + data
+            libm = sum(get(t, "libm", k) for k in ("text", "rodata", "data"))
+            table[(cfg, s)] = (flash, libm, data + bss)
             print("%s.lib.flash %d bytes" % (p, flash))
             print("%s.lib.text %d bytes" % (p, text))
             print("%s.lib.rodata %d bytes" % (p, rodata))
@@ -150,6 +153,11 @@ def main():
                              % (cfg, "met" if flash < 98304 else "missed", flash))
     if ok:
         goals.append("goal.zero_data_bss met (every configuration and option set)")
+    sets = args.sets.split()
+    print("# flash bytes of the runtime (text+rodata+data, excl. libm) + libm flash, per option set")
+    print("# %-7s %s" % ("cfg", " ".join("%17s" % x for x in sets)))
+    for cfg in args.cfgs.split():
+        print("# %-7s %s" % (cfg, " ".join("%17s" % ("%d + %d" % table[(cfg, x)][:2]) for x in sets)))
     for g in goals:
         print(g)
     return 0

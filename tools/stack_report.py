@@ -150,6 +150,7 @@ def main():
     args = ap.parse_args()
     failed = False
     over = []
+    summary = {}
     public = args.public.split()
     for cfg in args.cfgs.split():
         d = os.path.join(args.objdir, cfg)
@@ -195,6 +196,7 @@ def main():
             print("stack.%s.%s %d bytes  # %s" % (cfg, fn, w, " > ".join(
                 "%s(%d)" % (plain(p), g_frames.get(p, 0)) for p in path)))
             wb, pathb = worst(fn, g_frames, g_edges, memo_b, [], [], fn, HUGE_ARG)
+            summary[(cfg, fn)] = (w, wb)
             print("stack.%s.%s.bounded_args %d bytes  # %s" % (cfg, fn, wb, " > ".join(
                 "%s(%d)" % (plain(p), g_frames.get(p, 0)) for p in pathb)))
             if w > args.limit:
@@ -205,6 +207,13 @@ def main():
             print("stack.%s.problem %s" % (cfg, p))
             if not p.startswith("unknown frame") or plain(p.split(": ")[-1]) in frames:
                 failed = True
+    cfgs = args.cfgs.split()
+    print("# worst-case stack bytes per public function: all paths / without libm's huge-argument reduction")
+    print("# %-24s %s" % ("function", " ".join("%11s" % c for c in cfgs)))
+    for fn in public:
+        if any((c, fn) in summary for c in cfgs):
+            print("# %-24s %s" % (fn, " ".join("%11s" % ("%d/%d" % summary[(c, fn)] if (c, fn) in summary else "-")
+                                                for c in cfgs)))
     if over:
         print("goal.stack_at_most_%d missed (worst/bounded_args bytes: %s)" % (args.limit, ", ".join(over)))
     else:
