@@ -271,15 +271,15 @@ def goals(out):
     i = val("bench.double.all_expose.instructions")
     if i is not None:
         out.put("goal.full_scene_at_most_%d_instructions" % GOAL_INSTR, "met" if i <= GOAL_INSTR else "missed",
-                "", "double, all terms + exposure: %.0f instructions%s" % (i, note))
+                "-", "double, all terms + exposure: %.0f instructions%s" % (i, note))
     t = val("bench.double.all_expose.ns_median")
     if t is not None:
-        out.put("goal.full_scene_under_%d_ns" % GOAL_NS, "met" if t < GOAL_NS else "missed", "",
+        out.put("goal.full_scene_under_%d_ns" % GOAL_NS, "met" if t < GOAL_NS else "missed", "-",
                 "double, all terms + exposure: %.1f ns median%s" % (t, note))
     s = val("bench.double.earthshine.speedup_vs_quadrature")
     if s is not None:
         out.put("goal.earthshine_%dx_faster_than_quadrature" % GOAL_SPEEDUP, "met" if s >= GOAL_SPEEDUP else "missed",
-                "", "%.0fx%s" % (s, note))
+                "-", "%.0fx%s" % (s, note))
 
 
 if __name__ == "__main__":
