@@ -270,7 +270,7 @@ def plot_view(out_png, img: dict, sc: dict, res: dict, cam: dict, when: str) -> 
             ("" if resolved else
              f"; UNRESOLVED: the frame is the PSF blob, upsampled (nearest pixel); the "
              f"HDR/colour panels show the sphere {meta['oversample']:.0f}x finer than a pixel") +
-            f"; up = away from the Earth")
+            "; up = away from the Earth")
     fig.text(0.01, 0.01, note, fontsize=8, va="bottom")
     fig.tight_layout(rect=(0, 0.12, 1, 0.97))
     fig.savefig(out_png, dpi=80)

@@ -25,7 +25,10 @@ from ._lib import (OI_FLAG_ECLIPSED, OI_FLAG_EARTH_IN_FOV, OI_FLAG_PENUMBRA,  # 
 
 __all__ = ["illuminate", "expose", "expose_flux", "sun_fraction", "earthshine",
            "lambert_phase", "moon_phase_law", "magnitude_v", "flux_from_magnitude",
-           "camera", "cameras", "status_name", "flag_names", "terms_mask", "library_path"]
+           "camera", "cameras", "status_name", "flag_names", "terms_mask", "library_path",
+           "OI_OK", "OI_WARN_TABLE_RANGE", "OI_TERM_SUN", "OI_TERM_EARTH", "OI_TERM_MOON",
+           "OI_TERM_ALL", "OI_FLAG_SUN_EXCLUSION", "OI_FLAG_EARTH_IN_FOV", "OI_FLAG_ECLIPSED",
+           "OI_FLAG_TOO_FAINT", "OI_FLAG_SATURATED", "OI_FLAG_PENUMBRA", "OI_FLAG_OCCULTED"]
 
 _lib = L.load()
 
