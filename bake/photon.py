@@ -225,8 +225,8 @@ def gather_function(radiance, theta, r_km, b_max, atm: Atmosphere | None = None,
     shape = theta.shape
     th = theta.reshape(-1)
     rr = r.reshape(-1)
-    if np.any(rr <= b_max):
-        raise ValueError("gathering points must lie outside the emitting sphere")
+    if np.any(rr <= b_max) or (atm is not None and np.any(rr <= atm.outer_radius)):
+        raise ValueError("gathering points must lie outside the emitting sphere and the shells")
     s, ws, beta = _nodes(n_s, n_beta)
     b = b_max * (1.0 - s * s)                       # (n_s,)
     db = 2.0 * b_max * s * ws                       # |db/ds| * weight
@@ -290,8 +290,10 @@ def gather(maps: PhotonMaps, theta, r_km, mode: str = "shell", interp: str = "li
     if mode == "surface":
         n1 = maps.atm.surface_index
         f = _lookup(maps.surface / (np.pi * n1 * n1), nb, interp)
-        return gather_function(f, theta, r_km, n1 * maps.atm.earth_radius, maps.atm,
-                               n_s, n_beta)
+        # apparent ground radius: impact parameter n1 R (Bouguer), at most the top
+        # shell's radius; the trace decides which rays really reach the ground
+        b_max = min(n1 * maps.atm.earth_radius, maps.rho)
+        return gather_function(f, theta, r_km, b_max, maps.atm, n_s, n_beta)
     raise ValueError("mode must be 'shell' or 'surface'")
 
 

@@ -195,3 +195,24 @@ def test_jittered_sampling_stratifies_the_disc():
     np.testing.assert_allclose(phi, reference.phi_reference(th, 0.5), rtol=1e-2)
     with pytest.raises(ValueError):
         photon_map(10, None, sampling="sobol")
+
+
+def test_surface_gathering_conserves_escaping_power():
+    # A dense shell (n = 1.05, 100 km): reflected rays steeper than
+    # sin z0 = rho / (n R) are totally internally reflected back to the ground
+    # (Lambert: a fraction 1 - (rho / (n R))^2 of the reflected power). Far away,
+    # the gathered irradiance integrated over a sphere of radius r must equal
+    # the power that escaped: this checks the radiance invariance L / n^2 and
+    # the apparent ground radius of the traced gathering.
+    rho = R + 100.0
+    atm = Atmosphere(R, [rho], [1.05])
+    m = photon_map(200_000, atm, seed=21)
+    s = m.stats
+    esc = 1 - (rho / (1.05 * R)) ** 2
+    assert abs(s["returned"] / s["absorbed"] - esc) < 5 * np.sqrt(esc * (1 - esc) / s["n_absorbed"])
+    r = 1000.0 * R
+    xs, ws = np.polynomial.legendre.leggauss(96)
+    th = 0.5 * np.pi * (xs + 1)
+    phi, _ = gather(m, th, r, mode="surface", n_s=48, n_beta=48)
+    power = 2 * np.pi * r * r * np.sum(0.5 * np.pi * ws * phi * np.sin(th))
+    assert power == pytest.approx(s["reflected"], rel=3e-3), f"want {s['reflected']!r} got {power!r}"
