@@ -68,7 +68,7 @@ STAB_VECTORS := $(wildcard tests/stability/vectors.h)
 REF_HEADERS += $(STAB_VECTORS)
 REF_DEFS += $(if $(STAB_VECTORS),-DOI_HAVE_STABILITY_VECTORS)
 
-.PHONY: cross size stack target-test target-bench bench deps-cross cross-clean
+.PHONY: cross size stack target-test target-bench bench deps-cross deps-bench cross-clean
 
 deps-cross: $(BUILDDIR)/.deps-cross
 $(BUILDDIR)/.deps-cross:
@@ -191,5 +191,15 @@ $(BENCH_DIR)/bench-$(1): bench/bench.c bench/scenes.h $(LIB_$(1)) $(BENCH_DIR)/$
 endef
 $(foreach p,double float,$(eval $(call BENCH_RULES,$(p))))
 
-bench: $(BENCH_DIR)/bench-double $(BENCH_DIR)/bench-float deps-py ## ns and instructions per scene; table vs quadrature
+deps-bench: $(BUILDDIR)/.deps-bench
+$(BUILDDIR)/.deps-bench:
+	@mkdir -p $(BUILDDIR)
+	@if ! command -v valgrind >/dev/null 2>&1; then \
+	  echo "installing valgrind"; \
+	  SUDO=; [ "$$(id -u)" = 0 ] || SUDO=sudo; \
+	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq valgrind; \
+	fi
+	@touch $@
+
+bench: $(BENCH_DIR)/bench-double $(BENCH_DIR)/bench-float deps-py deps-bench ## ns and instructions per scene; table vs quadrature
 	@nice -n 5 $(PY) bench/run_bench.py --bindir $(BENCH_DIR) --out $(BENCH_DIR)/bench.txt
