@@ -61,6 +61,11 @@ def main(argv=None) -> int:
                 args += ["--camera", cam]
             if view.main(args) != 0:
                 return 2
+    from . import season
+    if season.main(["--case", "geo-inspector-eclipse", "--start", "2006-02-20",
+                    "--stop", "2006-04-20", "--step", "120",
+                    "-o", os.path.join(a.out, "geo-eclipse-season.png")]) != 0:
+        return 2
     return 0
 
 

@@ -138,3 +138,20 @@ def _empty(tmp_path):
     p = tmp_path / "empty.obj"
     p.write_text("# nothing\n")
     return p
+
+
+def test_geo_equinox_eclipse_duration():
+    """GEO shadow at the equinox: the cylindrical-shadow chord 2 asin(R/r) of a
+    sidereal day, 69.4 min for r = 42164 km, lies between the umbra and the
+    umbra + penumbra (the umbra cone is narrower than the cylinder, the penumbra
+    wider), and the whole eclipse lasts ~72 min."""
+    season = pytest.importorskip("examples.render.season")
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # 26 days from the element epoch
+        sc, days, umbra, pen, umbra_geo = season.season(
+            "geo-inspector-eclipse", "2006-03-21T17:00:00", "2006-03-21T23:00:00", 10.0)
+    cyl = 2 * math.asin(6378.137 / 42164.0) / (2 * math.pi) * 1436.068
+    assert len(days) == 1
+    assert umbra_geo[0] < cyl < umbra_geo[0] + pen[0], (umbra_geo, pen, cyl)
+    assert 70.0 < umbra[0] + pen[0] < 74.0
