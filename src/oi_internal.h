@@ -79,4 +79,17 @@ static inline void oi__zero3(oi_real a[3])
  */
 int oi__model_resolve(const oi_model *in, oi_model *out);
 
+#ifndef OI_NO_ATMOSPHERE
+/*
+ * Fraction of unobstructed sunlight reaching point_km with the atmosphere's
+ * refraction and extinction (src/atmosphere.c, baked table), given the
+ * geometric fractions frac (uniform disc) and frac_ld (limb-darkened) of the
+ * same geometry and a resolved model. dir (may be NULL): unit vector towards
+ * where the light comes from. Returns OI_OK or OI_WARN_TABLE_RANGE (geometric
+ * fraction returned).
+ */
+int oi__atm_fraction(const oi_real sun_km[3], const oi_real point_km[3], const oi_model *m,
+                     oi_real frac, oi_real frac_ld, oi_real *fraction_atm, oi_real dir[3]);
+#endif
+
 #endif /* OI_INTERNAL_H */

@@ -1,0 +1,349 @@
+# SPDX-License-Identifier: MIT
+"""The runtime table of sunlight through the atmosphere (issue 4).
+
+fraction_atm and the light's mean direction psi (bake.atm_rays.fraction) on a
+grid in coordinates that follow the shadow:
+
+  u = ln(z / Z_MIN) / ln(Z_MAX / Z_MIN) in [0, 1]: z the distance behind the
+      Earth's centre along the anti-Sun axis (km);
+  t = (rho - rho_lo) / (rho_hi - rho_lo) in [0, 1]: rho the distance from the
+      axis, between the deepest point any unblocked refracted ray reaches
+      and the outer edge of the region the atmosphere touches:
+        rho_c  = R (1 + z/d)                 the geometric shadow's radius,
+        a      = z R_sun / d                 the solar disc's radius there,
+        rho_lo = max(0, rho_c - a - z ALPHA_REACH),
+        rho_hi = rho_c + a + TOP_KM;
+      (d the Sun's distance: the window moves and scales with the real
+      penumbra, so the Sun's yearly distance change is followed.)
+  s = (d - D_MIN) / (D_MAX - D_MIN): the Sun's distance, two slices
+      (perihelion and aphelion), linear in between.
+
+Stored: q = log10(F + F_FLOOR) and psi (rad), float32, bilinear in (u, t),
+linear in s. Below rho_lo F is 0 exactly (no unblocked ray is bent that far),
+above rho_hi it is the geometric fraction (1 there). Outside [Z_MIN, Z_MAX]
+the runtime falls back to the geometric fraction with a warning.
+"""
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+
+import numpy as np
+
+from . import atm_profile as ap
+from . import atm_rays as ar
+
+Z_MIN = 500.0            # km behind the Earth's centre
+Z_MAX = 5.0e5            # km (beyond the Moon's apogee, 4.07e5 km)
+D_MIN = 0.9832 * ar.AU_KM   # perihelion (~0.98329 AU)
+D_MAX = 1.0168 * ar.AU_KM   # aphelion (~1.01671 AU)
+F_FLOOR = 1e-8
+H_A = 6.5                # km: e-folding of the bending in the coordinate map
+V_MID = 60.0             # km: ray altitude where segment A hands over to B
+NZ, NA, NB = 40, 40, 11  # rows in z; nodes in segment A (incl. both ends), B
+NT = NA + NB
+ND = 1
+TABLE_FORMAT = 1         # OI_ATM_TABLE_FORMAT in the generated header
+N_BISECT = 48
+
+
+def reach(rays: ar.Rays) -> float:
+    """Bending of the lowest unblocked ray (rad): the coordinate map's scale."""
+    return float(rays.alpha[0])
+
+
+def _m(v, z, rc, alpha_c, h_c):
+    """Image radius of the ray of lowest altitude v in the model
+    alpha(v) = alpha_c exp(-(v - h_c) / H_A): rho = rc + v - z alpha(v)."""
+    return rc + v - z * alpha_c * np.exp(-(v - h_c) / H_A)
+
+
+def _solve_v(target, z, rc, alpha_c, h_c, v_a, v_b):
+    """v in [v_a, v_b] with M(v) = target (bisection, N_BISECT steps)."""
+    target = np.asarray(target, dtype=float)
+    lo_v = np.full(target.shape, float(v_a))
+    hi_v = np.full(target.shape, float(v_b))
+    for _ in range(N_BISECT):
+        mid = 0.5 * (lo_v + hi_v)
+        below = _m(mid, z, rc, alpha_c, h_c) < target
+        lo_v = np.where(below, mid, lo_v)
+        hi_v = np.where(below, hi_v, mid)
+    v = 0.5 * (lo_v + hi_v)
+    return float(v) if v.ndim == 0 else v
+
+
+class Window:
+    """The coordinate along rho at one (z, d). Segment A: nodes uniform in
+    the model ray altitude v from v_lo to V_MID (rho = M(v)); segment B:
+    uniform in rho from M(V_MID) to rho_hi = rc + a + top."""
+
+    def __init__(self, z, d, alpha_c, h_c, R=ap.R_EARTH_KM, top=ap.TOP_KM):
+        self.z, self.alpha_c, self.h_c = z, alpha_c, h_c
+        self.rc = R * (1.0 + z / d)
+        self.a = z * ar.SUN_RADIUS_KM / d
+        self.rho_hi = self.rc + self.a + top
+        target = max(0.0, _m(h_c, z, self.rc, alpha_c, h_c) - 1.2 * self.a)
+        self.v_lo = _solve_v(target, z, self.rc, alpha_c, h_c, h_c - 60.0, h_c)
+        self.rho_lo = _m(self.v_lo, z, self.rc, alpha_c, h_c)
+        self.rho_mid = _m(V_MID, z, self.rc, alpha_c, h_c)
+
+    def index(self, rho):
+        """Continuous node index in [0, NT - 1] of rho in [rho_lo, rho_hi]."""
+        if rho >= self.rho_mid:
+            return (NA - 1) + (rho - self.rho_mid) / (self.rho_hi - self.rho_mid) * NB
+        v = _solve_v(rho, self.z, self.rc, self.alpha_c, self.h_c, self.v_lo, V_MID)
+        return (v - self.v_lo) / (V_MID - self.v_lo) * (NA - 1)
+
+    def nodes(self):
+        va = np.linspace(self.v_lo, V_MID, NA)
+        ra = _m(va, self.z, self.rc, self.alpha_c, self.h_c)
+        ra[0] = self.rho_lo
+        rb = self.rho_mid + (self.rho_hi - self.rho_mid) * np.arange(1, NB + 1) / NB
+        return np.concatenate([ra, rb])
+
+
+def coords(z, rho, d, alpha_c, h_c):
+    """Continuous table indices (iu, it) of a point and its region: 0 inside,
+    -1 below the window (F = 0), +1 above it (geometric fraction)."""
+    w = Window(z, d, alpha_c, h_c)
+    if rho >= w.rho_hi:
+        return None, None, 1
+    if rho < w.rho_lo:
+        return None, None, -1
+    iu = np.log(z / Z_MIN) / np.log(Z_MAX / Z_MIN) * (NZ - 1)
+    return iu, w.index(rho), 0
+
+
+def grid_z(nz=None):
+    u = np.linspace(0.0, 1.0, nz or NZ)
+    return Z_MIN * (Z_MAX / Z_MIN) ** u
+
+
+def grid_d(nd=None):
+    nd = nd or ND
+    return np.linspace(D_MIN, D_MAX, nd) if nd > 1 else np.array([ar.AU_KM])
+
+
+def bake(rays: ar.Rays, progress=False):
+    """q (ND, NZ, NT), psi (ND, NZ, NT), alpha_c, h_c."""
+    alpha_c = reach(rays)
+    h_c = float(rays.h0[0])
+    zs, ds = grid_z(), grid_d()
+    nt = NT
+    q = np.empty((ND, NZ, nt))
+    psi = np.empty((ND, NZ, nt))
+    for k, d in enumerate(ds):
+        for i, z in enumerate(zs):
+            rho = Window(z, d, alpha_c, h_c).nodes()
+            F, p = ar.fraction(rays, z, rho, d_sun=d)
+            q[k, i] = np.log10(F + F_FLOOR)
+            psi[k, i] = p
+            if progress:
+                print(f"\r  atm table row {k * NZ + i + 1}/{ND * NZ}", end="", flush=True)
+    if progress:
+        print()
+    return q, psi, alpha_c, h_c
+
+
+def lookup(q, psi, alpha_c, h_c, z, rho, d):
+    """Python mirror of the C lookup (tests, error measurement).
+    Returns (F, psi, status): status 0 inside or below the window, +1 above
+    it (F None: the caller uses the geometric fraction), +2 outside the z range."""
+    nd, nz, nt = q.shape
+    if not (Z_MIN <= z <= Z_MAX):
+        return None, None, 2
+    iu, it, region = coords(z, rho, d, alpha_c, h_c)
+    if region < 0:
+        return 0.0, 0.0, 0
+    if region > 0:
+        return None, None, 1
+    s = 0.0 if nd == 1 else (d - D_MIN) / (D_MAX - D_MIN) * (nd - 1)
+    s = min(max(s, 0.0), nd - 1.0)
+    i = min(int(np.floor(iu)), nz - 2)
+    j = min(max(int(np.floor(it)), 0), nt - 2)
+    k = min(int(np.floor(s)), nd - 2) if nd > 1 else 0
+    fu, ft, fs = iu - i, it - j, s - k
+
+    def col(a, kk, ii):
+        return (1 - ft) * a[kk, ii, j] + ft * a[kk, ii, j + 1]
+
+    def bil(a, kk):
+        return (1 - fu) * col(a, kk, i) + fu * col(a, kk, i + 1)
+
+    if nd > 1:
+        qv = (1 - fs) * bil(q, k) + fs * bil(q, k + 1)
+        pv = (1 - fs) * bil(psi, k) + fs * bil(psi, k + 1)
+    else:
+        qv, pv = bil(q, 0), bil(psi, 0)
+    F = max(10.0 ** qv - F_FLOOR, 0.0)
+    return min(F, 1.0), pv, 0
+
+
+def measure(rays, q, psi, alpha_c, h_c, n=400, seed=1, progress=False):
+    """Errors of the lookup against the reference at random off-grid points
+    (fixed seed): z log-uniform, rho uniform in the window, d uniform."""
+    rng = np.random.default_rng(seed)
+    zs = Z_MIN * (Z_MAX / Z_MIN) ** rng.uniform(0, 1, n)
+    ds = rng.uniform(D_MIN, D_MAX, n)
+    ts = rng.uniform(0, 1, n)
+    out = []
+    for m in range(n):
+        nodes = Window(zs[m], ds[m], alpha_c, h_c).nodes()
+        rho = np.interp(ts[m] * (NT - 1), np.arange(NT), nodes)
+        F, p = ar.fraction(rays, zs[m], [rho], d_sun=ds[m])
+        Fl, pl, st = lookup(q, psi, alpha_c, h_c, zs[m], rho, ds[m])
+        if st == 1:
+            Fl, pl = ar.fraction(None, zs[m], [rho], d_sun=ds[m])
+            Fl, pl = Fl[0], pl[0]
+        out.append((zs[m], rho, ds[m], F[0], Fl, p[0], pl))
+        if progress and (m + 1) % 50 == 0:
+            print(f"\r  measure {m + 1}/{n}", end="", flush=True)
+    if progress:
+        print()
+    a = np.array(out)
+    F, Fl = a[:, 3], a[:, 4]
+    abs_err = np.abs(Fl - F)
+    big = F > 1e-4
+    rel = np.abs(Fl[big] - F[big]) / F[big]
+    w = F > 1e-3
+    psi_err = np.abs(a[w, 6] - a[w, 5])
+    return {
+        "n_points": int(n),
+        "max_abs_error": float(abs_err.max()),
+        "rms_abs_error": float(np.sqrt(np.mean(abs_err ** 2))),
+        "max_rel_error_F_gt_1e-4": float(rel.max()) if rel.size else 0.0,
+        "max_psi_error_rad_F_gt_1e-3": float(psi_err.max()) if psi_err.size else 0.0,
+    }, a
+
+
+# ---------------------------------------------------------------- emitter
+
+BASENAME = "oi_atm_table"
+
+
+def _c_floats(name, values, per_line=6):
+    from .emit import c_float, f32
+    vals = [c_float(v) for v in f32(values).ravel()]
+    lines = ["    " + ", ".join(vals[k:k + per_line]) + "," for k in range(0, len(vals), per_line)]
+    return "const float %s[%d] = {\n%s\n};\n" % (name, len(vals), "\n".join(lines))
+
+
+def _c_double(v):
+    from .emit import c_double
+    return c_double(v)
+
+
+def emit(outdir, q, psi, alpha_c, h_c, err, profile: ap.Profile):
+    """Write tables/oi_atm_table.{c,h,json}: byte-for-byte reproducible."""
+    from . import __version__
+    from .emit import f32
+    q32, p32 = f32(q[0]), f32(psi[0])
+    h = hashlib.sha256()
+    h.update(q32.astype("<f4").tobytes())
+    h.update(p32.astype("<f4").tobytes())
+    sha = h.hexdigest()
+    consts = {
+        "NZ": NZ, "NT": NT, "NA": NA, "NB": NB, "N_BISECT": N_BISECT,
+    }
+    reals = {
+        "Z_MIN_KM": Z_MIN, "Z_MAX_KM": Z_MAX, "H_A_KM": H_A, "V_MID_KM": V_MID,
+        "ALPHA_C_RAD": alpha_c, "H_C_KM": h_c, "TOP_KM": profile.top_km,
+        "F_FLOOR": F_FLOOR, "EARTH_RADIUS_KM": profile.earth_radius_km,
+        "SUN_RADIUS_KM": ar.SUN_RADIUS_KM, "AU_KM": ar.AU_KM,
+    }
+    prov = [
+        f"generator: bake.atm_table (orbillum bake {__version__}), table format {TABLE_FORMAT}",
+        f"profile: {profile.kind} (1976 U.S. Standard Atmosphere density, N_s = {profile.n0:.6g} at 550 nm),",
+        f"  top {profile.top_km:g} km; extinction {'on' if profile.extinction else 'off'}: Rayleigh (Bodhaine 1999),",
+        f"  ozone {profile.ozone_du:g} DU (Chappuis), aerosol tau {profile.aer_trop_tau:g} (trop.) +"
+        f" {profile.aer_strat_tau:g} (strat.) at 550 nm;",
+        f"  clouds opaque below {profile.cloud_top_km:g} km; V band (Bessell 1990) x 5772 K black body;",
+        "  solar disc: Neckel & Labs (1994) limb darkening at 559.95 nm.",
+        f"grid: z = {Z_MIN:g} .. {Z_MAX:g} km behind the Earth's centre, {NZ} rows log-spaced;",
+        f"  along rho {NT} nodes: {NA} uniform in the model ray altitude v (H_A = {H_A:g} km,",
+        f"  alpha_c = {alpha_c:.9g} rad at h_c = {h_c:g} km) up to {V_MID:g} km, then {NB} uniform in rho",
+        "  up to rc + a + top (see bake/atm_table.py); the Sun's distance enters through the window",
+        "  (table baked at 1 AU).",
+        "values: q = log10(F + F_FLOOR), psi (rad): mean direction of the light from the Sun's centre,",
+        "  positive away from the Earth's centre.",
+        f"measured against bake.atm_rays.fraction at {err['n_points']} random off-grid points (seed 1,",
+        "  z log-uniform, rho uniform along the nodes, d in [0.9832, 1.0168] AU), bilinear lookup:",
+        f"  max |F error| {err['max_abs_error']:.3e}, rms {err['rms_abs_error']:.3e},",
+        f"  max relative error where F > 1e-4: {err['max_rel_error_F_gt_1e-4']:.3e},",
+        f"  max psi error where F > 1e-3: {err['max_psi_error_rad_F_gt_1e-3']:.3e} rad.",
+        f"payload sha256 (q then psi, little-endian float32): {sha}",
+    ]
+    guard = BASENAME.upper() + "_H"
+    hdr = [
+        "/* SPDX-License-Identifier: MIT */",
+        "/*",
+        f" * {BASENAME}.h: generated by bake/atm_table.py (make bake-atm); do not edit.",
+        " * Sunlight through the atmosphere into the Earth's shadow (issue 4).",
+        " */",
+        f"#ifndef {guard}",
+        f"#define {guard}",
+        "",
+        f"#define OI_ATM_TABLE_FORMAT {TABLE_FORMAT}",
+    ]
+    for k, v in consts.items():
+        hdr.append(f"#define OI_ATM_{k} ({v})")
+    for k, v in reals.items():
+        hdr.append(f"#define OI_ATM_{k} ({_c_double(v)})")
+    hdr += [
+        "",
+        "#ifndef OI_NO_ATMOSPHERE",
+        "/* q = log10(fraction + OI_ATM_F_FLOOR) and psi (rad), row-major [NZ][NT]. */",
+        f"extern const float oi__atm_q[{NZ * NT}];",
+        f"extern const float oi__atm_psi[{NZ * NT}];",
+        "#endif",
+        "",
+        f"#endif /* {guard} */",
+        "",
+    ]
+    src = ["/* SPDX-License-Identifier: MIT */", "/*"]
+    src += [f" * {line}" for line in prov]
+    src += [" */", f'#include "{BASENAME}.h"', "", "#ifndef OI_NO_ATMOSPHERE",
+            "#if OI_ATM_TABLE_FORMAT != 1",
+            '#error "oi_atm_table: format mismatch: regenerate (make bake-atm)"',
+            "#endif", "", _c_floats("oi__atm_q", q32), _c_floats("oi__atm_psi", p32),
+            "#else", "typedef int oi__atm_table_removed; /* no empty translation unit */",
+            "#endif /* OI_NO_ATMOSPHERE */", ""]
+    meta = {
+        "generator": "bake.atm_table", "version": __version__, "table_format": TABLE_FORMAT,
+        "grid": consts, "constants": reals, "measured_error": err, "sha256": sha,
+        "bytes": int(q32.nbytes + p32.nbytes),
+        "profile": {k: getattr(profile, k) for k in (
+            "kind", "n0", "top_km", "extinction", "cloud_top_km", "ozone_du",
+            "aer_trop_tau", "aer_strat_tau")},
+    }
+    os.makedirs(outdir, exist_ok=True)
+    with open(os.path.join(outdir, BASENAME + ".h"), "w") as f:
+        f.write("\n".join(hdr))
+    with open(os.path.join(outdir, BASENAME + ".c"), "w") as f:
+        f.write("\n".join(src))
+    with open(os.path.join(outdir, BASENAME + ".json"), "w") as f:
+        json.dump(meta, f, indent=1, sort_keys=True)
+        f.write("\n")
+    return meta
+
+
+def main(argv=None):
+    import argparse
+    import time
+    ap_ = argparse.ArgumentParser(description="bake the atmosphere table (issue 4)")
+    ap_.add_argument("--out", default="tables")
+    ap_.add_argument("--measure", type=int, default=300, help="off-grid test points")
+    args = ap_.parse_args(argv)
+    t0 = time.time()
+    profile = ap.us1976()
+    rays = ar.make_rays(profile)
+    q, psi, alpha_c, h_c = bake(rays, progress=True)
+    err, _ = measure(rays, q, psi, alpha_c, h_c, n=args.measure, progress=True)
+    meta = emit(args.out, q, psi, alpha_c, h_c, err, profile)
+    print(f"atm table: {meta['bytes']} bytes, max |dF| {err['max_abs_error']:.2e}, "
+          f"{time.time() - t0:.0f} s -> {args.out}/{BASENAME}.*")
+
+
+if __name__ == "__main__":
+    main()
