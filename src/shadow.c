@@ -80,19 +80,34 @@ static oi_real tri_angle(oi_real a, oi_real b, oi_real c, int comp)
 /*
  * Area of the "segment" of a cap of radius r (<= pi/2) cut off by the great
  * circle through the two points of its boundary seen from the cap's centre
- * at +-alpha: the sector 4 alpha sin^2(r/2) minus the isosceles triangle
+ * at +-alpha.
+ * alpha >= 1/2: the sector 4 alpha sin^2(r/2) minus the isosceles triangle
  * (centre and the two points, apex angle 2 alpha) whose spherical excess E is
  *   tan(E/2) = S sin 2a / (C + S cos 2a),  S = sin^2(r/2), C = cos^2(r/2)
- * (the two-sides-and-included-angle excess formula with tan^2(r/2) = S/C).
- * For alpha > pi/2 the excess is negative: the triangle is added, as the
- * cap's centre then lies inside the segment.
+ * (the two-sides-and-included-angle excess formula with tan^2(r/2) = S/C);
+ * for alpha > pi/2 the excess is negative: the triangle is added, as the
+ * cap's centre then lies inside the segment. The two terms cancel by at most
+ * a factor 1.5/alpha^2 = 6.
+ * alpha < 1/2 (thin segments, where sector and triangle cancel): the same
+ * area as an integral without cancellation, obtained by differentiating the
+ * above in alpha:
+ *   seg = 2 sin^2 r cos r  J(alpha),  J = int_0^alpha sin^2 u / (1 - sin^2 r sin^2 u) du,
+ * J by the 16-point Gauss-Legendre rule (the integrand is analytic in a
+ * disc of radius > 1 about [0, 1/2], so the rule is exact to rounding).
+ * Planar check: for small r, seg -> (r^2/2)(2 alpha - sin 2 alpha).
  */
+static oi_real gauss_j(oi_real alpha, oi_real k2);
+
 static oi_real cap_segment(oi_real r, oi_real alpha)
 {
-    oi_real s = sin_half_sq(r);
-    oi_real c = sqr(OI_COS(OI_R(0.5) * r));
-    oi_real e = (oi_real)2 * OI_ATAN2(s * OI_SIN((oi_real)2 * alpha),
-                                      c + s * OI_COS((oi_real)2 * alpha));
+    oi_real s, c, e;
+    if (alpha < OI_R(0.5)) {
+        oi_real sr = OI_SIN(r);
+        return (oi_real)2 * sr * sr * OI_COS(r) * gauss_j(alpha, sr * sr);
+    }
+    s = sin_half_sq(r);
+    c = sqr(OI_COS(OI_R(0.5) * r));
+    e = (oi_real)2 * OI_ATAN2(s * OI_SIN((oi_real)2 * alpha), c + s * OI_COS((oi_real)2 * alpha));
     return (oi_real)4 * alpha * s - e;
 }
 
@@ -100,14 +115,29 @@ static oi_real cap_segment(oi_real r, oi_real alpha)
 static oi_real overlap_small(oi_real r1, oi_real r2, oi_real d)
 {
     oi_real a1, a2, lens, amin;
-    amin = (oi_real)4 * OI_PI_R * sin_half_sq(r1 < r2 ? r1 : r2);
-    if (d >= r1 + r2) return (oi_real)0;                     /* disjoint */
-    if (d <= OI_FABS(r1 - r2)) return amin;                  /* nested */
+    oi_real rbig = r1 > r2 ? r1 : r2, rsmall = r1 > r2 ? r2 : r1;
+    amin = (oi_real)4 * OI_PI_R * sin_half_sq(rsmall);
+    /* classification by differences, exact near the tangencies (Sterbenz),
+     * instead of comparing d with the rounded r1 + r2 or r1 - r2 */
+    if (d - rbig >= rsmall) return (oi_real)0;               /* disjoint */
+    if (rbig - d >= rsmall) return amin;                     /* nested */
     /* triangle (C1, C2, P), P a crossing point of the two boundaries:
      * sides C1P = r1, C2P = r2, C1C2 = d; alpha1 at C1 is opposite r2. */
     a1 = tri_angle(r2, r1, d, 0);
     a2 = tri_angle(r1, r2, d, 0);
-    lens = cap_segment(r1, a1) + cap_segment(r2, a2);
+    if (rsmall >= (oi_real)1) {
+        /* two large caps: Gauss-Bonnet on the lens (two arcs of geodesic
+         * curvature cot r and length 2 alpha sin r, two corners of exterior
+         * angle gamma, the triangle's angle at P opposite d):
+         *   lens = 2 (pi - gamma) - 2 alpha1 cos r1 - 2 alpha2 cos r2.
+         * Used here because the chord decomposition degenerates when both
+         * boundaries approach great circles (P and Q nearly antipodal); the
+         * terms cancel at most to a few epsilon times the caps' area. */
+        oi_real pg = tri_angle(d, r1, r2, 1); /* pi - gamma */
+        lens = (oi_real)2 * (pg - a1 * OI_COS(r1) - a2 * OI_COS(r2));
+    } else {
+        lens = cap_segment(r1, a1) + cap_segment(r2, a2);
+    }
     return clamp(lens, (oi_real)0, amin);
 }
 
@@ -206,6 +236,23 @@ static const oi_real gl_node[GL_HALF][2] = {
     {OI_R(0.452493745081181279907), OI_R(0.0947253052275342481427)},
 };
 
+/* J(alpha) = int_0^alpha sin^2 u / (1 - k2 sin^2 u) du, k2 = sin^2 r <= 1,
+ * alpha < 1/2: Gauss-Legendre, 16 nodes. */
+static oi_real gauss_j(oi_real alpha, oi_real k2)
+{
+    oi_real sum = (oi_real)0;
+    int i, j;
+    for (i = 0; i < GL_HALF; ++i) {
+        for (j = 0; j < 2; ++j) {
+            oi_real x = j ? (oi_real)1 - gl_node[i][0] : gl_node[i][0];
+            oi_real su = OI_SIN(alpha * x);
+            oi_real s2 = su * su;
+            sum += gl_node[i][1] * s2 / ((oi_real)1 - k2 * s2);
+        }
+    }
+    return alpha * sum;
+}
+
 /*
  * Flux of the disc between mu_a and mu_b (mu_a < mu_b), in units of
  * sin^2(r_s): with x = sin(rho)/sin(r_s) the normalised radius, mu =
@@ -248,22 +295,22 @@ static oi_real mu_at(oi_real rho, oi_real rs, oi_real sin_rs)
  * (S, Earth centre E, boundary point X) with sides SX = rho, SE = sep,
  * EX = re. The change of variable rho = b1 + (be - b1) sin^2(theta) makes the
  * square-root behaviour at both ends (partial rings start and stop; the
- * limb) smooth in theta. Units as ring_flux.
+ * limb) smooth in theta. This adds the panel theta in [ta, tb] (16 nodes).
+ * Units as ring_flux.
  */
-static void partial_flux(oi_real b1, oi_real be, int be_is_limb, oi_real rs, oi_real re,
-                         oi_real sep, oi_real sin_rs, oi_real *vis, oi_real *hid)
+static void partial_panel(oi_real ta, oi_real tb, oi_real b1, oi_real w, int be_is_limb,
+                          oi_real rs, oi_real re, oi_real sep, oi_real sin_rs, oi_real *vis,
+                          oi_real *hid)
 {
-    oi_real w = be - b1, sv = (oi_real)0, sh = (oi_real)0, s2 = sqr(sin_rs);
+    oi_real sv = (oi_real)0, sh = (oi_real)0, s2 = sqr(sin_rs), h = tb - ta;
     int i, j;
-    *vis = *hid = (oi_real)0;
-    if (!(w > (oi_real)0)) return;
     for (i = 0; i < GL_HALF; ++i) {
         for (j = 0; j < 2; ++j) {
             oi_real x = j ? (oi_real)1 - gl_node[i][0] : gl_node[i][0];
-            oi_real th = HALF_PI_R * x;
+            oi_real th = ta + h * x;
             oi_real sn = OI_SIN(th), cs = OI_COS(th);
             oi_real rho = b1 + w * sn * sn;
-            oi_real mu, base, hidden, visible;
+            oi_real mu, base;
             if (be_is_limb) {
                 /* rs - rho = w cos^2(theta) exactly as a product */
                 oi_real gap = w * cs * cs;
@@ -276,14 +323,61 @@ static void partial_flux(oi_real b1, oi_real be, int be_is_limb, oi_real rs, oi_
             }
             /* ring weight I(mu) sin(rho) drho / sin^2 r_s, drho = w sin 2theta dtheta */
             base = gl_node[i][1] * limb_intensity(mu) * OI_SIN(rho) * (oi_real)2 * sn * cs / s2;
-            hidden = tri_angle(re, rho, sep, 0) / OI_PI_R;   /* phi0 / pi */
-            visible = tri_angle(re, rho, sep, 1) / OI_PI_R;  /* (pi - phi0) / pi */
-            sh += base * hidden;
-            sv += base * visible;
+            sh += base * tri_angle(re, rho, sep, 0);   /* phi0 */
+            sv += base * tri_angle(re, rho, sep, 1);   /* pi - phi0 */
         }
     }
-    *vis = sv * w * HALF_PI_R;
-    *hid = sh * w * HALF_PI_R;
+    *vis += sv * w * h / OI_PI_R;
+    *hid += sh * w * h / OI_PI_R;
+}
+
+/*
+ * The partial rings [b1, be]. Another square-root point may lie a small
+ * distance beyond either end: beyond be, the limb (when be = b2) or b2 (when
+ * be is the limb), when the Earth's disc is nearly internally tangent to the
+ * Sun's; before b1, the mirror point -b1 of the partial rings' start when b1
+ * is small (the Earth's limb close to the Sun's centre). A point at distance
+ * `near` beyond an end sits at theta = end +- i sqrt(near / w): each half of
+ * [0, pi/2] is then cut into panels graded geometrically towards that end
+ * until the last is narrower than half that distance, so every panel sees
+ * the singularity at least about its own width away (Gauss-Legendre then
+ * converges geometrically). At most 2 x 40 panels; two when nothing is near.
+ */
+static void partial_half(oi_real t_far, oi_real t_end, oi_real near, oi_real b1, oi_real w,
+                         int be_is_limb, oi_real rs, oi_real re, oi_real sep, oi_real sin_rs,
+                         oi_real *vis, oi_real *hid)
+{
+    /* t_end is the end the singularity is near; t_far the middle */
+    oi_real q = t_end - t_far, lim;
+    int k;
+    if (!(near > (oi_real)0) || !(near < OI_R(0.25) * w)) {
+        partial_panel(t_far < t_end ? t_far : t_end, t_far < t_end ? t_end : t_far, b1, w,
+                      be_is_limb, rs, re, sep, sin_rs, vis, hid);
+        return;
+    }
+    lim = OI_R(0.5) * OI_SQRT(near / w);
+    for (k = 0; k < 40 && OI_FABS(q) > lim; ++k) {
+        oi_real a = t_end - q, b = t_end - OI_R(0.5) * q;
+        partial_panel(a < b ? a : b, a < b ? b : a, b1, w, be_is_limb, rs, re, sep, sin_rs, vis,
+                      hid);
+        q *= OI_R(0.5);
+    }
+    {
+        oi_real a = t_end - q;
+        partial_panel(a < t_end ? a : t_end, a < t_end ? t_end : a, b1, w, be_is_limb, rs, re,
+                      sep, sin_rs, vis, hid);
+    }
+}
+
+static void partial_flux(oi_real b1, oi_real be, int be_is_limb, oi_real near_end, oi_real rs,
+                         oi_real re, oi_real sep, oi_real sin_rs, oi_real *vis, oi_real *hid)
+{
+    oi_real w = be - b1, mid = OI_R(0.25) * OI_PI_R;
+    *vis = *hid = (oi_real)0;
+    if (!(w > (oi_real)0)) return;
+    partial_half(mid, (oi_real)0, (oi_real)2 * b1, b1, w, be_is_limb, rs, re, sep, sin_rs, vis,
+                 hid);
+    partial_half(mid, HALF_PI_R, near_end, b1, w, be_is_limb, rs, re, sep, sin_rs, vis, hid);
 }
 
 /* Visible fraction of the limb-darkened solar disc (radius rs) when the
@@ -304,7 +398,10 @@ static oi_real fraction_limb_darkened(oi_real rs, oi_real re, oi_real sep)
     if (sep < re) hid += inner; else vis += inner;
     /* rings b2 < rho < rs, i.e. mu in [0, mu(b2)] */
     if (!limb) vis += ring_flux((oi_real)0, mu_at(b2, rs, sin_rs), c2, s2);
-    partial_flux(b1, be, limb, rs, re, sep, sin_rs, &pv, &ph);
+    /* the other square-root point near be: b2 just beyond the limb, or the
+     * limb just beyond b2 (the Earth's disc internally tangent to the Sun's,
+     * beyond the umbra's tip) */
+    partial_flux(b1, be, limb, OI_FABS(b2 - rs), rs, re, sep, sin_rs, &pv, &ph);
     vis += pv;
     hid += ph;
     total = vis + hid;
@@ -357,7 +454,9 @@ static oi_real apparent_radius(oi_real rad, oi_real dist)
  *     atan2(R, sqrt((D - R)(D + R)))), with the TRUE Sun distance from the
  *     point, and centres separated by the angle between sun - point and
  *     -point (oi_angle). fraction = 1 - overlap / cap area (oi_cap_overlap).
- *  2. Regions: LIT (separation >= r_earth + r_sun; fraction exactly 1),
+ *  2. Regions: LIT (separation >= r_earth + r_sun, or the Earth's centre
+ *     farther from the point than the Sun's: the Earth behind the Sun;
+ *     fraction exactly 1),
  *     UMBRA (separation <= r_earth - r_sun; exactly 0), ANNULAR (separation
  *     <= r_sun - r_earth: the Earth's disc inside the Sun's, beyond the
  *     umbra's tip; fraction = 1 - A(r_earth)/A(r_sun)), else PENUMBRA.
@@ -365,7 +464,9 @@ static oi_real apparent_radius(oi_real rad, oi_real dist)
  *     559.95 nm (V band). fraction_ld integrates the disc's intensity over
  *     rings about the Sun's centre (exact spherical ring geometry) times the
  *     uncovered arc of each ring, with fixed 16-point Gauss-Legendre rules on
- *     each piece between the rings where covering starts or stops.
+ *     each piece between the rings where covering starts or stops (graded
+ *     panels when the Earth's disc is nearly internally tangent to the
+ *     Sun's, beyond the umbra's tip).
  *  4. Accuracy (docs/shadow.md): double, fraction within ~1e-15 absolute of
  *     an mpmath quadrature of the same geometry; the fraction's sensitivity
  *     to the separation is about 1/(2 r_sun) ~ 1e2 per radian, so in single
@@ -410,7 +511,10 @@ int oi_sun_fraction(const oi_real sun_km[3], const oi_real point_km[3],
     rs = apparent_radius(m.sun_radius_km, dsp);
     re = apparent_radius(m.earth_radius_km, dp);
 
-    if (sep >= re + rs) {
+    if (sep >= re + rs || dp >= dsp) {
+        /* discs apart, or the Earth behind the Sun (a point beyond the Sun:
+         * whenever the discs overlap the three bodies are nearly collinear,
+         * so the nearer one is in front) */
         region = OI_SHADOW_LIT;
         frac = frac_ld = (oi_real)1;
     } else if (sep <= re - rs) {
@@ -437,11 +541,17 @@ int oi_sun_fraction(const oi_real sun_km[3], const oi_real point_km[3],
      * modify the sunlight reaching the point (issue 3). Until then the
      * model's choice of disc, uniform or limb-darkened. */
     out->fraction_atm = m.limb_darkening == OI_LIMB_DARKENED ? frac_ld : frac;
+#ifndef OI_NO_ATMOSPHERE
+    /* issue 4 (src/atmosphere.c): refraction and extinction from the baked
+     * table; OI_WARN_TABLE_RANGE outside its z range (geometric kept). */
+    if (!m.no_atmosphere)
+        st = oi__atm_fraction(sun_km, point_km, &m, frac, frac_ld, &out->fraction_atm, NULL);
+#endif
     /* ---- end atmosphere */
     out->sun_radius_rad = rs;
     out->earth_radius_rad = re;
     out->separation_rad = sep;
     out->sun_distance_km = dsp;
     out->region = region;
-    return OI_OK;
+    return st;
 }

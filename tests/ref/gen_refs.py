@@ -163,8 +163,8 @@ def overlap_quad(r1, r2, d):
 
 def overlap_closed(r1, r2, d):
     """Textbook closed form (e.g. Tovchigrechko & Vakser 2001); it cancels
-    badly for small caps, so it is evaluated at 120 digits."""
-    with mp.workdps(120):
+    badly for small caps, so it is evaluated at 160 digits."""
+    with mp.workdps(160):
         return +_overlap_closed(mp.mpf(r1), mp.mpf(r2), mp.mpf(d))
 
 
@@ -212,12 +212,24 @@ def overlap_points(prec):
         rows.append((rnd(a, prec), rnd(b, prec), rnd(d, prec)))
     out = []
     for r1, r2, d in rows:
+        if max(r1, r2, d) > PI:
+            continue  # float(pi) > pi: clamping is tested with closed forms
         q = overlap_quad(r1, r2, d)
         c = overlap_closed(r1, r2, d)
         scale = 2 * PI * (1 - mp.cos(min(mp.mpf(r1), mp.mpf(r2), PI)))
         if abs(q - c) > mp.mpf("1e-30") * (1 + scale) and abs(q - c) > mp.mpf("1e-25") * scale:
             sys.exit("overlap: quadrature and closed form disagree at %r: %s %s" % ((r1, r2, d), q, c))
-        out.append((r1, r2, d, q, scale))
+        # condition: cap + sum |dA/dx| x over x = d, r1, r2 (absolute error of A
+        # per unit relative perturbation of the inputs), closed form at 120 digits
+        h = mp.mpf("1e-40")
+        cond = scale
+        for k in range(3):
+            x = [mp.mpf(r1), mp.mpf(r2), mp.mpf(d)]
+            xp, xm = list(x), list(x)
+            xp[k] += h
+            xm[k] = max(xm[k] - h, 0)
+            cond += abs(overlap_closed(*xp) - overlap_closed(*xm)) / (xp[k] - xm[k]) * x[k]
+        out.append((r1, r2, d, q, cond))
     return out
 
 
@@ -364,13 +376,15 @@ def sun_rows(prec):
         rs, re, sep, dsp = sun_geometry(sun, pt, prec)
         f = fraction_uniform(rs, re, sep)
         fl = fraction_ld(rs, re, sep)
-        # condition: |df/dsep| max(sep, 1) + |df/drs| rs + |df/dre| re + 1, from the closed form
+        # condition number (absolute error per unit relative rounding), from the closed form
         g = lambda a, b, c: 1 - overlap_closed(b, a, c) / (2 * PI * (1 - mp.cos(a)))
         h = mp.mpf("1e-20")
         dsep = abs(g(rs, re, sep + h) - g(rs, re, sep - h)) / (2 * h) if sep > h else mp.mpf(0)
         drs = abs(g(rs + h, re, sep) - g(rs - h, re, sep)) / (2 * h)
         dre = abs(g(rs, re + h, sep) - g(rs, re - h, sep)) / (2 * h)
-        cond = dsep * max(sep, 1) + drs * rs + dre * re + 1
+        # re = asin(Re/|p|) has condition tan(re) w.r.t. |p| (large 1 m above
+        # the surface), rs likewise; the separation's rounding is absolute
+        cond = dsep * max(sep, 1) + drs * mp.tan(rs) + dre * mp.tan(re) + 1
         edge = min(abs(sep - (re + rs)), abs(sep - abs(re - rs)))
         rows.append(dict(sun=sun, point=pt, f=f, fld=fl, rs=rs, re=re, sep=sep, dsp=dsp,
                          cond=cond, edge=edge, region=region_of(rs, re, sep),
@@ -414,10 +428,11 @@ def emit_phase():
 
 def emit_shadow(report):
     parts = [
-        "typedef struct { double r1, r2, d, want, cap; } ref_overlap_row;\n",
+        "typedef struct { double r1, r2, d, want;\n"
+        "    double cond; /* smaller cap's area + sum |dA/dx| x, x = r1, r2, d */\n} ref_overlap_row;\n",
         "typedef struct {\n    double sun[3], point[3];\n"
         "    double fraction, fraction_ld, sun_radius, earth_radius, separation, sun_distance;\n"
-        "    double cond;  /* |df/dsep| max(sep,1) + |df/drs| rs + |df/dre| re + 1 */\n"
+        "    double cond;  /* |df/dsep| max(sep,1) + |df/drs| tan rs + |df/dre| tan re + 1 */\n"
         "    double edge;  /* distance of sep from the nearest shadow edge (rad) */\n"
         "    int region;\n} ref_sun_row;\n",
     ]
