@@ -192,6 +192,11 @@ def section(outdir) -> str:
         "| baked table, Catmull-Rom, default grid %dx(%d+%d) (C, double) | %s | %s | %d | %.2e |" % (
             default["n_alt"], default["n_lit"], default["n_term"], f(ns_tab, "%.1f"),
             f(ins_tab, "%.0f"), default["bytes"], default["max_rel_err"]),
+        "| the same table, single-precision build (C, float) | %s | %s | %d | %s on the bench scenes (double: %s) |" % (
+            f(_val(bench, "bench.float.earthshine.ns_median"), "%.1f"),
+            f(_val(bench, "bench.float.earthshine.instructions"), "%.0f"), default["bytes"],
+            f(_val(bench, "bench.float.earthshine.max_rel_err_vs_quadrature"), "%.2e"),
+            f(_val(bench, "bench.double.earthshine.max_rel_err_vs_quadrature"), "%.2e")),
         "| analytic Lambert far field (C, double) | %s | %s | 0 | %.2e |" % (
             f(ns_lam, "%.1f"), f(ins_lam, "%.0f"), lam["max_rel_err"]),
         "| quadrature bake.reference (Python, one call) | %s | n/a | 0 | < 1e-12 (bake/reference.py) |" % (

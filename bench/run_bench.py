@@ -223,6 +223,24 @@ def quadrature(args, out):
                     "%s; scenes where phi >= 1e-3 phi(0, h)" % what)
         out.put("bench.double.%s.max_err_over_subsolar" % name, "%.3g" % nrm.max(), "1",
                 "%s; |approx - quadrature| / phi(0, h), all scenes" % what)
+    # the single-precision build: the same error measure at its own (float-rounded) inputs
+    bf = os.path.join(args.bindir, "bench-float")
+    if os.path.exists(bf):
+        fr = [l.split() for l in run([bf, "dump"]).stdout.splitlines() if not l.startswith("#")]
+        th_f = np.array([float(r[3]) for r in fr])
+        x_f = R_EARTH_KM / (R_EARTH_KM + np.array([float(r[4]) for r in fr]))
+        phi_f = np.array([float(r[5]) for r in fr])
+        ok_f = np.array([int(r[7]) for r in fr]) >= 0
+        ref_f = np.asarray(ref.phi_psi_reference(th_f, x_f)[0], dtype=float)
+        phi0_f = np.asarray(ref.phi_psi_reference(np.zeros_like(x_f), x_f)[0], dtype=float)
+        big_f = (ref_f >= 1e-3 * phi0_f) & ok_f
+        if big_f.any():
+            out.put("bench.float.earthshine.max_rel_err_vs_quadrature", "%.3g" % (
+                np.abs(phi_f - ref_f)[big_f] / ref_f[big_f]).max(), "1",
+                "single-precision runtime at its float inputs; scenes where phi >= 1e-3 phi(0, h)")
+        if ok_f.any():
+            out.put("bench.float.earthshine.max_err_over_subsolar", "%.3g" % (
+                np.abs(phi_f - ref_f)[ok_f] / phi0_f[ok_f]).max(), "1")
     for prec in ("double", "float"):
         d = out.data.get("bench.%s.earthshine.ns_median" % prec)
         if d:
