@@ -55,7 +55,7 @@ CROSS_LDFLAGS = $(CPU_$(call cfg_core,$(1))) -nostartfiles -T target/mps2.ld -Wl
 CROSS_LIBS := -lm -lc -lgcc
 # The harness (startup, semihosting, self-test) is not the runtime: same warnings, no -fstack-usage.
 HARNESS_CFLAGS = $(WARN) -$(call cfg_opt,$(1)) $(CPU_$(call cfg_core,$(1))) \
-  -ffunction-sections -fdata-sections -Iinclude -Isrc -Itables -Itarget -Itests/c -Itests \
+  -ffunction-sections -fdata-sections -Iinclude -Isrc -Itables -Itarget -Itests/c -Itests -I$(CROSS_DIR) \
   $(if $(TARGET_STRICT),-DOI_TARGET_STRICT)
 
 # golden-vector groups of the self-test (target/golden_<name>.c)
@@ -67,6 +67,13 @@ REF_DEFS := $(foreach h,$(REF_HEADERS),-DOI_HAVE_$(shell echo $(basename $(notdi
 STAB_VECTORS := $(wildcard tests/stability/vectors.h)
 REF_HEADERS += $(STAB_VECTORS)
 REF_DEFS += $(if $(STAB_VECTORS),-DOI_HAVE_STABILITY_VECTORS)
+# the stability suite's list of known deviations, extracted from its source so
+# the target applies exactly the host's list (target/golden_stability.c)
+STAB_KNOWN_H := $(CROSS_DIR)/stab_known.h
+$(STAB_KNOWN_H): $(wildcard tests/c/test_stability.c)
+	@mkdir -p $(dir $@)
+	@{ [ -f tests/c/test_stability.c ] && sed -n '/^static const known_issue KNOWN\[\] = {/,/^};/p' \
+	    tests/c/test_stability.c | sed '1d;$$d'; true; } > $@
 
 .PHONY: cross size stack target-test target-bench bench deps-cross deps-bench cross-clean
 
@@ -101,7 +108,7 @@ $(call xdir,$(1),$(2))/stubs/%.o: target/stubs.c | deps-cross
 $(call xdir,$(1),$(2))/libstubs.a: $(patsubst %,$(call xdir,$(1),$(2))/stubs/%.o,$(OI_PUBLIC))
 	rm -f $$@ && $$(CROSS_AR) rcs $$@ $$^
 
-$(call xdir,$(1),$(2))/harness/%.o: target/%.c target/semihost.h target/check.h $(REF_HEADERS) | deps-cross
+$(call xdir,$(1),$(2))/harness/%.o: target/%.c target/semihost.h target/check.h $(REF_HEADERS) $(STAB_KNOWN_H) | deps-cross
 	@mkdir -p $$(dir $$@)
 	$$(CROSS_CC) $$(call HARNESS_CFLAGS,$(1)) $$(OPTSET_$(2)) $$(REF_DEFS) -c $$< -o $$@
 
