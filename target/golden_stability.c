@@ -52,6 +52,7 @@ static const known_issue KNOWN[] = {
 static const known_issue *find_known(const char *table, const char *output, const char *label)
 {
 #ifdef OI_TARGET_STRICT
+    (void)KNOWN;
     (void)table;
     (void)output;
     (void)label;
