@@ -193,11 +193,28 @@ oi_real oi_cap_overlap(oi_real r1, oi_real r2, oi_real d)
          * -4 pi cos((r1 + r2)/2) cos((r1 - r2)/2). */
         a = -(oi_real)4 * OI_PI_R * OI_COS(OI_R(0.5) * (r1 + r2)) * OI_COS(OI_R(0.5) * (r1 - r2)) +
             overlap_small(pi_minus(r1), pi_minus(r2), d);
-    } else if (r1 > HALF_PI_R) {
-        /* |K1 n K2| = A2 - |K1' n K2|, K1' = cap(pi - r1) at pi - d from K2 */
-        a = a2 - overlap_small(pi_minus(r1), r2, pi_minus(d));
     } else {
-        a = a1 - overlap_small(r1, pi_minus(r2), pi_minus(d));
+        /* one cap larger than a hemisphere: rb > pi/2 >= rs */
+        oi_real rb = r1 > r2 ? r1 : r2, rs = r1 > r2 ? r2 : r1, ab = r1 > r2 ? a2 : a1;
+        if (d - rb >= rs) return (oi_real)0;
+        if (rb - d >= rs) return ab;
+        {
+            /* angle at the large cap's centre (opposite rs), and at the
+             * small cap's centre (opposite rb) */
+            oi_real alb = tri_angle(rs, rb, d, 0);
+            if (alb < (oi_real)1 && d + rs > HALF_PI_R) {
+                /* small lens near the large cap's edge: the signed segments
+                 * lens = seg(rs, al_s) + seg(rb, al_b), where a cap beyond a
+                 * hemisphere has the segment -seg(pi - rb, al_b) (its boundary
+                 * curves away from the lens); no cancellation against the
+                 * small cap's area */
+                oi_real als = tri_angle(rb, rs, d, 0);
+                a = cap_segment(rs, als) - cap_segment(pi_minus(rb), alb);
+            } else {
+                /* |Kb n Ks| = As - |Kb' n Ks|, Kb' = cap(pi - rb) at pi - d */
+                a = ab - overlap_small(pi_minus(rb), rs, pi_minus(d));
+            }
+        }
     }
     return clamp(a, (oi_real)0, amin);
 }
@@ -453,7 +470,10 @@ static oi_real apparent_radius(oi_real rad, oi_real dist)
  *     Earth's discs are spherical caps of radii asin(R/distance) (computed as
  *     atan2(R, sqrt((D - R)(D + R)))), with the TRUE Sun distance from the
  *     point, and centres separated by the angle between sun - point and
- *     -point (oi_angle). fraction = 1 - overlap / cap area (oi_cap_overlap).
+ *     -point (oi_angle). fraction = visible area / cap area, the visible
+ *     area being the Sun's cap segment beyond the chord through the two
+ *     crossing points of the limbs minus the Earth's segment (the
+ *     complement of oi_cap_overlap's lens, formed without cancellation).
  *  2. Regions: LIT (separation >= r_earth + r_sun, or the Earth's centre
  *     farther from the point than the Sun's: the Earth behind the Sun;
  *     fraction exactly 1),
@@ -527,6 +547,17 @@ int oi_sun_fraction(const oi_real sun_km[3], const oi_real point_km[3],
              * factored: sin((rs - re)/2) sin((rs + re)/2) */
             region = OI_SHADOW_ANNULAR;
             frac = OI_SIN(OI_R(0.5) * (rs - re)) * OI_SIN(OI_R(0.5) * (rs + re)) / ssun;
+        } else if (rs < (oi_real)1) {
+            /* the visible part of the Sun's cap directly, as the Sun's
+             * segment beyond the chord of the two crossing points minus the
+             * Earth's segment (no 1 - overlap/area: keeps the relative
+             * accuracy of a thin crescent next to the umbra); the angle at
+             * the Sun's centre enters as pi - alpha_s from tri_angle */
+            oi_real a_e = tri_angle(rs, re, sep, 0);
+            oi_real pa_s = tri_angle(re, rs, sep, 1);
+            region = OI_SHADOW_PENUMBRA;
+            frac = (cap_segment(rs, pa_s) - cap_segment(re, a_e)) /
+                   ((oi_real)4 * OI_PI_R * ssun);
         } else {
             region = OI_SHADOW_PENUMBRA;
             frac = (oi_real)1 - oi_cap_overlap(re, rs, sep) / ((oi_real)4 * OI_PI_R * ssun);

@@ -208,6 +208,7 @@ static void test_sun_vs_mpmath(void **state)
     size_t i, n = sizeof ref_sun / sizeof ref_sun[0];
     int bad = 0;
     double worst_abs = 0, worst_scaled = 0, worst_ld = 0, worst_geo = 0;
+    double wc_abs = 0, wc_ld = 0, small_rel = 0; /* rows with cond <= 1e3; f < 1e-3 */
     (void)state;
     for (i = 0; i < n; ++i) {
         const ref_sun_row *r = &ref_sun[i];
@@ -262,6 +263,14 @@ static void test_sun_vs_mpmath(void **state)
             print_error("row %zu: geometry error %.3g\n", i, geo);
             ++bad;
         }
+        if (r->cond <= 1e3) {
+            wc_abs = fmax(wc_abs, err);
+            wc_ld = fmax(wc_ld, err_ld);
+        }
+        /* relative accuracy of small fractions, where the inputs' rounding
+         * (eps * cond) allows it */
+        if (r->fraction > 0 && r->fraction < 1e-3 && EPS * r->cond < 1e-3 * r->fraction)
+            small_rel = fmax(small_rel, err / r->fraction);
         if (err > worst_abs) worst_abs = err;
         if (err / (EPS * r->cond) > worst_scaled) worst_scaled = err / (EPS * r->cond);
         if (err_ld > worst_ld) worst_ld = err_ld;
@@ -270,6 +279,9 @@ static void test_sun_vs_mpmath(void **state)
     print_message("oi_sun_fraction: %zu points; fraction worst |err| %.3g (%.3g eps * cond), "
                   "fraction_ld worst |err| %.3g, geometry %.3g eps * cond\n",
                   n, worst_abs, worst_scaled, worst_ld, worst_geo);
+    print_message("  rows with cond <= 1e3: fraction worst |err| %.3g, fraction_ld %.3g; "
+                  "fractions below 1e-3 (where eps*cond < 1e-3 f): worst relative error %.3g\n",
+                  wc_abs, wc_ld, small_rel);
 #ifndef OI_SINGLE_PRECISION
     assert_true(worst_abs <= 1e-9); /* issue 2 goal */
 #endif
