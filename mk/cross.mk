@@ -75,7 +75,7 @@ $(STAB_KNOWN_H): $(wildcard tests/c/test_stability.c)
 	@{ [ -f tests/c/test_stability.c ] && sed -n '/^static const known_issue KNOWN\[\] = {/,/^};/p' \
 	    tests/c/test_stability.c | sed '1d;$$d'; true; } > $@
 
-.PHONY: cross size stack target-test target-bench bench deps-cross deps-bench cross-clean
+.PHONY: cross size stack target-test target-bench bench deps-cross deps-bench cross-clean perf-doc
 
 deps-cross: $(BUILDDIR)/.deps-cross
 $(BUILDDIR)/.deps-cross:
@@ -176,6 +176,9 @@ target-bench: $(TBENCH_ELFS) ## instructions per scene on Cortex-M4F/M7 (qemu -i
 	  timeout $(QEMU_TIMEOUT) $(QEMU) -machine $$m -cpu $$q -icount shift=0 \
 	    -semihosting-config enable=on,target=native -nographic -monitor none -serial none \
 	    -kernel $(CROSS_DIR)/$$c/bench.elf 2>&1 | sed "s/^target\.[a-z]*\./target.$$c./"; done
+
+perf-doc: deps-py ## run cross size stack target-test target-bench bench; refresh docs/performance.md
+	$(PY) tools/perf_doc.py --builddir $(BUILDDIR)
 
 cross-clean:
 	rm -rf $(CROSS_DIR)
