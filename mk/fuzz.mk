@@ -122,3 +122,15 @@ analyze-gcc:
 	done; done
 
 analyze: analyze-cppcheck analyze-gcc ## cppcheck and gcc -fanalyzer on the runtime, must be clean
+
+# ---- the thin test binding's shared library (tests/python/_oi_ctypes.py):
+# the double-precision runtime plus a struct-size probe. Not the public
+# binding's build/liborbillum.so.
+ORI_TEST_SO := $(BUILDDIR)/libori_test.so
+$(ORI_TEST_SO): $(RT_SRC) tests/stability/ori_test_abi.c $(wildcard include/*.h src/*.h tables/*.h)
+	@mkdir -p $(dir $@)
+	$(CC) $(RT_CFLAGS) -fPIC -shared $(RT_SRC) tests/stability/ori_test_abi.c -lm -o $@
+
+ori-test-so: $(ORI_TEST_SO)
+test-py: $(ORI_TEST_SO)
+.PHONY: ori-test-so
