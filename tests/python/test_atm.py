@@ -1,0 +1,235 @@
+# SPDX-License-Identifier: MIT
+"""Tests of the atmosphere reference (bake.atm_profile, bake.atm_rays) and
+table (bake.atm_table): each against an independent closed form, another
+algorithm, or a published value."""
+import json
+import os
+
+import numpy as np
+import pytest
+
+from bake import atm_profile as ap
+from bake import atm_rays as ar
+from bake import atm_table as at
+from bake import shells
+
+ROOT = os.path.join(os.path.dirname(__file__), "..", "..")
+
+
+@pytest.fixture(scope="module")
+def rays_default():
+    return ar.make_rays(ap.us1976(), dh_km=0.02)
+
+
+@pytest.fixture(scope="module")
+def rays_seed():
+    return ar.make_rays(ap.seed_mode(), dh_km=0.02)
+
+
+# ---------------------------------------------------------------- profile
+
+def test_us1976_standard_values():
+    # 1976 U.S. Standard Atmosphere, Table I: T, p at 11 km (geopotential),
+    # 20 km, 32 km geopotential.
+    for hp, t_want, p_want in ((11.0, 216.65, 22632.1), (20.0, 216.65, 5474.89),
+                               (32.0, 228.65, 868.019)):
+        t, p, _ = ap.us1976_state(ap.geometric_km(hp))
+        assert abs(t - t_want) < 1e-6 * t_want
+        assert abs(p - p_want) < 2e-5 * p_want, (p, p_want)
+
+
+def test_refractivity_slope_is_derivative():
+    for prof in (ap.us1976(), ap.exponential()):
+        h = np.array([0.5, 5.0, 15.0, 25.0, 40.0, 60.0, 80.0])
+        e = 1e-4
+        num = (prof.refractivity(h + e) - prof.refractivity(h - e)) / (2 * e)
+        assert np.allclose(num, prof.refractivity_slope(h), rtol=1e-6)
+
+
+def test_edlen_and_rayleigh_depth():
+    # Edlen (1966) standard air at 550 nm; Bodhaine et al. (1999) Table 3:
+    # Rayleigh optical depth 0.0973 at 550 nm (sea level, 1013.25 hPa).
+    assert abs(ap.N_S_550 - 2.7784e-4) < 2e-8
+    tau = ap.us1976().vertical_optical_depth(550.0)
+    assert abs(tau[0] - 0.0973) < 0.0015
+    assert 0.02 < tau[1] < 0.035        # ozone, Chappuis band at 550 nm, 300 DU
+
+
+# ---------------------------------------------------------------- bending
+
+def test_thin_exponential_closed_form():
+    # alpha -> N0 sqrt(2 pi r0 / H) (1 - H / (8 r0)) as N0 -> 0 (leading terms
+    # of the refraction integral's asymptotic expansion for r0 >> H).
+    for H in (6.0, 8.0):
+        prof = ap.exponential(1e-8, H, extinction=False)
+        h0 = np.array([0.0, 20.0])
+        _, alpha, _ = ar.trace(prof, h0)
+        r0 = prof.earth_radius_km + h0
+        want = prof.refractivity(h0) * np.sqrt(2 * np.pi * r0 / H) * (1 - H / (8 * r0))
+        assert np.all(np.abs(alpha / want - 1) < 2e-5), alpha / want
+
+
+def test_grazing_bending_standard_atmosphere():
+    # A ray grazing the surface is bent ~1.1-1.2 deg in all, twice the
+    # horizontal refraction (~34-35 arcmin).
+    _, alpha, _ = ar.trace(ap.us1976(), [0.0])
+    assert 1.05 < np.degrees(alpha[0]) < 1.25
+
+
+def test_quadrature_converged():
+    prof = ap.us1976()
+    h0 = [0.0, 10.0, 11.0 - 1e-3, 30.0, 70.0]
+    _, a1, c1 = ar.trace(prof, h0, nodes=12)
+    _, a2, c2 = ar.trace(prof, h0, nodes=48)
+    assert np.allclose(a1, a2, rtol=1e-9)
+    assert np.allclose(c1, c2, rtol=1e-8)
+
+
+def test_shells_converge_to_continuous():
+    # Constant-index shells: the bending of a ray jumps by ~2 sqrt(2 dn) where
+    # it grazes a boundary, so single rays converge slowly and erratically;
+    # the mean over many rays converges (~K^-1/2).
+    prof = ap.us1976()
+    h0 = np.linspace(10.0, 40.0, 301)
+    b, alpha, _ = ar.trace(prof, h0)
+    errs = []
+    for K in (50, 400, 3200):
+        radii, idx = ar.shell_model(prof, K)
+        a_sh, hits = ar.shell_bending(radii, idx, b)
+        assert not np.any(hits)
+        errs.append(np.mean(np.abs(a_sh / alpha - 1)))
+    assert errs[0] > errs[1] > errs[2]
+    # K^-1/2: 64 times more shells, ~8 times smaller mean error (measured 8.7)
+    assert 5.0 < errs[0] / errs[2] < 12.0
+    assert errs[2] < 0.04
+
+
+def test_shell_bending_matches_tracer():
+    # The analytic shell formula against bake.shells' vector-Snell tracer.
+    prof = ap.us1976()
+    radii, idx = ar.shell_model(prof, 40)
+    atm = shells.Atmosphere(prof.earth_radius_km, radii[1:], idx)
+    b = prof.earth_radius_km + np.array([3.0, 17.5, 44.0, 90.0])
+    x0 = -2.0 * radii[-1]
+    origins = np.stack([np.full(b.size, x0), b, np.zeros(b.size)], axis=1)
+    dirs = np.tile([1.0, 0.0, 0.0], (b.size, 1))
+    res = shells.trace(origins, dirs, atm)
+    got = np.arctan2(-res.dir[:, 1], res.dir[:, 0])
+    want, hits = ar.shell_bending(radii, idx, b)
+    assert not np.any(hits)
+    assert np.allclose(got, want, rtol=1e-7, atol=1e-12)
+
+
+# ---------------------------------------------------------------- transmission
+
+def test_transmission_limits(rays_default, rays_seed):
+    assert np.all(rays_seed.transmission == 1.0)
+    T = rays_default.transmission
+    assert np.all((T > 0) & (T <= 1 + 1e-12))
+    # grazing paths at 10 km: several Rayleigh optical depths
+    assert T[0] < 0.1
+    assert T[-1] > 0.999
+    # monotone in the ray's altitude (every absorber falls off upwards
+    # above 30 km)
+    hi = rays_default.h0 > 30
+    assert np.all(np.diff(T[hi]) >= -1e-12)
+
+
+def test_airmass_of_grazing_ray():
+    # Rayleigh column along the bent grazing path / vertical column: the
+    # Chapman grazing factor ~ sqrt(2 pi R / H) for an exponential
+    # atmosphere without refraction (refraction lengthens it a little).
+    prof = ap.exponential(1e-9, 8.0, extinction=True)
+    _, _, cols = ar.trace(prof, [0.0])
+    vertical = ap.N_AIR_S * 8.0e3
+    ratio = cols[0, 0] / vertical
+    want = np.sqrt(2 * np.pi * prof.earth_radius_km / 8.0)
+    assert abs(ratio / want - 1) < 2e-3
+
+
+# ---------------------------------------------------------------- irradiance behind the Earth
+
+def test_no_atmosphere_is_geometric():
+    for z in (2000.0, 42164.0, 384400.0):
+        a = z * ar.SUN_RADIUS_KM / ar.AU_KM
+        rc = ap.R_EARTH_KM * (1 + z / ar.AU_KM)
+        rho = rc + np.linspace(-1.1 * a, 1.1 * a, 7)
+        F, _ = ar.fraction(None, z, rho, law=ar.UNIFORM)
+        G = ar.fraction_geometric_planar(z, rho)
+        assert np.max(np.abs(F - G)) < 2e-6
+
+
+def test_limb_darkened_disc_by_brute_force():
+    # Independent 2-D midpoint quadrature over the solar disc.
+    z = 42164.0
+    a = z * ar.SUN_RADIUS_KM / ar.AU_KM
+    rc = ap.R_EARTH_KM * (1 + z / ar.AU_KM)
+    n = 800
+    x = (np.arange(n) + 0.5) / n * 2 - 1
+    X, Y = np.meshgrid(x, x)
+    r2 = X ** 2 + Y ** 2
+    inside = r2 < 1
+    mu = np.sqrt(np.clip(1 - r2, 0, 1))
+    I = np.polynomial.polynomial.polyval(mu, ar.NL94_559) * inside
+    for off in (-0.6, 0.0, 0.5):
+        rho = rc + off * a
+        px = rho + a * X
+        py = a * Y
+        vis = np.hypot(px, py) > rc
+        want = np.sum(I * vis) / np.sum(I)
+        got, _ = ar.fraction(None, z, [rho])
+        assert abs(got[0] - want) < 2e-3, (off, got, want)
+
+
+def test_energy_bookkeeping_seed_mode(rays_seed):
+    # Refraction only: the light missing behind the Earth, integrated over
+    # the plane at z, equals the flux the Earth itself intercepts,
+    # pi b_min^2 (1 + z/d)^2 with b_min the grazing ray's impact parameter.
+    z = 42164.0
+    a = z * ar.SUN_RADIUS_KM / ar.AU_KM
+    rho = np.linspace(0.0, ap.R_EARTH_KM + a + 150.0, 1500)
+    F, _ = ar.fraction(rays_seed, z, rho, want_psi=False)
+    deficit = np.trapezoid((1 - F) * 2 * np.pi * rho, rho)
+    want = np.pi * (rays_seed.b[0] * (1 + z / ar.AU_KM)) ** 2
+    assert abs(deficit / want - 1) < 2e-3, deficit / want
+
+
+def test_extinction_darkens_shadow(rays_default, rays_seed):
+    z = 384400.0
+    rho = np.array([2500.0, 4000.0])
+    Fe, _ = ar.fraction(rays_default, z, rho)
+    Fs, _ = ar.fraction(rays_seed, z, rho)
+    assert np.all(Fe < Fs)
+    # totally eclipsed Moon: ~9-12 magnitudes fainter than full (clear air)
+    dm = -2.5 * np.log10(Fe)
+    assert np.all((dm > 7) & (dm < 13))
+
+
+# ---------------------------------------------------------------- table
+
+def test_table_provenance_and_size():
+    with open(os.path.join(ROOT, "tables", "oi_atm_table.json")) as f:
+        meta = json.load(f)
+    assert meta["bytes"] <= 16 * 1024
+    assert meta["measured_error"]["max_abs_error"] < 0.01
+
+
+def test_table_lookup_against_reference(rays_default):
+    """A fresh small sample (another seed than the bake's) stays within the
+    error the provenance states."""
+    import importlib
+    tab = importlib.import_module("bake.atm_table")
+    # read the committed table back from its C source
+    src = open(os.path.join(ROOT, "tables", "oi_atm_table.c")).read()
+
+    def arr(name):
+        body = src.split(name)[1].split("{", 1)[1].split("}", 1)[0]
+        return np.array([float(v.strip().rstrip("f")) for v in body.split(",") if v.strip()])
+
+    q = arr("oi__atm_q[").reshape(1, tab.NZ, tab.NT)
+    psi = arr("oi__atm_psi[").reshape(1, tab.NZ, tab.NT)
+    with open(os.path.join(ROOT, "tables", "oi_atm_table.json")) as f:
+        meta = json.load(f)
+    alpha_c = meta["constants"]["ALPHA_C_RAD"]
+    err, _ = tab.measure(rays_default, q, psi, alpha_c, 10.0, n=40, seed=99)
+    assert err["max_abs_error"] < 1.5 * meta["measured_error"]["max_abs_error"] + 1e-3
