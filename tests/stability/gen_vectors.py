@@ -39,6 +39,8 @@ import sys
 import mpmath as mp
 import numpy as np
 
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
+
 GEN_VERSION = 1
 MP_DPS = 60
 EPS_MULT = 16
@@ -255,8 +257,12 @@ class Table:
         assert len(ins) == self.nin and len(want) == self.nout
         self.rows[prec].append((ins, want, sp, label, region, region_sure))
 
+    extra = ""
+
     def emit(self):
         lines = [f"/* {self.name}: {self.doc} */"]
+        if self.extra:
+            lines.append(self.extra)
         for prec in ("d", "f"):
             lines.append(f"static const stab_vec stab_{self.name}_{prec}[] = {{")
             for ins, want, sp, label, region, sure in self.rows[prec]:
@@ -596,8 +602,147 @@ def suite_illuminate():
     return t
 
 
+# ---------------------------------------------------------------- earthshine table
+
+def earthshine_ref(theta, x):
+    """phi and psi of a uniform Lambertian sphere (unit albedo, unit solar
+    irradiance) seen from distance 1/x (radius 1), theta the Sun-point angle
+    at the centre. Independent of bake/reference.py: polar angle alpha about
+    the sub-point integrated by mp.quad (breakpoints at the terminator tangency
+    and geometric steps from the altitude's scale), the azimuth integral over
+    the lit arc in closed form:
+        int max(0, A cos b + B) db, int max(0, A cos b + B) cos b db,
+    A = sin(alpha) sin(theta), B = cos(alpha) cos(theta)."""
+    old = mp.mp.dps
+    mp.mp.dps = 30
+    try:
+        theta, x = mp.mpf(theta), mp.mpf(x)
+        r = 1 / x
+        amax = mp.acos(x)
+        st_, ct_ = mp.sin(theta), mp.cos(theta)
+
+        def inner(a):
+            A, B = mp.sin(a) * st_, mp.cos(a) * ct_
+            if B >= A:
+                return 2 * PI * B, PI * A
+            if B <= -A:
+                return mp.mpf(0), mp.mpf(0)
+            b0 = mp.acos(-B / A)
+            return (2 * (B * b0 + A * mp.sin(b0)),
+                    A * (b0 + mp.sin(b0) * mp.cos(b0)) + 2 * B * mp.sin(b0))
+
+        def f(a, k):
+            d = mp.sqrt(1 + r * r - 2 * r * mp.cos(a))
+            w = mp.sin(a) * (r * mp.cos(a) - 1) / d ** 3 / PI  # dA cos(e) / (pi d^2)
+            i0, i1 = inner(a)
+            if k == 0:
+                return w * i0                        # phi
+            if k == 1:
+                return w * i1 * mp.sin(a) / d        # flux towards the Sun side
+            return w * i0 * (r - mp.cos(a)) / d      # flux towards the nadir
+
+        pts, s_ = [mp.mpf(0)], r - 1
+        while s_ < amax:
+            pts.append(s_)
+            s_ *= 8
+        bp = abs(PI / 2 - theta)
+        pts = sorted(set(pts + ([bp] if 0 < bp < amax else []))) + [amax]
+        phi = mp.quad(lambda a: f(a, 0), pts)
+        if phi <= 0:
+            return mp.mpf(0), mp.mpf(0)
+        fx = mp.quad(lambda a: f(a, 1), pts)
+        fn = mp.quad(lambda a: f(a, 2), pts)
+        return phi, mp.atan2(fx, fn)
+    finally:
+        mp.mp.dps = old
+
+
+def read_table_grid(path):
+    import re
+    txt = open(path).read()
+    g = {}
+    for key in ("w_min", "w_max"):
+        g[key] = float(re.search(r"\.%s = ([0-9.eE+-]+)," % key, txt).group(1))
+    for key in ("N_LIT", "N_TERM", "N_ALT"):
+        g[key.lower()] = int(re.search(r"#define OI_EARTH_DIFFUSE_%s (\d+)" % key,
+                                       open(path[:-2] + ".h").read()).group(1))
+    return g
+
+
+TABLE_C = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))),
+                       "tables", "oi_earth_diffuse.c")
+
+
+def suite_earth_table():
+    """oi_earthshine with the default table at its grid nodes (error: the
+    float32 storage only) and at its edges (the table's documented goal)."""
+    t = Table("earth_table", 2, 3,
+              "in: theta (rad), h (km); want: phi, psi of oi_earthshine (default table), "
+              "phi(0, h) (the scale of the table's goal); label 'node' = a grid node")
+    g = read_table_grid(TABLE_C)
+    t.extra = ("/* the grid the node vectors were made for (tables/oi_earth_diffuse.c) */\n"
+               "#define STAB_ES_N_LIT %d\n#define STAB_ES_N_TERM %d\n#define STAB_ES_N_ALT %d\n"
+               "#define STAB_ES_W_MIN %s\n#define STAB_ES_W_MAX %s" %
+               (g["n_lit"], g["n_term"], g["n_alt"], repr(g["w_min"]), repr(g["w_max"])))
+    Re = R_EARTH
+    nl, nt, na = g["n_lit"], g["n_term"], g["n_alt"]
+    ws = [mp.mpf(g["w_min"]) + (mp.mpf(g["w_max"]) - mp.mpf(g["w_min"])) * j / (na - 1)
+          for j in range(na)]
+    cases = []
+    for j in sorted(set([0, 1, 2, na // 4, na // 2, 3 * na // 4, na - 3, na - 2])):
+        w = ws[j]
+        h = Re / mp.cos(w) - Re
+        for i in sorted(set([0, 1, nl // 2, nl - 2])):
+            cases.append(("node lit i=%d j=%d" % (i, j), (PI / 2 - w) * i / (nl - 1), h))
+        for i in sorted(set([0, 1, nt // 4, nt // 2, 3 * nt // 4, nt - 2, nt - 1])):
+            cases.append(("node term i=%d j=%d" % (i, j), PI / 2 - w + 2 * w * i / (nt - 1), h))
+    # edges: the bottom of the table, theta exactly 0, pi/2, pi, the segment
+    # boundaries, between nodes, and far away
+    hb = Re / mp.cos(ws[0]) - Re
+    for h, hl in ((hb, "bottom"), (hb * (1 + mp.mpf("1e-9")), "bottom+"), (mp.mpf(400), "400"),
+                  (mp.mpf(35786), "GEO"), (mp.mpf("1e7"), "1e7"), (mp.mpf("1e9"), "1e9")):
+        w = mp.acos(Re / (Re + h))
+        for th, tl in ((mp.mpf(0), "0"), (PI / 2, "pi/2"), (PI, "pi"), (PI / 2 - w, "pi/2-w"),
+                       (PI / 2 + w, "pi/2+w"), (PI / 2 + w * mp.mpf("0.999"), "pi/2+0.999w"),
+                       (mp.mpf("0.7"), "0.7"), (mp.mpf("1.9"), "1.9")):
+            cases.append(("edge h=%s theta=%s" % (hl, tl), th, h))
+    from bake.reference import phi_psi_reference  # conditioning term only
+    phi0_cache = {}
+
+    for prec in ("d", "f"):
+        eps = EPS_MULT * PRECISIONS[prec]["u"]
+        for label, th, h in cases:
+            x = rnd_vec([th, h], prec)
+            if x[0] > PI:
+                x[0] = rnd(PI, prec) if rnd(PI, prec) <= PI else x[0]
+            xv = Re / (Re + x[1])
+            phi, psi = earthshine_ref(min(x[0], PI), xv)
+            if xv not in phi0_cache:
+                phi0_cache[xv] = earthshine_ref(0, xv)[0]
+            phi0 = phi0_cache[xv]
+            # spread from the numpy quadrature of bake/reference.py (1e-12):
+            # it only sizes the tolerance for the inputs' conditioning
+            sp = [mp.mpf(0), mp.mpf(0), mp.mpf(0)]
+            a0, b0 = phi_psi_reference(np.array([float(min(x[0], PI))]), np.array([float(xv)]))
+            for i in range(2):
+                if x[i] == 0:
+                    continue
+                worst = [0.0, 0.0]
+                for sg in (1, -1):
+                    y = [float(v) for v in x]
+                    y[i] *= 1 + sg * float(eps)
+                    yth = min(max(y[0], 0.0), float(PI))
+                    a, b = phi_psi_reference(np.array([yth]), np.array([float(Re / (Re + y[1]))]))
+                    worst[0] = max(worst[0], abs(a[0] - a0[0]))
+                    worst[1] = max(worst[1], abs(b[0] - b0[0]))
+                sp[0] += mp.mpf(worst[0])
+                sp[1] += mp.mpf(worst[1])
+            t.add(prec, x, [phi, psi, phi0], sp, label)
+    return t
+
+
 SUITES = [suite_phase, suite_moon, suite_angle, suite_overlap, suite_shadow, suite_magnitude,
-          suite_earth_lambert, suite_illuminate]
+          suite_earth_lambert, suite_illuminate, suite_earth_table]
 
 
 def main():
