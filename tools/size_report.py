@@ -135,9 +135,8 @@ def main():
                 print("%s.incomplete %d functions  # stubs linked: %s" % (p, len(missing), " ".join(missing)))
             if cfg.startswith("m4f"):
                 soft = sorted({n.split(".")[-1] for o, n in extra if o == "libgcc" and "__aeabi_d" in n})
-                if soft:
-                    print("%s.soft_double_helpers %d functions  # double arithmetic in the float build: %s"
-                          % (p, len(soft), " ".join(soft)))
+                print("%s.soft_double_helpers %d functions  # software double arithmetic linked into the "
+                      "single-precision build%s" % (p, len(soft), (": " + " ".join(soft)) if soft else ""))
             if s == "full":
                 for mem in sorted(members):
                     print("%s.lib.member.%s %d bytes" % (p, mem, members[mem]))
