@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import re
 import sys
 import time
 import traceback
@@ -27,6 +28,20 @@ SECTIONS = [
     ("bake.report_atm", "Atmosphere"),
     ("bake.report_perf", "Performance"),
 ]
+
+
+def _fix_links(text: str, figdir: Path) -> str:
+    """Make image/file links point into report/ (relative to docs/report.md):
+    absolute paths into figdir, and bare names of files that exist there."""
+    text = text.replace(str(figdir.resolve()) + "/", "report/").replace(str(figdir) + "/", "report/")
+
+    def bare(m):
+        name = m.group(2)
+        if "/" not in name and ":" not in name and (figdir / name).is_file():
+            return f"{m.group(1)}(report/{name})"
+        return m.group(0)
+
+    return re.sub(r"(!?\[[^\]]*\])\(([^)\s]+)\)", bare, text)
 
 
 def build(out: Path, only=None, strict: bool = False) -> int:
@@ -61,7 +76,7 @@ def build(out: Path, only=None, strict: bool = False) -> int:
             body.append(f"## {title}\n\n**Section failed:**\n\n```\n{tb}```\n")
             continue
         dt = time.perf_counter() - t0
-        text = text.replace(str(figdir.resolve()) + "/", "report/").replace(str(figdir) + "/", "report/")
+        text = _fix_links(text, figdir)
         parts.append(f"- {title} (`{mod}`, {dt:.0f} s)")
         body.append(text.rstrip() + "\n")
         print(f"report: {mod} done in {dt:.1f} s", file=sys.stderr)
