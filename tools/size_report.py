@@ -87,8 +87,10 @@ def parse_map(path):
             totals[key] = totals.get(key, 0) + size
             if owner == "lib":
                 members[member] = members.get(member, 0) + size
-            if owner in ("libgcc", "stubs"):
+            if owner == "stubs":
                 extra.append((owner, name))
+            if owner == "libgcc":
+                extra.append((owner, member))
             continue
         m = NAME_ONLY.match(line)
         if m and not m.group(1).startswith("*"):
@@ -134,7 +136,7 @@ def main():
                 missing = sorted({n.split(".")[-1] for o, n in extra if o == "stubs" and n.startswith(".text.")})
                 print("%s.incomplete %d functions  # stubs linked: %s" % (p, len(missing), " ".join(missing)))
             if cfg.startswith("m4f"):
-                soft = sorted({n.split(".")[-1] for o, n in extra if o == "libgcc" and "__aeabi_d" in n})
+                soft = sorted({n for o, n in extra if o == "libgcc" and re.search(r"df|dd|__aeabi_d", n)})
                 print("%s.soft_double_helpers %d functions  # software double arithmetic linked into the "
                       "single-precision build%s" % (p, len(soft), (": " + " ".join(soft)) if soft else ""))
             if s == "full":
