@@ -221,20 +221,24 @@ def section(outdir) -> str:
     h0 = np.linspace(10.0, 40.0, 301)
     b, alpha, _ = ar.trace(seedp, h0)
     rows = []
-    for K in (25, 50, 100, 400, 1600, 6400):
-        radii, idx = ar.shell_model(seedp, K)
-        a_sh, _ = ar.shell_bending(radii, idx, b)
-        e = a_sh / alpha - 1
-        bb = R + np.linspace(0.0, 100.0, 20001)
-        amax, _ = ar.shell_bending(radii, idx, bb)
-        rows.append((K, np.mean(np.abs(e)), np.mean(e), np.max(np.abs(e)), np.degrees(np.max(amax))))
+    for spacing in ("uniform", "refractivity"):
+        for K in (25, 50, 100, 400, 1600, 6400):
+            radii, idx = ar.shell_model(seedp, K, spacing)
+            a_sh, _ = ar.shell_bending(radii, idx, b)
+            e = a_sh / alpha - 1
+            bb = R + np.linspace(0.0, 100.0, 20001)
+            amax, _ = ar.shell_bending(radii, idx, bb)
+            rows.append((spacing, K, np.mean(np.abs(e)), np.mean(e), np.max(np.abs(e)),
+                         np.degrees(np.max(amax))))
     out.append("### The seed's nested shells against the continuous profile\n")
     out.append("Bending of rays with lowest altitude 10-40 km through K shells of constant index (uniform "
-               "in altitude, each the mean index of its layer; Snell at each boundary, "
+               "in altitude, or at equal steps of refractivity as bake/shells.py's default; each the mean index "
+               "of its layer; Snell at each boundary, "
                "`atm_rays.shell_bending`, checked against `bake/shells.py`'s tracer):\n")
-    out.append("| K | mean abs error | mean error | max abs error | largest bending of any ray |\n|---|---|---|---|---|")
-    for K, m1, m2, m3, amx in rows:
-        out.append(f"| {K} | {100 * m1:.1f} % | {100 * m2:+.1f} % | {100 * m3:.0f} % | {amx:.2f} deg |")
+    out.append("| spacing | K | mean abs error | mean error | max abs error | largest bending of any ray |"
+               "\n|---|---|---|---|---|---|")
+    for sp, K, m1, m2, m3, amx in rows:
+        out.append(f"| {sp} | {K} | {100 * m1:.1f} % | {100 * m2:+.1f} % | {100 * m3:.0f} % | {amx:.2f} deg |")
     _, ag, _ = ar.trace(seedp, [0.0])
     out.append(f"\nContinuous profile: largest bending {np.degrees(ag[0]):.2f} deg (the grazing ray). "
                "A ray grazing a shell boundary from above enters the next shell at grazing incidence and is "
