@@ -134,3 +134,12 @@ $(ORI_TEST_SO): $(RT_SRC) tests/stability/ori_test_abi.c $(wildcard include/*.h 
 ori-test-so: $(ORI_TEST_SO)
 test-py: $(ORI_TEST_SO)
 .PHONY: ori-test-so
+
+# ---- the worst-error table of docs/stability.md, from the stability suite
+stability-report: $(BUILDDIR)/tests/double/test_stability $(BUILDDIR)/tests/float/test_stability deps-py ## rewrite the table in docs/stability.md
+	BUILDDIR=$(BUILDDIR) $(PY) tests/stability/report.py
+
+# regenerate the mpmath test vectors (about two minutes)
+stability-vectors: deps-py ## regenerate tests/stability/vectors.h (mpmath)
+	$(PY) tests/stability/gen_vectors.py
+.PHONY: stability-report stability-vectors

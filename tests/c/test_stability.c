@@ -198,7 +198,7 @@ static const known_issue KNOWN[] = {
      * cancelling near the umbra edge (4% error at F = 2e-15, 2% at 3.6e-6 in
      * single), the 16-point limb-darkening rings (3e-10), the overlap of two
      * hemispheres (5.2 for pi) and of caps beyond a hemisphere. */
-    {NULL, NULL, NULL, 0, 0, NULL} /* end */
+    {"", NULL, "", 0, 0, "no entry: matches no table"}
 };
 
 static int strict_mode(void)
@@ -211,7 +211,7 @@ static const known_issue *find_known(const char *table, const char *output, cons
 {
     size_t i;
     if (strict_mode()) return NULL;
-    for (i = 0; KNOWN[i].table != NULL; i++) {
+    for (i = 0; i < sizeof KNOWN / sizeof KNOWN[0]; i++) {
         const known_issue *k = &KNOWN[i];
         if (strcmp(k->table, table) != 0) continue;
         if (k->output != NULL && strcmp(k->output, output) != 0) continue;
