@@ -272,13 +272,14 @@ def gather_function(radiance, theta, r_km, b_max, atm: Atmosphere | None = None,
     return phi.reshape(shape), psi.reshape(shape)
 
 
-def gather(maps: PhotonMaps, theta, r_km, mode: str = "shell", interp: str = "linear",
+def gather(maps: PhotonMaps, theta, r_km, mode: str = "surface", interp: str = "linear",
            n_s: int = 96, n_beta: int = 96):
     """Pass 2: final gathering from points (theta, r_km) (broadcast).
 
     mode "shell" (the seed's): read the outer-shell map as a Lambertian
-    emitter, L = M / pi. mode "surface": trace gathering rays through the
-    shells to the ground, L = M_surface / (pi n1^2). interp: "linear"
+    emitter, L = M / pi. mode "surface" (default): trace gathering rays
+    through the shells to the ground, L = M_surface / (pi n1^2). Without
+    shells both are the same computation. interp: "linear"
     between bin centres or "nearest" (the seed's pixel lookup).
     Returns (phi, psi): scalar irradiance per unit E0 and albedo, and the mean
     incidence angle from the nadir towards the Sun side (rad).
@@ -298,7 +299,7 @@ def gather(maps: PhotonMaps, theta, r_km, mode: str = "shell", interp: str = "li
 
 
 def bake_phi(theta, x, n_photons: int = 4_000_000, seed: int = 1, atm: Atmosphere | None = None,
-             n_bins: int = DEFAULT_N_BINS, mode: str = "shell", interp: str = "linear",
+             n_bins: int = DEFAULT_N_BINS, mode: str = "surface", interp: str = "linear",
              n_s: int = 96, n_beta: int = 96, sampling: str = "random", progress=None,
              return_maps: bool = False):
     """phi(theta, x) and psi(theta, x) by photon mapping (x = R/r, broadcast
