@@ -260,10 +260,11 @@ def fraction(rays: Rays | None, z, rho_p, d_sun=AU_KM, law=NL94_559,
             m = (np.abs(np.abs(rho) - rp) < a) & (wgt > 0)
             if not np.any(m):
                 continue
-            A = _arc(rho[m, None], rp, aj[None, :]) @ wts      # (nm,)
+            arcs = _arc(rho[m, None], rp, aj[None, :])          # (nm, n_discs)
+            A = arcs @ wts
             F[i] += np.sum(wgt[m] * A) / norm
             if want_psi:
-                S = np.sign(rho[m]) * (2 * np.sin(_arc(rho[m, None], rp, aj[None, :]) / 2) @ wts)
+                S = np.sign(rho[m]) * (2 * np.sin(arcs / 2) @ wts)
                 # mean 'from' direction, transverse part along e_x (see module notes)
                 Fx[i] += np.sum(wgt[m] * S * (np.abs(rho[m]) / z * np.sign(rho[m]) + g[m])) / norm
     else:
@@ -281,10 +282,11 @@ def fraction(rays: Rays | None, z, rho_p, d_sun=AU_KM, law=NL94_559,
         th, wt = _gl(n_top, 0.0, np.pi / 2)
         r = lo + (hi - lo) * np.sin(th) ** 2
         jac = (hi - lo) * np.sin(2 * th) * wt
-        A = _arc(r[:, None], rp, aj[None, :]) @ wts
+        arcs = _arc(r[:, None], rp, aj[None, :])
+        A = arcs @ wts
         F[i] += np.sum(jac * r * A) / norm
         if want_psi:
-            S = 2 * np.sin(_arc(r[:, None], rp, aj[None, :]) / 2) @ wts
+            S = 2 * np.sin(arcs / 2) @ wts
             bq = r / (1.0 + z / d_sun)
             Fx[i] += np.sum(jac * r * S * (r / z - bq / d_sun)) / norm
     psi = np.zeros_like(F)

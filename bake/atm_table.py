@@ -4,24 +4,27 @@
 fraction_atm and the light's mean direction psi (bake.atm_rays.fraction) on a
 grid in coordinates that follow the shadow:
 
-  u = ln(z / Z_MIN) / ln(Z_MAX / Z_MIN) in [0, 1]: z the distance behind the
-      Earth's centre along the anti-Sun axis (km);
-  t = (rho - rho_lo) / (rho_hi - rho_lo) in [0, 1]: rho the distance from the
-      axis, between the deepest point any unblocked refracted ray reaches
-      and the outer edge of the region the atmosphere touches:
-        rho_c  = R (1 + z/d)                 the geometric shadow's radius,
-        a      = z R_sun / d                 the solar disc's radius there,
-        rho_lo = max(0, rho_c - a - z ALPHA_REACH),
-        rho_hi = rho_c + a + TOP_KM;
-      (d the Sun's distance: the window moves and scales with the real
-      penumbra, so the Sun's yearly distance change is followed.)
-  s = (d - D_MIN) / (D_MAX - D_MIN): the Sun's distance, two slices
-      (perihelion and aphelion), linear in between.
+  rows: z, the distance behind the Earth's centre along the anti-Sun axis,
+      NZ rows log-spaced from Z_MIN to Z_MAX;
+  along rho (distance from the axis), a window between
+        rc     = R (1 + z/d)          the geometric shadow's radius,
+        a      = z R_sun / d          the solar disc's radius there,
+        rho_lo = M(v_lo), M(v_lo) = max(0, M(h_c) - 1.2 a): below it no
+                 unblocked refracted ray arrives and F = 0 exactly,
+        rho_hi = rc + a + TOP_KM: above it the geometric fraction (1),
+      with M(v) = rc + v - z alpha_c exp(-(v - h_c) / H_A) the image radius
+      of a ray of lowest altitude v in an exponential model of the bending
+      (alpha_c the bending at the cloud top h_c). Segment A: NA nodes uniform
+      in v from v_lo to V_MID (rho = M(v): follows the refracted image of
+      each altitude, whatever z); segment B: NB nodes uniform in rho from
+      M(V_MID) to rho_hi. d (the Sun's distance) moves and scales the window
+      with the real penumbra; the table itself is baked at 1 AU and its
+      measured error includes d over a year.
 
-Stored: q = log10(F + F_FLOOR) and psi (rad), float32, bilinear in (u, t),
-linear in s. Below rho_lo F is 0 exactly (no unblocked ray is bent that far),
-above rho_hi it is the geometric fraction (1 there). Outside [Z_MIN, Z_MAX]
-the runtime falls back to the geometric fraction with a warning.
+Stored: q = log10(F + F_FLOOR) and psi (rad) as 16-bit codes, bilinear in
+(node row, node index). Outside [Z_MIN, Z_MAX] (inside the reach) the runtime
+falls back to the geometric fraction with a warning. The C lookup
+(src/atmosphere.c) repeats `lookup` below step by step (same bisection count).
 """
 from __future__ import annotations
 
@@ -41,10 +44,12 @@ D_MAX = 1.0168 * ar.AU_KM   # aphelion (~1.01671 AU)
 F_FLOOR = 1e-8
 H_A = 6.5                # km: e-folding of the bending in the coordinate map
 V_MID = 60.0             # km: ray altitude where segment A hands over to B
-NZ, NA, NB = 40, 40, 11  # rows in z; nodes in segment A (incl. both ends), B
+NZ, NA, NB = 48, 72, 13  # rows in z; nodes in segment A (incl. both ends), B
 NT = NA + NB
 ND = 1
-TABLE_FORMAT = 1         # OI_ATM_TABLE_FORMAT in the generated header
+TABLE_FORMAT = 2         # OI_ATM_TABLE_FORMAT in the generated header
+Q_MIN, Q_MAX = np.log10(F_FLOOR), 1e-3   # range of the stored q (16-bit codes)
+U16 = 65535
 N_BISECT = 48
 
 
@@ -217,16 +222,33 @@ def measure(rays, q, psi, alpha_c, h_c, n=400, seed=1, progress=False):
     }, a
 
 
+# ---------------------------------------------------------------- quantisation
+
+def quantise(q, psi):
+    """16-bit codes of q (fixed range Q_MIN..Q_MAX) and psi (range from the
+    data, rounded outwards to 1e-3 rad), and the values they decode to:
+    value = min + scale * code. Returns (uq, up, q_dec, psi_dec, scales)."""
+    pmin = np.floor(psi.min() * 1e3) / 1e3
+    pmax = np.ceil(psi.max() * 1e3) / 1e3
+    if pmax <= pmin:
+        pmax = pmin + 1e-3
+    qs = (Q_MAX - Q_MIN) / U16
+    ps = (pmax - pmin) / U16
+    uq = np.clip(np.rint((np.clip(q, Q_MIN, Q_MAX) - Q_MIN) / qs), 0, U16).astype(np.uint16)
+    up = np.clip(np.rint((psi - pmin) / ps), 0, U16).astype(np.uint16)
+    return uq, up, Q_MIN + qs * uq, pmin + ps * up, {"Q_MIN": Q_MIN, "Q_SCALE": qs,
+                                                      "PSI_MIN": pmin, "PSI_SCALE": ps}
+
+
 # ---------------------------------------------------------------- emitter
 
 BASENAME = "oi_atm_table"
 
 
-def _c_floats(name, values, per_line=6):
-    from .emit import c_float, f32
-    vals = [c_float(v) for v in f32(values).ravel()]
+def _c_u16(name, values, per_line=12):
+    vals = ["%d" % int(v) for v in np.asarray(values).ravel()]
     lines = ["    " + ", ".join(vals[k:k + per_line]) + "," for k in range(0, len(vals), per_line)]
-    return "const float %s[%d] = {\n%s\n};\n" % (name, len(vals), "\n".join(lines))
+    return "const unsigned short %s[%d] = {\n%s\n};\n" % (name, len(vals), "\n".join(lines))
 
 
 def _c_double(v):
@@ -234,14 +256,13 @@ def _c_double(v):
     return c_double(v)
 
 
-def emit(outdir, q, psi, alpha_c, h_c, err, profile: ap.Profile):
+def emit(outdir, uq, up, scales, alpha_c, h_c, err, profile: ap.Profile):
     """Write tables/oi_atm_table.{c,h,json}: byte-for-byte reproducible."""
     from . import __version__
-    from .emit import f32
-    q32, p32 = f32(q[0]), f32(psi[0])
+    uq, up = uq[0], up[0]
     h = hashlib.sha256()
-    h.update(q32.astype("<f4").tobytes())
-    h.update(p32.astype("<f4").tobytes())
+    h.update(uq.astype("<u2").tobytes())
+    h.update(up.astype("<u2").tobytes())
     sha = h.hexdigest()
     consts = {
         "NZ": NZ, "NT": NT, "NA": NA, "NB": NB, "N_BISECT": N_BISECT,
@@ -251,6 +272,8 @@ def emit(outdir, q, psi, alpha_c, h_c, err, profile: ap.Profile):
         "ALPHA_C_RAD": alpha_c, "H_C_KM": h_c, "TOP_KM": profile.top_km,
         "F_FLOOR": F_FLOOR, "EARTH_RADIUS_KM": profile.earth_radius_km,
         "SUN_RADIUS_KM": ar.SUN_RADIUS_KM, "AU_KM": ar.AU_KM,
+        "Q_MIN": scales["Q_MIN"], "Q_SCALE": scales["Q_SCALE"],
+        "PSI_MIN_RAD": scales["PSI_MIN"], "PSI_SCALE_RAD": scales["PSI_SCALE"],
     }
     prov = [
         f"generator: bake.atm_table (orbillum bake {__version__}), table format {TABLE_FORMAT}",
@@ -266,13 +289,14 @@ def emit(outdir, q, psi, alpha_c, h_c, err, profile: ap.Profile):
         "  up to rc + a + top (see bake/atm_table.py); the Sun's distance enters through the window",
         "  (table baked at 1 AU).",
         "values: q = log10(F + F_FLOOR), psi (rad): mean direction of the light from the Sun's centre,",
-        "  positive away from the Earth's centre.",
+        "  positive away from the Earth's centre; stored as 16-bit codes, value = MIN + SCALE * code",
+        "  (q step 1.2e-4 dex, i.e. 2.8e-4 relative in F).",
         f"measured against bake.atm_rays.fraction at {err['n_points']} random off-grid points (seed 1,",
         "  z log-uniform, rho uniform along the nodes, d in [0.9832, 1.0168] AU), bilinear lookup:",
         f"  max |F error| {err['max_abs_error']:.3e}, rms {err['rms_abs_error']:.3e},",
         f"  max relative error where F > 1e-4: {err['max_rel_error_F_gt_1e-4']:.3e},",
         f"  max psi error where F > 1e-3: {err['max_psi_error_rad_F_gt_1e-3']:.3e} rad.",
-        f"payload sha256 (q then psi, little-endian float32): {sha}",
+        f"payload sha256 (q then psi codes, little-endian uint16): {sha}",
     ]
     guard = BASENAME.upper() + "_H"
     hdr = [
@@ -293,9 +317,10 @@ def emit(outdir, q, psi, alpha_c, h_c, err, profile: ap.Profile):
     hdr += [
         "",
         "#ifndef OI_NO_ATMOSPHERE",
-        "/* q = log10(fraction + OI_ATM_F_FLOOR) and psi (rad), row-major [NZ][NT]. */",
-        f"extern const float oi__atm_q[{NZ * NT}];",
-        f"extern const float oi__atm_psi[{NZ * NT}];",
+        "/* Codes of q = log10(fraction + OI_ATM_F_FLOOR) = OI_ATM_Q_MIN + OI_ATM_Q_SCALE * code",
+        " * and psi (rad) = OI_ATM_PSI_MIN_RAD + OI_ATM_PSI_SCALE_RAD * code, row-major [NZ][NT]. */",
+        f"extern const unsigned short oi__atm_q[{NZ * NT}];",
+        f"extern const unsigned short oi__atm_psi[{NZ * NT}];",
         "#endif",
         "",
         f"#endif /* {guard} */",
@@ -304,15 +329,15 @@ def emit(outdir, q, psi, alpha_c, h_c, err, profile: ap.Profile):
     src = ["/* SPDX-License-Identifier: MIT */", "/*"]
     src += [f" * {line}" for line in prov]
     src += [" */", f'#include "{BASENAME}.h"', "", "#ifndef OI_NO_ATMOSPHERE",
-            "#if OI_ATM_TABLE_FORMAT != 1",
+            f"#if OI_ATM_TABLE_FORMAT != {TABLE_FORMAT}",
             '#error "oi_atm_table: format mismatch: regenerate (make bake-atm)"',
-            "#endif", "", _c_floats("oi__atm_q", q32), _c_floats("oi__atm_psi", p32),
+            "#endif", "", _c_u16("oi__atm_q", uq), _c_u16("oi__atm_psi", up),
             "#else", "typedef int oi__atm_table_removed; /* no empty translation unit */",
             "#endif /* OI_NO_ATMOSPHERE */", ""]
     meta = {
         "generator": "bake.atm_table", "version": __version__, "table_format": TABLE_FORMAT,
         "grid": consts, "constants": reals, "measured_error": err, "sha256": sha,
-        "bytes": int(q32.nbytes + p32.nbytes),
+        "bytes": int(uq.nbytes + up.nbytes),
         "profile": {k: getattr(profile, k) for k in (
             "kind", "n0", "top_km", "extinction", "cloud_top_km", "ozone_du",
             "aer_trop_tau", "aer_strat_tau")},
@@ -341,8 +366,9 @@ def main(argv=None):
     profile = ap.us1976()
     rays = ar.make_rays(profile)
     q, psi, alpha_c, h_c = bake(rays, progress=True)
+    uq, up, q, psi, scales = quantise(q, psi)     # measure what the runtime stores
     err, _ = measure(rays, q, psi, alpha_c, h_c, n=args.measure, progress=True)
-    meta = emit(args.out, q, psi, alpha_c, h_c, err, profile)
+    meta = emit(args.out, uq, up, scales, alpha_c, h_c, err, profile)
     if args.vectors:
         write_vectors(args.vectors, rays, q, psi, alpha_c, h_c)
     print(f"atm table: {meta['bytes']} bytes, max |dF| {err['max_abs_error']:.2e}, "
@@ -388,6 +414,24 @@ def write_vectors(path, rays, q, psi, alpha_c, h_c, n_per_z=6, seed=7):
     lines += ["};", "", "#endif", ""]
     with open(path, "w") as f:
         f.write("\n".join(lines))
+
+
+def load_table(tables_dir="tables"):
+    """Read the committed table back from its generated C source and JSON:
+    (q, psi, alpha_c, h_c) decoded, shaped (1, NZ, NT), for the Python mirror."""
+    with open(os.path.join(tables_dir, BASENAME + ".json")) as f:
+        meta = json.load(f)
+    src = open(os.path.join(tables_dir, BASENAME + ".c")).read()
+    c = meta["constants"]
+    nz, nt = meta["grid"]["NZ"], meta["grid"]["NT"]
+
+    def codes(name):
+        body = src.split(name + "[")[1].split("{", 1)[1].split("}", 1)[0]
+        return np.array([int(v) for v in body.replace("\n", " ").split(",") if v.strip()], dtype=float)
+
+    q = c["Q_MIN"] + c["Q_SCALE"] * codes("oi__atm_q")
+    psi = c["PSI_MIN_RAD"] + c["PSI_SCALE_RAD"] * codes("oi__atm_psi")
+    return q.reshape(1, nz, nt), psi.reshape(1, nz, nt), c["ALPHA_C_RAD"], c["H_C_KM"]
 
 
 if __name__ == "__main__":

@@ -162,18 +162,10 @@ def section(outdir) -> str:
     F_seed = np.array([ar.fraction(rays_seed, zz, [rr], want_psi=False, n_mu=24)[0][0]
                        for zz, rr in zip(z, rh)])
     meta = json.load(open(os.path.join(ROOT, "tables", "oi_atm_table.json")))
-    src = open(os.path.join(ROOT, "tables", "oi_atm_table.c")).read()
-
-    def arr(name):
-        body = src.split(name)[1].split("{", 1)[1].split("}", 1)[0]
-        return np.array([float(v.strip().rstrip("f")) for v in body.split(",") if v.strip()])
-
-    q = arr("oi__atm_q[").reshape(1, at.NZ, at.NT)
-    psi_t = arr("oi__atm_psi[").reshape(1, at.NZ, at.NT)
-    alpha_c = meta["constants"]["ALPHA_C_RAD"]
+    q, psi_t, alpha_c, h_c = at.load_table(os.path.join(ROOT, "tables"))
     F_lut = []
     for zz, rr, fg in zip(z, rh, F_geo):
-        f, _, st = at.lookup(q, psi_t, alpha_c, 10.0, zz, rr, ar.AU_KM)
+        f, _, st = at.lookup(q, psi_t, alpha_c, h_c, zz, rr, ar.AU_KM)
         F_lut.append(fg if f is None else f)
     F_lut = np.array(F_lut)
 
@@ -322,7 +314,7 @@ def section(outdir) -> str:
     # ---------------------------------------------------------- 5. table
     out.append("### Runtime table\n")
     me = meta["measured_error"]
-    out.append(f"`tables/oi_atm_table.c`: {meta['bytes']} bytes (float32, {at.NZ} x {at.NT} x 2), "
+    out.append(f"`tables/oi_atm_table.c`: {meta['bytes']} bytes (16-bit codes, {at.NZ} x {at.NT} x 2), "
                f"z = {at.Z_MIN:g}..{at.Z_MAX:g} km behind the Earth, nodes following the shadow "
                "(bake/atm_table.py). Measured against the reference at "
                f"{me['n_points']} random off-grid points: max |dF| = {me['max_abs_error']:.2e}, "

@@ -9,7 +9,7 @@
 #include "oi_internal.h"
 #include "oi_atm_table.h"
 
-#if OI_ATM_TABLE_FORMAT != 1
+#if OI_ATM_TABLE_FORMAT != 2
 #error "atmosphere.c: oi_atm_table format mismatch: regenerate (make bake-atm)"
 #endif
 
@@ -44,11 +44,12 @@ static oi_real clamp01(oi_real x)
     return x < (oi_real)0 ? (oi_real)0 : (x > (oi_real)1 ? (oi_real)1 : x);
 }
 
-/* Bilinear interpolation of a [NZ][NT] float table. */
-static oi_real bilinear(const float *tab, int i, int j, oi_real fu, oi_real ft)
+/* Bilinear interpolation of a [NZ][NT] table of 16-bit codes (the decoding
+ * min + scale * code is linear, so it is applied after interpolating). */
+static oi_real bilinear(const unsigned short *tab, int i, int j, oi_real fu, oi_real ft)
 {
-    const float *r0 = tab + i * OI_ATM_NT + j;
-    const float *r1 = r0 + OI_ATM_NT;
+    const unsigned short *r0 = tab + i * OI_ATM_NT + j;
+    const unsigned short *r1 = r0 + OI_ATM_NT;
     oi_real a = ((oi_real)1 - ft) * (oi_real)r0[0] + ft * (oi_real)r0[1];
     oi_real b = ((oi_real)1 - ft) * (oi_real)r1[0] + ft * (oi_real)r1[1];
     return ((oi_real)1 - fu) * a + fu * b;
@@ -161,8 +162,9 @@ int oi__atm_fraction(const oi_real sun_km[3], const oi_real point_km[3], const o
             if (j > OI_ATM_NT - 2) j = OI_ATM_NT - 2;
             fu = iu - (oi_real)i;
             ft = it - (oi_real)j;
-            q = bilinear(oi__atm_q, i, j, fu, ft);
-            psi = bilinear(oi__atm_psi, i, j, fu, ft);
+            q = ATM_R(OI_ATM_Q_MIN) + ATM_R(OI_ATM_Q_SCALE) * bilinear(oi__atm_q, i, j, fu, ft);
+            psi = ATM_R(OI_ATM_PSI_MIN_RAD) +
+                  ATM_R(OI_ATM_PSI_SCALE_RAD) * bilinear(oi__atm_psi, i, j, fu, ft);
             f = OI_EXP(q * ATM_R(2.302585092994045684)) - ATM_R(OI_ATM_F_FLOOR);
             f = clamp01(f);
             if (m->limb_darkening != OI_LIMB_DARKENED) f = clamp01(f + (frac - frac_ld));

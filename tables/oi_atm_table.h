@@ -6,11 +6,11 @@
 #ifndef OI_ATM_TABLE_H
 #define OI_ATM_TABLE_H
 
-#define OI_ATM_TABLE_FORMAT 1
-#define OI_ATM_NZ (40)
-#define OI_ATM_NT (51)
-#define OI_ATM_NA (40)
-#define OI_ATM_NB (11)
+#define OI_ATM_TABLE_FORMAT 2
+#define OI_ATM_NZ (48)
+#define OI_ATM_NT (85)
+#define OI_ATM_NA (72)
+#define OI_ATM_NB (13)
 #define OI_ATM_N_BISECT (48)
 #define OI_ATM_Z_MIN_KM (500.0)
 #define OI_ATM_Z_MAX_KM (500000.0)
@@ -23,11 +23,16 @@
 #define OI_ATM_EARTH_RADIUS_KM (6378.1369999999997)
 #define OI_ATM_SUN_RADIUS_KM (695700.0)
 #define OI_ATM_AU_KM (149597870.69999999)
+#define OI_ATM_Q_MIN (-8.0)
+#define OI_ATM_Q_SCALE (0.00012208743419546807)
+#define OI_ATM_PSI_MIN_RAD (-0.001)
+#define OI_ATM_PSI_SCALE_RAD (1.9836728465705351e-07)
 
 #ifndef OI_NO_ATMOSPHERE
-/* q = log10(fraction + OI_ATM_F_FLOOR) and psi (rad), row-major [NZ][NT]. */
-extern const float oi__atm_q[2040];
-extern const float oi__atm_psi[2040];
+/* Codes of q = log10(fraction + OI_ATM_F_FLOOR) = OI_ATM_Q_MIN + OI_ATM_Q_SCALE * code
+ * and psi (rad) = OI_ATM_PSI_MIN_RAD + OI_ATM_PSI_SCALE_RAD * code, row-major [NZ][NT]. */
+extern const unsigned short oi__atm_q[4080];
+extern const unsigned short oi__atm_psi[4080];
 #endif
 
 #endif /* OI_ATM_TABLE_H */
