@@ -15,8 +15,8 @@ was given. The algorithms are independent of the library's:
 - Cap overlap and visible Sun fraction: numerical integration (tanh-sinh,
   mpmath.quad) over rings about the small cap's centre of the arc each ring
   has inside (outside) the other cap, split where rings start or stop being
-  cut; cross-checked against the textbook closed form
-  2[pi - acos(..) - cos r1 acos(..) - cos r2 acos(..)] at 45 digits.
+  cut; cross-checked against the closed form (Gauss-Bonnet on the lens)
+  2[pi - acos(..) - cos r1 acos(..) - cos r2 acos(..)] at 160 digits.
 - Limb-darkened fraction: the same ring integral weighted by the Neckel & Labs
   (1994) intensity I(mu) at mu = sqrt(1 - sin^2 rho / sin^2 r_sun).
 - Geometry: apparent radii asin(R/D) and the separation from acos of the
@@ -162,7 +162,7 @@ def overlap_quad(r1, r2, d):
 
 
 def overlap_closed(r1, r2, d):
-    """Textbook closed form (e.g. Tovchigrechko & Vakser 2001); it cancels
+    """Closed form from Gauss-Bonnet on the lens; it cancels
     badly for small caps, so it is evaluated at 160 digits."""
     with mp.workdps(160):
         return +_overlap_closed(mp.mpf(r1), mp.mpf(r2), mp.mpf(d))
@@ -350,6 +350,12 @@ def sun_cases():
             for k in range(1, 8 if full else 4):
                 seps.append(lo + (hi - lo) * k / (8 if full else 4))
             seps.append(hi * 3)
+            if full:
+                # the Earth's limb through (near) the Sun's centre: the
+                # limb-darkened rings' hardest case
+                for o in ["0", "1e-12", "-1e-12", "1e-9", "-1e-9", "1e-7", "-1e-7", "1e-6",
+                          "-1e-6", "1e-5", "-1e-5"]:
+                    seps.append(re_app + mp.mpf(o))
             for sp in seps:
                 if 0 < sp < PI:
                     s, p = point_for_sep(dist, r, sp)
