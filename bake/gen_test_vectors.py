@@ -38,6 +38,12 @@ def _points():
         for f in (-0.93, -0.61, -0.27, -0.05, 0.013, 0.07, 0.19, 0.33, 0.52, 0.71, 0.86, 0.97):
             th.append(math.pi / 2 + f * w)
             h.append(hk)
+    # where the default table is worst: the terminator crossing the nadir
+    # just above 100 km (theta slightly above 90 deg)
+    for k in range(24):
+        hk = 100.0 + 40.0 * rng.uniform()
+        th.append(math.pi / 2 + rng.uniform(0.0, 0.02))
+        h.append(hk)
     # named altitudes (ISS, SSO, GPS, GEO, lunar, Sun-Earth L2, far)
     for hk in (408.0, 786.0, 20200.0, 35786.0, 384400.0, 1.5e6, 1e9):
         for t in (0.0, 0.4, 1.1, 1.6, 2.2, 2.9, math.pi):

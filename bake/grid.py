@@ -239,7 +239,7 @@ def goal_score(approx, phi, phi0, rel_goal=1e-3, abs_frac=None, big_frac=0.01):
     return s, big
 
 
-def sample_points(spec, n_random, seed=12345):
+def sample_points(spec, n_random, seed=12345, refine=True):
     """Test points between the nodes: every cell centre of both segments, random
     points uniform in (v, w) per segment, random points uniform in (theta, w),
     and a dense band around the terminator theta = pi/2 +- w."""
@@ -260,6 +260,27 @@ def sample_points(spec, n_random, seed=12345):
         V, W = np.meshgrid(vc, wc, indexing="ij")
         add(V, W, seg)
         add(rng.uniform(0, 1, n_random), rng.uniform(spec.w_min, spec.w_max, n_random), seg)
+    # a 5 x 5 sub-grid in every terminator cell around the nadir crossing
+    # (v in [0.3, 0.8]) below 1000 km, where the error peaks in small spots
+    k_hi = int(np.searchsorted(w_n, w_from_h(1000.0))) if refine else 0
+    if k_hi > 0:
+        sub = (np.arange(5) + 0.5) / 5
+        vn = np.linspace(0, 1, spec.n_term)
+        cells_v = np.nonzero((vn[:-1] >= 0.3 - 1.0 / (spec.n_term - 1)) & (vn[1:] <= 0.8 + 1.0 / (spec.n_term - 1)))[0]
+        cells_w = np.arange(min(k_hi, spec.n_alt - 1))
+        V = (vn[cells_v][:, None] + sub[None, :] * (vn[1] - vn[0])).ravel()
+        W = (w_n[cells_w][:, None] + sub[None, :] * (w_n[1] - w_n[0])).ravel()
+        VV, WW = np.meshgrid(V, W, indexing="ij")
+        add(VV, WW, 1)
+    # log-uniform in altitude (denser at the bottom, where the terminator is
+    # hardest), theta uniform in the terminator band and over [0, pi]
+    h_lo = h_from_w(spec.w_min)
+    h_hi = min(h_from_w(spec.w_max), 1e7)
+    hh = 10 ** rng.uniform(math.log10(h_lo), math.log10(h_hi), n_random)
+    wl = np.minimum(np.maximum(w_from_h(hh), spec.w_min), spec.w_max)
+    add(rng.uniform(0, 1, n_random), wl, 1)
+    pts_t.append(rng.uniform(0, math.pi, n_random))
+    pts_w.append(wl)
     # uniform in (theta, w)
     tt = rng.uniform(0, math.pi, n_random)
     ww = rng.uniform(spec.w_min, spec.w_max, n_random)
@@ -272,10 +293,10 @@ def sample_points(spec, n_random, seed=12345):
 
 
 def measure(spec, q_tab, psi_tab, n_random=4000, order=32, progress=None, rel_goal=1e-3,
-            seed=12345, kind="cubic"):
+            seed=12345, kind="cubic", refine=True):
     """Maximum interpolation error of the table against the reference at
     points between the nodes. q_tab, psi_tab: the stored (float32) values."""
-    theta, w = sample_points(spec, n_random, seed)
+    theta, w = sample_points(spec, n_random, seed, refine)
     x = np.cos(w)
     phi_ref, psi_ref = reference_chunked(theta, x, order, "measure", progress)
     phi0, _ = reference_chunked(np.zeros_like(x), x, order, "measure phi(0,x)", progress)

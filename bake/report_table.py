@@ -172,6 +172,9 @@ def section(outdir, quick=False):
     hmin, hmax = spec.h_range_km()
     ff_ok = [o[0] for o in ff if o[1] <= 1.0]
 
+    def img(name):  # bake/report.py rewrites outdir/ into report/
+        return os.path.join(str(outdir), name)
+
     L = []
     L.append("## Earthshine table (no atmosphere)\n")
     L.append("Design: docs/earthshine-table.md. Reference: bake/reference.py (quadrature, "
@@ -190,16 +193,16 @@ def section(outdir, quick=False):
     L.append("| max psi error where phi >= 1%% phi(0,x) (rad) | %.3e | 1e-3 |" % m["max_psi_err_rad"])
     L.append("| worst point | theta = %.4f rad, h = %.0f km | |" % (m["worst_theta"], m["worst_h_km"]))
     L.append("| payload bytes | %d | <= 65536 |\n" % spec.bytes())
-    L.append("![table image](table_image.png)\n")
+    L.append("![table image](%s)\n" % img("table_image.png"))
     L.append("*Seed Fig. 7 redone*: the table's phi and psi over theta and log altitude "
              "(the seed tabulated uniform in h; here w = acos(R/r)).\n")
-    L.append("![curves](table_curves.png)\n")
+    L.append("![curves](%s)\n" % img("table_curves.png"))
     L.append("*Seed Fig. 11 redone*: curve shapes phi(theta)/phi(0) at several altitudes, and the "
              "mean direction psi. Subsolar values:\n")
     L.append("| h (km) | phi(0, h) | phi(0,h) / ((R/r)^2 p(0)) |\n|---|---|---|")
     for hk, p0, ratio in rows:
         L.append("| %g | %.6e | %.5f |" % (hk, p0, ratio))
-    L.append("\n![error vs bytes](table_error_bytes.png)\n")
+    L.append("\n![error vs bytes](%s)\n" % img("table_error_bytes.png"))
     L.append("Interpolation error against resolution and bytes, 100 km to infinity "
              "(800 random points per segment plus every cell centre):\n")
     L.append("| grid (lit+term x alt) | bytes | Catmull-Rom max rel err | CR error/goal | "
@@ -207,7 +210,7 @@ def section(outdir, quick=False):
     for rc, rl in zip(res["cubic"], res["linear"]):
         L.append("| %d+%d x %d | %d | %.2e | %.3f | %.2e | %.3f | %.1f |" % (
             rc[4][0], rc[4][1], rc[4][2], rc[0], rc[1], rc[2], rl[1], rl[2], rc[5]))
-    L.append("\n![far field](table_farfield.png)\n")
+    L.append("\n![far field](%s)\n" % img("table_farfield.png"))
     L.append("Far-field Lambert model x^2 p(theta) against the reference, max error in units of "
              "the goal over theta: %s. It stays outside the goal to %s, so the table runs to "
              "infinity (its last node is x = 0, where q = p(theta) exactly) and the far field is "

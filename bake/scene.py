@@ -70,7 +70,7 @@ def choose_grid(cfg, log=print, progress=None):
                 break
             q, psi = grid.node_values(spec, order=order, progress=False)
             m = grid.measure(spec, emit.f32(q), emit.f32(psi), n_random=500, order=order,
-                             progress=False, rel_goal=cfg["rel_goal"])
+                             progress=False, rel_goal=cfg["rel_goal"], refine=False)
             ok = _passes(m, cfg, SEARCH_MARGIN)
             log("  try %3d+%3d x %3d (%6d bytes): goal score %.3f, psi %.2e rad%s" % (
                 n_lit, n_term, n_alt, spec.bytes(), m["max_score"], m["max_psi_err_rad"],

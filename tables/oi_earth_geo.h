@@ -17,7 +17,7 @@
 #define OI_EARTH_GEO_N_VALUES 148
 
 #ifndef OI_NO_EARTH_TABLE
-/* oi_earth_geo: altitude 35000 km to 37000 km, max relative error 2.653e-04 (see oi_earth_geo.c). */
+/* oi_earth_geo: altitude 35000 km to 37000 km, max relative error 2.665e-04 (see oi_earth_geo.c). */
 extern const oi_earth_table oi_earth_geo;
 #endif
 
