@@ -147,5 +147,8 @@ def bake(cfg, outdir, method="quadrature", log=print, progress=None, photon_args
     log("%s: %d+%d x %d nodes, %d bytes, max rel err %.3e, goal score %.3f, psi %.2e rad (%.1f s)" % (
         cfg["name"], spec.n_lit, spec.n_term, spec.n_alt, spec.bytes(), m["max_rel_err"],
         m["max_score"], m["max_psi_err_rad"], time.monotonic() - t0))
+    if m["max_score"] > 1.0:
+        log("  WARNING: %s does not meet its goal (max error %.3g x the goal)" % (
+            cfg["name"], m["max_score"]))
     return paths, meta
 
