@@ -220,7 +220,7 @@ def lookup(spec, q_tab, psi_tab, theta, x, kind="cubic"):
     ps = np.where(lit, p_lit, p_term)
     dark = theta >= HALF_PI + w
     phi = np.where(dark, 0.0, np.maximum(q, 0.0) * x * x)
-    ps = np.where(dark, 0.0, np.clip(ps, 0.0, np.arcsin(np.clip(x, 0, 1))))
+    ps = np.where(phi > 0, np.clip(ps, 0.0, np.arcsin(np.clip(x, 0, 1))), 0.0)
     return phi, ps
 
 
