@@ -174,12 +174,16 @@ static oi_real overlap_small(oi_real r1, oi_real r2, oi_real d)
  *     union is the sphere give A(r1) + A(r2) - 4 pi.
  *  3. Otherwise the intersection (a lens bounded by two circle arcs) is cut
  *     by the great circle through the two crossing points into two cap
- *     segments, each a sector minus an isosceles spherical triangle. The
+ *     segments, each a sector minus an isosceles spherical triangle, or, for
+ *     a thin segment, a cancellation-free integral of the same area. The
  *     half-angles at the centres come from the spherical half-angle formula
  *     with the side sums formed as in Kahan's triangle-area ordering (no
- *     acos of a difference). Caps larger than a hemisphere are reduced to
- *     smaller ones by complementation: the complement of a cap (r, c) is the
- *     cap (pi - r, -c).
+ *     acos of a difference). Two caps of at least 1 rad: Gauss-Bonnet on
+ *     the lens instead (the chord decomposition degenerates for two great
+ *     circles). A cap larger than a hemisphere: signed segments near its
+ *     edge, else complementation (the complement of the cap (r, c) is the
+ *     cap (pi - r, -c)). The classification (disjoint, nested) uses
+ *     differences that are exact near the tangencies.
  *  4. Accuracy (docs/shadow.md): the absolute error is a few epsilon times
  *     the smaller cap's area; the relative error of a thin lens near
  *     tangency grows as the lens shrinks (its area is then ill-conditioned
@@ -214,6 +218,12 @@ oi_real oi_cap_overlap(oi_real r1, oi_real r2, oi_real d)
         oi_real rb = r1 > r2 ? r1 : r2, rs = r1 > r2 ? r2 : r1, ab = r1 > r2 ? a2 : a1;
         if (d - rb >= rs) return (oi_real)0;
         if (rb - d >= rs) return ab;
+        if (pi_minus(d) + pi_minus(rb) <= rs) {
+            /* the large cap's complement inside the small cap (the union is
+             * the sphere): A_s - A(pi - rb) */
+            a = ab - (oi_real)4 * OI_PI_R * sin_half_sq(pi_minus(rb));
+            return clamp(a, (oi_real)0, amin);
+        }
         {
             /* angle at the large cap's centre (opposite rs), and at the
              * small cap's centre (opposite rb) */
