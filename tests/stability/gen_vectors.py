@@ -741,8 +741,114 @@ def suite_earth_table():
     return t
 
 
+# ---------------------------------------------------------------- camera
+
+# The test camera (tests/c/test_stability.c test_camera has the same numbers).
+CAM = dict(aperture=mp.mpf("0.15"), focal=mp.mpf("1.2"), pitch=mp.mpf("5.5e-6"),
+           trans=mp.mpf("0.8"), qe=mp.mpf("0.6"), band=mp.mpf("0.4"), eph=mp.mpf("3.6e-19"),
+           fw=mp.mpf("30000"), dark=mp.mpf("10"), psf=mp.mpf("0.3"),
+           times=[mp.mpf(t) for t in ("1e-4", "1e-3", "1e-2", "0.1", "1", "10")],
+           gains=[mp.mpf(g) for g in ("1", "4", "16")],
+           rn=[mp.mpf(r) for r in ("10", "4", "2")])
+GOAL_FILL, SNR_MIN = mp.mpf("0.5"), mp.mpf(5)
+
+
+def expose_ref(flux, bg, cam, prec):
+    """The documented rule of oi_expose (src/exposure.c notes 1-2, docs/camera.md).
+    Returns (outputs, time index, gain index, flags, ambiguous)."""
+    area = PI * (cam["aperture"] / 2) ** 2
+    k = cam["trans"] * cam["band"] * cam["qe"] / cam["eph"]
+    s_rate = flux * area * k * cam["psf"]
+    b_rate = bg * area * (cam["pitch"] / cam["focal"]) ** 2 * k + cam["dark"]
+
+    def ev(ti, gi):
+        t, g = cam["times"][ti], cam["gains"][gi]
+        sig, bkg = s_rate * t, b_rate * t
+        sat = cam["fw"] / g
+        fill = (sig + bkg) / sat
+        snr = sig / mp.sqrt(sig + bkg + cam["rn"][gi] ** 2)
+        return [sig, bkg, sig + bkg, fill, snr]
+
+    amb_rel = mp.mpf(10) ** -6 if prec == "f" else mp.mpf(10) ** -10
+    best_goal = best_low = None
+    ambiguous = False
+    for gi in range(len(cam["gains"])):
+        for ti in range(len(cam["times"])):
+            o = ev(ti, gi)
+            for thr in (GOAL_FILL, mp.mpf(1)):
+                if abs(o[3] - thr) <= amb_rel * thr:
+                    ambiguous = True
+            if not o[3] < 1:
+                continue
+            if o[3] <= GOAL_FILL:
+                if best_goal is not None and abs(o[4] - best_goal[0][4]) <= amb_rel * o[4]:
+                    ambiguous = True
+                if best_goal is None or o[4] > best_goal[0][4]:
+                    best_goal = (o, ti, gi)
+            elif best_low is None or o[3] < best_low[0][3]:
+                best_low = (o, ti, gi)
+    flags = 0
+    if best_goal is not None:
+        o, ti, gi = best_goal
+    elif best_low is not None:
+        o, ti, gi = best_low
+    else:
+        o, ti, gi = ev(0, 0), 0, 0
+        flags |= 16
+    faint = ev(len(cam["times"]) - 1, len(cam["gains"]) - 1)[4]
+    if abs(faint - SNR_MIN) <= amb_rel * SNR_MIN:
+        ambiguous = True
+    if faint < SNR_MIN:
+        flags |= 8
+    return o, ti, gi, flags, ambiguous
+
+
+def suite_camera():
+    t = Table("camera", 2, 5,
+              "in: flux (W/m^2), background (W/m^2/sr); want: signal_e, background_e, peak_e, "
+              "fill, snr of oi_expose with the test camera; region = time_index * 100 + "
+              "gain_index * 10 + (flags >> 3), region_sure = 0 if the choice is within rounding "
+              "of a tie")
+    for prec in ("d", "f"):
+        fl = ["0", "1e-30", "1e-20", "1e-16", "1e-14", "1e-13", "1e-12", "1e-11", "1e-10",
+              "1e-9", "1e-8", "1e-6", "1e-3", "1", "1361", "27000"]
+        fl += ["4.9406564584124654e-324", "1e-300"] if prec == "d" else ["1.4e-45", "1e-38"]
+        for f in fl:
+            for b in ("0", "1e-8", "1e-3", "1", "1e4"):
+                x = rnd_vec([mp.mpf(f), mp.mpf(b)], prec)
+                o, ti, gi, flags, amb = expose_ref(x[0], x[1], CAM, prec)
+                # conditioning: the inputs scaled at fixed choice
+                sp = [mp.mpf(0)] * 5
+                eps = EPS_MULT * PRECISIONS[prec]["u"]
+                for i in range(2):
+                    if x[i] == 0:
+                        continue
+                    worst = [mp.mpf(0)] * 5
+                    for sg in (1, -1):
+                        y = list(x)
+                        y[i] = x[i] * (1 + sg * eps)
+                        # same indices: evaluate directly
+                        oy = expose_at(y[0], y[1], ti, gi)
+                        worst = [max(w, abs(a - c)) for w, a, c in zip(worst, oy, o)]
+                    sp = [a + w for a, w in zip(sp, worst)]
+                t.add(prec, x, o, sp, "flux=%s bg=%s" % (f, b), ti * 100 + gi * 10 + (flags >> 3),
+                      0 if amb else 1)
+    return t
+
+
+def expose_at(flux, bg, ti, gi, cam=CAM):
+    area = PI * (cam["aperture"] / 2) ** 2
+    k = cam["trans"] * cam["band"] * cam["qe"] / cam["eph"]
+    s_rate = flux * area * k * cam["psf"]
+    b_rate = bg * area * (cam["pitch"] / cam["focal"]) ** 2 * k + cam["dark"]
+    tt, g = cam["times"][ti], cam["gains"][gi]
+    sig, bkg = s_rate * tt, b_rate * tt
+    return [sig, bkg, sig + bkg, (sig + bkg) / (cam["fw"] / g),
+            sig / mp.sqrt(sig + bkg + cam["rn"][gi] ** 2)]
+
+
 SUITES = [suite_phase, suite_moon, suite_angle, suite_overlap, suite_shadow, suite_magnitude,
-          suite_earth_lambert, suite_illuminate, suite_earth_table]
+          suite_earth_lambert, suite_illuminate, suite_earth_table, suite_camera]
 
 
 def main():
