@@ -144,6 +144,19 @@ def section(outdir) -> str:
                f"diameter; Danjon: Earth's radius + 1/85, i.e. {100 * danjon:.1f} % here | Espenak & Meeus, "
                "*Five Millennium Canon of Lunar Eclipses* (NASA TP-2009-214172), 'Enlargement of Earth's "
                "shadows' |")
+    # effective height of the shadow for a LEO satellite
+    hs = []
+    for zz in (2400.0,):
+        rc_ = R * (1 + zz / ar.AU_KM)
+        rho_ = rc_ + np.linspace(-60, 100, 321)
+        F_, _ = ar.fraction(rays, zz, rho_, want_psi=False, n_mu=24)
+        for thr in (0.5, 0.1):
+            hs.append(rho_[np.where(F_ >= thr)[0][0]] - rc_)
+    out.append(f"| effective shadow height for a LEO satellite entering the shadow (z = 2400 km): tangent "
+               f"height of the line to the Sun's centre where F = 0.5 / 0.1 | {hs[0]:.0f} / {hs[1]:.0f} km "
+               "(0 / -7 km without atmosphere) | 15-20 km 'atmosphere allowance' fitted to visual "
+               "shadow-entry timings | R. Matson, T. Molczan, SeeSat-L, Jan. 1997 "
+               "(satobs.org/seesat/Jan-1997/0347.html) |")
     out.append("")
 
     # ---------------------------------------------------------- 2. LEO penumbra transit
