@@ -477,6 +477,61 @@ static oi_real fraction_limb_darkened(oi_real rs, oi_real re, oi_real sep)
 
 /* ---------------------------------------------------------------- sun fraction */
 
+/*
+ * Error-free transformations (Dekker 1971; Knuth TAOCP 2, 4.2.2): a*a =
+ * hi + lo exactly, with Veltkamp's split (2^27 + 1 for double, 2^12 + 1 for
+ * float); a + b = s + e exactly. Needs round-to-nearest in the working
+ * precision (no x87 extended registers). The split's product goes through a
+ * volatile so that a compiler contracting floating-point expressions
+ * (-ffp-contract=fast, the GNU C default on FMA targets) cannot fuse
+ * t - a = fl(S a) - a into an exact fma, which would break the split; the
+ * later partial products are exact, so fusing them changes nothing.
+ */
+#ifdef OI_SINGLE_PRECISION
+#define SPLITTER OI_R(4097.0)
+#else
+#define SPLITTER OI_R(134217729.0)
+#endif
+
+static void two_square(oi_real a, oi_real *hi, oi_real *lo)
+{
+    volatile oi_real tv = SPLITTER * a;
+    oi_real t = tv;
+    oi_real ah = t - (t - a);
+    oi_real al = a - ah;
+    *hi = a * a;
+    *lo = ((ah * ah - *hi) + (oi_real)2 * ah * al) + al * al;
+}
+
+static void two_sum(oi_real a, oi_real b, oi_real *s, oi_real *e)
+{
+    oi_real bb;
+    *s = a + b;
+    bb = *s - a;
+    *e = (a - (*s - bb)) + (b - bb);
+}
+
+/*
+ * q = |p|^2 - R^2 with a relative error of a few epsilon even when |p| is
+ * within a few metres of R (then the plain difference of the rounded |p| and
+ * R would keep only log10(h/R) fewer digits: at 1 m altitude 7 of 16 in
+ * double, none in single precision). Used only when |p| < 2R, where the
+ * squares cannot overflow.
+ */
+static oi_real radial_excess(const oi_real p[3], oi_real r)
+{
+    oi_real sh = (oi_real)0, sl = (oi_real)0, h, l, e, rh, rl;
+    int i;
+    for (i = 0; i < 3; ++i) {
+        two_square(p[i], &h, &l);
+        two_sum(sh, h, &sh, &e);
+        sl += e + l;
+    }
+    two_square(r, &rh, &rl);
+    /* sh and rh are within a factor 4 of each other: sh - rh is exact */
+    return (sh - rh) + (sl - rl);
+}
+
 /* Apparent angular radius of a sphere of radius rad at distance dist > rad:
  * atan2(rad, sqrt((dist - rad)(dist + rad))), exact near grazing too. */
 static oi_real apparent_radius(oi_real rad, oi_real dist)
@@ -553,7 +608,7 @@ int oi_sun_fraction(const oi_real sun_km[3], const oi_real point_km[3],
 {
     oi_model m;
     oi_real rel[3], anti[3];
-    oi_real ds, dp, dsp, rs, re, sep, frac, frac_ld;
+    oi_real ds, dp, dsp, rs, re, sep, frac, frac_ld, q_earth;
     int st, region;
 
     if (out == NULL) return OI_ERR_NULL;
@@ -565,7 +620,14 @@ int oi_sun_fraction(const oi_real sun_km[3], const oi_real point_km[3],
     ds = oi__norm(sun_km);
     dp = oi__norm(point_km);
     if (ds == (oi_real)0 || dp == (oi_real)0) return OI_ERR_ZERO_VECTOR;
-    if (dp <= m.earth_radius_km) return OI_ERR_BELOW_SURFACE;
+    if (dp < (oi_real)2 * m.earth_radius_km) {
+        /* near the surface: the sign of |p|^2 - R^2 decides, and its value
+         * gives the Earth's apparent radius atan2(R, sqrt(|p|^2 - R^2)) */
+        q_earth = radial_excess(point_km, m.earth_radius_km);
+        if (!(q_earth > (oi_real)0)) return OI_ERR_BELOW_SURFACE;
+    } else {
+        q_earth = (oi_real)-1; /* far: the plain form is accurate */
+    }
     if (ds <= m.sun_radius_km + m.earth_radius_km) return OI_ERR_GEOMETRY;
     oi__sub(sun_km, point_km, rel);
     if (!oi__finite3(rel)) return OI_ERR_NONFINITE;
@@ -578,7 +640,8 @@ int oi_sun_fraction(const oi_real sun_km[3], const oi_real point_km[3],
     anti[2] = -point_km[2];
     sep = oi_angle(rel, anti);
     rs = apparent_radius(m.sun_radius_km, dsp);
-    re = apparent_radius(m.earth_radius_km, dp);
+    re = q_earth > (oi_real)0 ? OI_ATAN2(m.earth_radius_km, OI_SQRT(q_earth))
+                              : apparent_radius(m.earth_radius_km, dp);
 
     if (sep >= re + rs || dp >= dsp) {
         /* discs apart, or the Earth behind the Sun (a point beyond the Sun:

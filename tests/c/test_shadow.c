@@ -209,6 +209,7 @@ static void test_sun_vs_mpmath(void **state)
     int bad = 0;
     double worst_abs = 0, worst_scaled = 0, worst_ld = 0, worst_geo = 0;
     double wc_abs = 0, wc_ld = 0, small_rel = 0; /* rows with cond <= 1e3; f < 1e-3 */
+    double low_abs = 0; /* rows within 1 km of the surface */
     (void)state;
     for (i = 0; i < n; ++i) {
         const ref_sun_row *r = &ref_sun[i];
@@ -263,6 +264,11 @@ static void test_sun_vs_mpmath(void **state)
             print_error("row %zu: geometry error %.3g\n", i, geo);
             ++bad;
         }
+        {
+            double rp = sqrt(r->point[0] * r->point[0] + r->point[1] * r->point[1] +
+                             r->point[2] * r->point[2]);
+            if (rp < RE + 1.0) low_abs = fmax(low_abs, fmax(err, err_ld));
+        }
         if (r->cond <= 1e3) {
             wc_abs = fmax(wc_abs, err);
             wc_ld = fmax(wc_ld, err_ld);
@@ -282,8 +288,15 @@ static void test_sun_vs_mpmath(void **state)
     print_message("  rows with cond <= 1e3: fraction worst |err| %.3g, fraction_ld %.3g; "
                   "fractions below 1e-3 (where eps*cond < 1e-3 f): worst relative error %.3g\n",
                   wc_abs, wc_ld, small_rel);
+    print_message("  rows within 1 km of the surface: worst |err| %.3g (fraction, fraction_ld)\n",
+                  low_abs);
 #ifndef OI_SINGLE_PRECISION
     assert_true(worst_abs <= 1e-9); /* issue 2 goal */
+    /* |p|^2 - R^2 in compensated arithmetic: low altitudes are not
+     * limited by the rounding of |p| (that alone would give ~4e-11 at 1 m) */
+    assert_true(low_abs <= 1e-12);
+#else
+    assert_true(low_abs <= 1e-4); /* ~2e-2 without the compensated |p|^2 - R^2 */
 #endif
     assert_int_equal(bad, 0);
 }
