@@ -17,9 +17,9 @@
  *  1. Krisciunas & Schaefer (1991) give the law with |alpha| (the sign of a
  *     phase angle only tells waxing from waning); a negative alpha is read
  *     as its magnitude, then clamped to [0, pi]. A NaN gives 0 (no light).
- *  2. Validity: the law is Krisciunas & Schaefer's fit to Allen's tabulated
- *     lunar magnitudes, which stop near 150 degrees (a thin crescent a
- *     few days from new Moon); it is within about 0.1 mag of them there.
+ *  2. Validity: the law is Krisciunas & Schaefer's empirical fit to Allen's
+ *     tabulated lunar magnitudes; this project treats it as reliable up to
+ *     about 150 degrees (a thin crescent a few days from new Moon).
  *     Beyond 150 degrees this function keeps the same polynomial
  *     (an extrapolation, not a measurement): it stays positive, finite and
  *     strictly decreasing up to 180 degrees, where it is 10^(-3.55) = 2.8e-4

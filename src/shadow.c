@@ -189,9 +189,8 @@ static oi_real overlap_small(oi_real r1, oi_real r2, oi_real d)
  *     tangency grows as the lens shrinks (its area is then ill-conditioned
  *     in d).
  * References:
- *   Todhunter, I. 1886, Spherical Trigonometry, 5th ed., arts. 45-47 (half-
- *   angle formulas), art. 102 (the spherical excess from two sides and the
- *   included angle).
+ *   Todhunter, I. 1886, Spherical Trigonometry, 5th ed. (the half-angle
+ *   formulas; the spherical excess from two sides and the included angle).
  *   Kahan, W. 2014, "Miscalculating Area and Angles of a Needle-like
  *   Triangle" (ordering of the side sums).
  */
