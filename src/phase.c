@@ -100,7 +100,7 @@ oi_real oi_lambert_phase(oi_real xi)
  *     respect to a relative perturbation of the inputs.
  * References:
  *   Kahan, W. 2006, "How futile are mindless assessments of roundoff in
- *   floating-point computation?", sec. 12 (angles between vectors).
+ *   floating-point computation?" (the angle between two vectors).
  */
 oi_real oi_angle(const oi_real a[3], const oi_real b[3])
 {

@@ -248,7 +248,7 @@ oi_real oi_cap_overlap(oi_real r1, oi_real r2, oi_real d)
 
 /*
  * Solar limb darkening I(mu)/I(1) = sum_k A_k mu^k, the fifth-degree
- * polynomial of Neckel & Labs (1994, Sol. Phys. 153, 91, table 2) at their
+ * polynomial of Neckel & Labs (1994, Sol. Phys. 153, 91; their coefficient table) at their
  * continuum wavelength 559.95 nm, the one nearest the V band's 550 nm. The
  * coefficients sum to 1 (I(1) = 1); I(0) = 0.269.
  */
