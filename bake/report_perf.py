@@ -74,8 +74,8 @@ def _lookup_bilinear(spec, q_tab, theta, x):
 
 
 def _sweep(cache: Path):
-    if cache.exists():
-        return json.loads(cache.read_text())
+    """Compute the sweep (every run: the report states what this run computed)
+    and write it to `cache` as a data file next to the plot."""
     cfg = json.loads((ROOT / "bake" / "config" / "default.json").read_text())
     g = cfg["grid"]
     r = cfg.get("radius_km", ref.R_EARTH_KM)
