@@ -87,8 +87,9 @@ static oi_real bilinear(const unsigned short *tab, int i, int j, oi_real fu, oi_
  *     = |sun|. The window along rho runs from rho_lo (deepest point any
  *     unblocked refracted ray reaches, minus the solar disc) to rho_hi = rc +
  *     a + top; below it the fraction is exactly 0, above it the geometric
- *     one. Rows are log-spaced in z; along rho the nodes are uniform in the
- *     model ray altitude v up to OI_ATM_V_MID_KM, then uniform in rho.
+ *     one. Rows are log-spaced in z; along rho the nodes are uniform in a
+ *     blend of the model ray altitude v and rho up to v = OI_ATM_V_MID_KM,
+ *     then uniform in rho.
  *  2. The table holds the limb-darkened disc (Neckel & Labs 1994). With
  *     OI_LIMB_UNIFORM the geometric difference frac - frac_ld is added
  *     (exact outside the atmosphere's effect), and the sum clamped to [0, 1].
@@ -148,8 +149,12 @@ int oi__atm_fraction(const oi_real sun_km[3], const oi_real point_km[3], const o
                 it = (oi_real)(OI_ATM_NA - 1) +
                      (rho - rho_mid) / (rho_hi - rho_mid) * (oi_real)OI_ATM_NB;
             } else {
+                /* segment A: blend of the ray altitude v and rho (bake/atm_table.py g_a) */
                 oi_real v = solve_v(rho, z, rc, v_lo, ATM_R(OI_ATM_V_MID_KM));
-                it = (v - v_lo) / (ATM_R(OI_ATM_V_MID_KM) - v_lo) * (oi_real)(OI_ATM_NA - 1);
+                oi_real tv = (v - v_lo) / (ATM_R(OI_ATM_V_MID_KM) - v_lo);
+                oi_real tr = (rho - rho_lo) / (rho_mid - rho_lo);
+                it = (((oi_real)1 - ATM_R(OI_ATM_W_RHO)) * tv + ATM_R(OI_ATM_W_RHO) * tr) *
+                     (oi_real)(OI_ATM_NA - 1);
             }
             iu = OI_LOG(z / ATM_R(OI_ATM_Z_MIN_KM)) /
                  OI_LOG(ATM_R(OI_ATM_Z_MAX_KM) / ATM_R(OI_ATM_Z_MIN_KM)) *
