@@ -15,7 +15,7 @@ import numpy as np
 
 from . import __version__
 
-TABLE_FORMAT = 2  # must match OI_TABLE_FORMAT in include/oi_table.h
+TABLE_FORMAT = 3  # must match OI_TABLE_FORMAT in include/oi_table.h
 PER_LINE = 6
 
 
@@ -74,7 +74,8 @@ def provenance_lines(meta):
         "Method: %s%s." % (meta["method"], meta.get("method_detail", "")),
         "Grid: n_lit = %d, n_term = %d, n_alt = %d (%d values per quantity)," % (
             g["n_lit"], g["n_term"], g["n_alt"], g["n_values"]),
-        "  w = acos(R/r) in [%s, %s] rad, uniform." % (c_double(g["w_min"]), c_double(g["w_max"])),
+        "  w = acos(R/r) in [%s, %s] rad, uniform;" % (c_double(g["w_min"]), c_double(g["w_max"])),
+        "  terminator map k = %s x^%s." % (c_double(g["term_k0"]), c_double(g["term_kp"])),
         "Validity: altitude %s to %s (R = %s km; scale-free in R/r)," % (
             _fmt_h(meta["h_min_km"]), _fmt_h(meta["h_max_km"]), "%.6f" % meta["radius_km"]),
         "  theta in [0, pi]; outside the altitude range the runtime uses the",
@@ -139,6 +140,8 @@ def render(name, spec, q, psi, meta):
     c.append("    .n_alt = %s_N_ALT," % up)
     c.append("    .w_min = %s," % c_double(spec.w_min))
     c.append("    .w_max = %s," % c_double(spec.w_max))
+    c.append("    .term_k0 = %s," % c_double(spec.term_k0))
+    c.append("    .term_kp = %s," % c_double(spec.term_kp))
     c.append("    .max_rel_err = %.3e," % meta["measured"]["max_rel_err"])
     c.append("    .max_abs_err = %.3e," % meta["measured"]["max_abs_err_frac"])
     c.append("    .q = %s_q," % name)

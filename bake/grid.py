@@ -9,7 +9,10 @@ altitude:  w = acos(x) = atan2(sqrt(h (2R + h)), R), the angular radius of the
            [w_min, w_max]; w_max = pi/2 is the point at infinity (x = 0).
 theta:     two segments sharing one node column:
            lit  segment (whole visible cap lit) theta = v (pi/2 - w),     v in [0, 1]
-           term segment (terminator crosses it) theta = pi/2 - w + 2 w v, v in [0, 1]
+           term segment (terminator crosses it) theta = pi/2 + w m(2v - 1), v in [0, 1],
+                m(t) = sinh(k t)/sinh(k), k = term_k0 x^term_kp: nodes denser
+                around theta = pi/2 at low altitude (the terminator crossing the
+                nadir, a feature ~h/R wide), uniform (k -> 0) far away
            beyond theta = pi/2 + w the visible cap is dark: phi = 0 exactly.
 stored:    q = phi / x^2 (-> Lambert p(theta) at x = 0) and psi (rad), float32.
 interp:    Catmull-Rom (cubic convolution, a = -1/2) in v and in w, per segment,
@@ -26,12 +29,41 @@ import numpy as np
 from . import reference as ref
 
 HALF_PI = 0.5 * math.pi
+# Terminator map k = TERM_K0 x^TERM_KP (measured: 0.745 -> 0.47 of the goal for
+# the default grid against the uniform map, docs/earthshine-table.md).
+TERM_K0 = 2.0
+TERM_KP = 8.0
+K_SMALL = 1e-4  # below: m(t) = t (the map's deviation is k^2/6 ~ 2e-9)
+
+
+def term_k(spec, x):
+    return spec.term_k0 * np.power(np.asarray(x, dtype=float), spec.term_kp)
+
+
+def term_m(t, k):
+    """m(t) = sinh(k t)/sinh(k) (t for small k)."""
+    k = np.asarray(k, dtype=float)
+    small = k < K_SMALL
+    ks = np.where(small, 1.0, k)
+    return np.where(small, t, np.sinh(ks * t) / np.sinh(ks))
+
+
+def term_t(m, k):
+    """Inverse of term_m: t = asinh(m sinh k)/k (m for small k)."""
+    k = np.asarray(k, dtype=float)
+    small = k < K_SMALL
+    ks = np.where(small, 1.0, k)
+    return np.where(small, m, np.arcsinh(m * np.sinh(ks)) / ks)
 
 
 class TableSpec:
     """Grid of one earthshine table."""
 
-    def __init__(self, n_lit, n_term, n_alt, w_min, w_max):
+    def __init__(self, n_lit, n_term, n_alt, w_min, w_max, term_k0=TERM_K0, term_kp=TERM_KP):
+        self.term_k0 = float(term_k0)
+        self.term_kp = float(term_kp)
+        if not (self.term_k0 >= 0 and self.term_kp >= 0):
+            raise ValueError("term_k0, term_kp must be >= 0")
         self.n_lit = int(n_lit)
         self.n_term = int(n_term)
         self.n_alt = int(n_alt)
@@ -65,7 +97,8 @@ class TableSpec:
 
     def as_dict(self):
         return dict(n_lit=self.n_lit, n_term=self.n_term, n_alt=self.n_alt,
-                    w_min=self.w_min, w_max=self.w_max)
+                    w_min=self.w_min, w_max=self.w_max, term_k0=self.term_k0,
+                    term_kp=self.term_kp)
 
 
 def w_from_h(h_km, radius_km=ref.R_EARTH_KM):
@@ -86,7 +119,8 @@ def node_coords(spec):
     v_lit = np.linspace(0.0, 1.0, spec.n_lit)[None, :]
     v_term = np.linspace(0.0, 1.0, spec.n_term)[None, :]
     th_lit = v_lit * (HALF_PI - w)
-    th_term = HALF_PI - w + 2.0 * w * v_term
+    xw = np.where(w >= HALF_PI, 0.0, np.cos(w))
+    th_term = HALF_PI + w * term_m(2.0 * v_term - 1.0, term_k(spec, xw))
     theta = np.concatenate([th_lit, th_term], axis=1)
     x = np.broadcast_to(np.cos(w), theta.shape).copy()
     x[np.broadcast_to(w >= HALF_PI, theta.shape)] = 0.0
@@ -209,7 +243,8 @@ def lookup(spec, q_tab, psi_tab, theta, x, kind="cubic"):
     lit = theta <= tb
     with np.errstate(divide="ignore", invalid="ignore"):
         v_lit = np.where(tb > 0, theta / np.where(tb > 0, tb, 1.0), 0.0)
-        v_term = (theta - tb) / (2.0 * w)
+        m = np.clip((theta - HALF_PI) / w, -1.0, 1.0)
+        v_term = 0.5 * (term_t(m, term_k(spec, x)) + 1.0)
     fl = np.clip(v_lit, 0, 1) * (spec.n_lit - 1)
     ft = np.clip(v_term, 0, 1) * (spec.n_term - 1)
     q_lit = _segment_interp(q_tab[:, :spec.n_lit], fl, fw, kind)
@@ -250,7 +285,10 @@ def sample_points(spec, n_random, seed=12345, refine=True):
 
     def add(v, w, seg):
         w = np.asarray(w, dtype=float)
-        th = np.where(seg == 0, v * (HALF_PI - w), HALF_PI - w + 2.0 * w * v)
+        if seg == 0:
+            th = v * (HALF_PI - w)
+        else:
+            th = HALF_PI + w * term_m(2.0 * np.asarray(v) - 1.0, term_k(spec, np.cos(w)))
         pts_t.append(th.ravel())
         pts_w.append(w.ravel())
 

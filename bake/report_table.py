@@ -36,8 +36,10 @@ def _load_default():
     p = emit.parse_c(c, h)
     up = TABLE.upper()
     d = p["defines"]
+    f = p["fields"]
     spec = grid.TableSpec(d[up + "_N_LIT"], d[up + "_N_TERM"], d[up + "_N_ALT"],
-                          float(p["fields"]["w_min"]), float(p["fields"]["w_max"]))
+                          float(f["w_min"]), float(f["w_max"]), float(f["term_k0"]),
+                          float(f["term_kp"]))
     q = p["arrays"][TABLE + "_q"].reshape(spec.n_alt, spec.n_theta).astype(float)
     psi = p["arrays"][TABLE + "_psi"].reshape(spec.n_alt, spec.n_theta).astype(float)
     return spec, q, psi, side

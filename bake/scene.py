@@ -95,7 +95,8 @@ def bake(cfg, outdir, method="quadrature", log=print, progress=None, photon_args
     order = int(cfg["reference_order"])
     if "grid" in cfg:
         g = cfg["grid"]
-        spec = grid.TableSpec(g["n_lit"], g["n_term"], g["n_alt"], w_lo, w_hi)
+        spec = grid.TableSpec(g["n_lit"], g["n_term"], g["n_alt"], w_lo, w_hi,
+                              g.get("term_k0", grid.TERM_K0), g.get("term_kp", grid.TERM_KP))
         q = psi = None
     else:
         log("sizing %s for %s .. %s km, goal %g" % (cfg["name"], h_lo, h_hi, cfg["rel_goal"]))
@@ -132,7 +133,8 @@ def bake(cfg, outdir, method="quadrature", log=print, progress=None, photon_args
         "parameters": {k: cfg[k] for k in sorted(cfg) if k not in ("name", "description")},
         "grid": dict(spec.as_dict(), n_values=spec.n_values,
                      coordinates="w = acos(R/r) uniform; theta: lit segment v(pi/2-w), "
-                                 "terminator segment pi/2-w+2wv",
+                                 "terminator segment pi/2 + w sinh(k(2v-1))/sinh(k), "
+                                 "k = term_k0 x^term_kp",
                      stored="q = phi/x^2, psi (rad), float32",
                      interpolation="Catmull-Rom per segment, linear-extrapolated ghosts"),
         "h_min_km": h_lo,

@@ -11,7 +11,10 @@
  *       w on [w_min, w_max]; w_max = pi/2 means "to infinity";
  *   theta, in two segments that share their boundary node column:
  *       lit  (v = 0..1):  theta = v (pi/2 - w)          (visible cap fully lit)
- *       term (v = 0..1):  theta = pi/2 - w + 2 w v      (terminator crosses it)
+ *       term (v = 0..1):  theta = pi/2 + w m(2v - 1)      (terminator crosses it)
+ *                         m(t) = sinh(k t) / sinh(k), k = term_k0 x^term_kp
+ *                         (m(t) = t for k = 0): nodes denser near theta = pi/2
+ *                         at low altitude, where the terminator crosses the nadir
  *       beyond theta = pi/2 + w nothing lit is visible: phi = 0.
  * Values are row-major by altitude: value[j * (n_lit + n_term) + i], j the
  * altitude node, i < n_lit the lit segment, i >= n_lit the terminator segment.
@@ -25,7 +28,7 @@
 #define OI_TABLE_H
 
 /* Version of this layout: every generated table header checks it. */
-#define OI_TABLE_FORMAT 2
+#define OI_TABLE_FORMAT 3
 
 typedef struct oi_earth_table {
     int format;           /* OI_TABLE_FORMAT of the generator */
@@ -34,6 +37,8 @@ typedef struct oi_earth_table {
     int n_alt;            /* altitude (w) nodes, >= 2 */
     double w_min;         /* first altitude node, w = acos(R/r) (rad), > 0 */
     double w_max;         /* last altitude node (rad), <= pi/2 (pi/2: infinity) */
+    double term_k0;       /* terminator map strength k0 (>= 0, 0: uniform in theta) */
+    double term_kp;       /* terminator map altitude exponent kp (>= 0) */
     double max_rel_err;   /* measured max relative error of phi where phi >= 1% of
                              phi(0, x) (provenance, not used by the lookup) */
     double max_abs_err;   /* measured max error / phi(0, x) elsewhere (provenance) */

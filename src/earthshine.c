@@ -78,12 +78,60 @@ static oi_real seg_interp(const float *base, int ld, int off, int n, int n_alt,
     return wb[0] * r[0] + wb[1] * r[1] + wb[2] * r[2] + wb[3] * r[3];
 }
 
+/* asinh(z) without cancellation for small |z|: series z (1 - z^2/6 + 3 z^4/40
+ * - 15 z^6/336 + 105 z^8/3456) below ASINH_SERIES (next term < 2.3e-2 |z|^11:
+ * < 1e-21 relative in double below 0.01, < 2e-11 in float below 0.125). */
+#ifdef OI_SINGLE_PRECISION
+#define ASINH_SERIES OI_R(0.125)
+#else
+#define ASINH_SERIES OI_R(0.01)
+#endif
+static oi_real asinh_r(oi_real z)
+{
+    const oi_real a = OI_FABS(z);
+    oi_real r;
+    if (a < ASINH_SERIES) {
+        const oi_real z2 = z * z;
+        return z * (OI_R(1.0) + z2 * (OI_R(-1.0) / OI_R(6.0) +
+                    z2 * (OI_R(3.0) / OI_R(40.0) +
+                    z2 * (OI_R(-15.0) / OI_R(336.0) + z2 * (OI_R(105.0) / OI_R(3456.0))))));
+    }
+    r = OI_LOG(a + OI_SQRT(a * a + OI_R(1.0)));
+    return z < (oi_real)0 ? -r : r;
+}
+
+/* sinh(k) for k >= 0 without cancellation: Taylor series to k^13 below 0.5
+ * (next term < 5e-17 relative), the exponential form above. */
+static oi_real sinh_r(oi_real k)
+{
+    if (k < OI_R(0.5)) {
+        const oi_real k2 = k * k;
+        return k * (OI_R(1.0) + k2 / OI_R(6.0) * (OI_R(1.0) + k2 / OI_R(20.0) *
+                    (OI_R(1.0) + k2 / OI_R(42.0) * (OI_R(1.0) + k2 / OI_R(72.0) *
+                    (OI_R(1.0) + k2 / OI_R(110.0) * (OI_R(1.0) + k2 / OI_R(156.0)))))));
+    }
+    return OI_R(0.5) * (OI_EXP(k) - OI_EXP(-k));
+}
+
+/* Position t in [-1, 1] of m = (theta - pi/2) / w on the terminator map
+ * m = sinh(k t) / sinh(k), k = k0 x^kp (bake/grid.py term_t). */
+static oi_real term_t(oi_real m, oi_real x, const oi_earth_table *t)
+{
+    oi_real k;
+    if (t->term_k0 <= 0.0) return m;
+    k = (oi_real)t->term_k0 * OI_POW(x, (oi_real)t->term_kp);
+    if (k < OI_R(1e-4)) return m; /* the map deviates from m by ~k^2/6 */
+    return asinh_r(m * sinh_r(k)) / k;
+}
+
 static int table_valid(const oi_earth_table *t)
 {
     const double half_pi = 0.5 * OI_PI;
     if (t->format != OI_TABLE_FORMAT || t->n_lit < 2 || t->n_term < 2 || t->n_alt < 2) return 0;
     if (t->q == NULL || t->psi == NULL) return 0;
     if (!(t->w_min > 0.0) || !(t->w_max > t->w_min) || !(t->w_max <= half_pi * (1.0 + 1e-15)))
+        return 0;
+    if (!(t->term_k0 >= 0.0 && t->term_k0 <= 20.0) || !(t->term_kp >= 0.0 && t->term_kp <= 100.0))
         return 0;
     return 1;
 }
@@ -125,7 +173,8 @@ static int table_valid(const oi_earth_table *t)
  *     w = acos(x), computed here as atan2(sqrt(h (2R + h)), R) (no
  *     cancellation at low altitude), and in theta over two segments: the
  *     visible cap fully lit (theta <= pi/2 - w) and the terminator crossing
- *     it (pi/2 - w < theta < pi/2 + w). Beyond theta = pi/2 + w nothing lit
+ *     it (pi/2 - w < theta < pi/2 + w, nodes graded towards theta = pi/2 at
+ *     low altitude by the map sinh(k t)/sinh(k)). Beyond theta = pi/2 + w nothing lit
  *     is visible and phi = 0 exactly. Interpolation: bicubic Catmull-Rom per
  *     segment. See include/oi_table.h and docs/earthshine-table.md.
  *  2. Accuracy of the default table (measured against the quadrature
@@ -196,7 +245,10 @@ int oi_earthshine(oi_real theta, oi_real h_km, const oi_model *model,
             } else {
                 off = t->n_lit;
                 n = t->n_term;
-                fv = (theta - tb) / (OI_R(2.0) * w) * (oi_real)(n - 1);
+                oi_real mm = (theta - HALF_PI_R) / w;
+                if (mm > OI_R(1.0)) mm = OI_R(1.0);
+                if (mm < OI_R(-1.0)) mm = OI_R(-1.0);
+                fv = OI_R(0.5) * (term_t(mm, x, t) + OI_R(1.0)) * (oi_real)(n - 1);
             }
             q = seg_interp(t->q, ld, off, n, t->n_alt, fv, fw);
             p = seg_interp(t->psi, ld, off, n, t->n_alt, fv, fw);

@@ -7,7 +7,7 @@
 
 #include "oi_table.h"
 
-#if OI_TABLE_FORMAT != 2
+#if OI_TABLE_FORMAT != 3
 #error "oi_earth_diffuse.h: table format mismatch: regenerate tables (make bake)"
 #endif
 
@@ -17,7 +17,7 @@
 #define OI_EARTH_DIFFUSE_N_VALUES 7808
 
 #ifndef OI_NO_EARTH_TABLE
-/* oi_earth_diffuse: altitude 100 km to infinity, max relative error 5.203e-04 (see oi_earth_diffuse.c). */
+/* oi_earth_diffuse: altitude 100 km to infinity, max relative error 4.864e-04 (see oi_earth_diffuse.c). */
 extern const oi_earth_table oi_earth_diffuse;
 #endif
 

@@ -7,7 +7,7 @@
 
 #include "oi_table.h"
 
-#if OI_TABLE_FORMAT != 2
+#if OI_TABLE_FORMAT != 3
 #error "oi_earth_geo.h: table format mismatch: regenerate tables (make bake)"
 #endif
 

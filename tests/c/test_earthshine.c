@@ -234,6 +234,27 @@ static void test_hand_table(void **state)
             check_rel("hand table term", x * x * (2.0 + 3 * fr[b] + s), (double)phi, EXACT_REL * 100);
         }
     }
+    /* graded terminator map: theta = pi/2 + w sinh(k t)/sinh(k), k = k0 x^kp,
+     * v = (t + 1)/2; q stays linear in v */
+    t.term_k0 = 2.0;
+    t.term_kp = 1.5;
+    for (a = 0; a < 3; a++) {
+        double h = hs[a];
+        double w = atan2(sqrt(h * (2 * RE + h)), RE);
+        double s = (w - t.w_min) / (t.w_max - t.w_min);
+        double x = RE / (RE + h);
+        double k = 2.0 * pow(x, 1.5);
+        for (b = 0; b < 3; b++) {
+            oi_real phi, psi;
+            double tt = 2 * fr[b] - 1;
+            double th = PI / 2 + w * sinh(k * tt) / sinh(k);
+            assert_int_equal(oi_earthshine((oi_real)th, (oi_real)h, &m, &phi, &psi), OI_OK);
+            check_rel("hand table graded term", x * x * (2.0 + 3 * fr[b] + s), (double)phi,
+                      EXACT_REL * 100);
+        }
+    }
+    t.term_k0 = 0.0;
+    t.term_kp = 0.0;
     /* outside the table's altitudes: far field and a warning */
     {
         oi_real phi, psi;
@@ -259,6 +280,9 @@ static void test_hand_table(void **state)
         t.w_max = t.w_min;
         assert_int_equal(oi_earthshine(OI_R(0.5), OI_R(1000.0), &m, &phi, &psi), OI_ERR_MODEL);
         t.w_max = 1.0;
+        t.term_k0 = -1.0;
+        assert_int_equal(oi_earthshine(OI_R(0.5), OI_R(1000.0), &m, &phi, &psi), OI_ERR_MODEL);
+        t.term_k0 = 0.0;
         t.q = NULL;
         assert_int_equal(oi_earthshine(OI_R(0.5), OI_R(1000.0), &m, &phi, &psi), OI_ERR_MODEL);
     }

@@ -53,6 +53,8 @@ def test_round_trip_exact(table):
     assert p["defines"]["OI_EARTH_TESTTAB_N_ALT"] == 3
     assert float(p["fields"]["w_max"]) == math.pi / 2
     assert float(p["fields"]["w_min"]) == 0.2
+    assert float(p["fields"]["term_k0"]) == spec.term_k0
+    assert float(p["fields"]["term_kp"]) == spec.term_kp
     assert "#if OI_TABLE_FORMAT != %d" % emit.TABLE_FORMAT in h
 
 

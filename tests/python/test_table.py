@@ -31,8 +31,10 @@ def load_table(name):
     parsed = emit.parse_c(c, h)
     up = name.upper()
     d = parsed["defines"]
+    f = parsed["fields"]
     spec = grid.TableSpec(d[up + "_N_LIT"], d[up + "_N_TERM"], d[up + "_N_ALT"],
-                          float(parsed["fields"]["w_min"]), float(parsed["fields"]["w_max"]))
+                          float(f["w_min"]), float(f["w_max"]), float(f["term_k0"]),
+                          float(f["term_kp"]))
     q = parsed["arrays"][name + "_q"].reshape(spec.n_alt, spec.n_theta)
     psi = parsed["arrays"][name + "_psi"].reshape(spec.n_alt, spec.n_theta)
     return spec, q, psi, side, c
