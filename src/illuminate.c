@@ -112,7 +112,8 @@ static oi_real reflected_flux(oi_real e, const oi_real dir[3], const oi_real to_
  * Notes:
  *  1. Sun: e_sun = TSI (AU / |sun - target|)^2 * shadow.fraction_atm, where
  *     fraction_atm is the uniform-disc fraction, or the limb-darkened one with
- *     OI_LIMB_DARKENED, or the atmosphere's when compiled in and enabled.
+ *     OI_LIMB_DARKENED, or the atmosphere's when compiled in and enabled;
+ *     in the shadow, dir_sun is then the mean direction of the refracted light.
  *  2. Earth: e_earth = earth_albedo * TSI (AU/|sun|)^2 * phi(theta, h).
  *  3. Moon: the Moon is lit by the fraction of the Sun it sees (so it darkens
  *     in the Earth's shadow). The Moon's own shadow on the target (solar
@@ -144,6 +145,17 @@ int oi_illuminate(const oi_scene *scene, const oi_model *model, oi_illum *out)
     if (scene->terms & OI_TERM_SUN) {
         oi__sub(scene->sun_km, scene->target_km, to_sun);
         out->e_sun = solar_irradiance(&m, oi__unit(to_sun, out->dir_sun)) * out->shadow.fraction_atm;
+#ifndef OI_NO_ATMOSPHERE
+        /* In the shadow, sunlight arrives bent by the atmosphere: take its mean
+         * direction (lit points see the Sun's centre to within refraction). */
+        if (!m.no_atmosphere && out->shadow.region != OI_SHADOW_LIT && out->e_sun > (oi_real)0) {
+            oi_real f, dir[3];
+            if (oi__atm_fraction(scene->sun_km, scene->target_km, &m, out->shadow.fraction,
+                                 out->shadow.fraction_ld, &f, dir) == OI_OK &&
+                oi__norm(dir) > (oi_real)0)
+                oi__unit(dir, out->dir_sun);
+        }
+#endif
     }
     if (scene->terms & OI_TERM_EARTH) {
         st = oi_earthshine(out->earth_theta, out->earth_h_km, &m, &phi, &psi);

@@ -189,6 +189,38 @@ static void test_target_in_umbra(void **state)
     check_rel(99.0, out.mag_v, 0, "dark magnitude");
 }
 
+#ifndef OI_NO_ATMOSPHERE
+/* Just inside the geometric umbra in LEO, refracted sunlight still arrives,
+ * bent towards the Earth by less than the grazing bending (~1.2 deg); with the
+ * atmosphere switched off the point is dark. */
+static void test_refracted_sunlight_in_umbra(void **state)
+{
+    oi_scene s = lit_scene();
+    oi_model m;
+    oi_illum out;
+    double a = 67.7 * PI / 180.0, r = 6878.137, geo[3], cosang, n = 0;
+    int i;
+    (void)state;
+    set3(s.sun_km, 1.47e8, 0, 0);
+    set3(s.target_km, -r * cos(a), r * sin(a), 0);
+    s.has_observer = 0;
+    assert_int_equal(oi_illuminate(&s, NULL, &out), OI_OK);
+    assert_true(out.shadow.fraction == 0);
+    assert_true(out.shadow.fraction_atm > 0 && out.e_sun > 0);
+    for (i = 0; i < 3; i++) {
+        geo[i] = (double)s.sun_km[i] - (double)s.target_km[i];
+        n += geo[i] * geo[i];
+    }
+    cosang = (geo[0] * out.dir_sun[0] + geo[1] * out.dir_sun[1] + geo[2] * out.dir_sun[2]) / sqrt(n);
+    assert_true(cosang < 1.0 - 1e-12);         /* bent ... */
+    assert_true(cosang > cos(1.2 * PI / 180)); /* ... by less than the grazing bending */
+    memset(&m, 0, sizeof m);
+    m.no_atmosphere = 1;
+    assert_int_equal(oi_illuminate(&s, &m, &out), OI_OK);
+    assert_true(out.e_sun == 0 && out.shadow.fraction_atm == 0);
+}
+#endif
+
 static void rotate(const oi_real in[3], oi_real out[3])
 {
     /* rotation by 0.7 rad about (1,2,3)/sqrt(14) (Rodrigues), in double */
@@ -310,6 +342,9 @@ int main(void)
         cmocka_unit_test(test_moon_in_umbra_is_dark),
 #endif
         cmocka_unit_test(test_target_in_umbra),
+#ifndef OI_NO_ATMOSPHERE
+        cmocka_unit_test(test_refracted_sunlight_in_umbra),
+#endif
         cmocka_unit_test(test_rotation_invariance),
         cmocka_unit_test(test_magnitude_roundtrip),
         cmocka_unit_test(test_error_paths),
