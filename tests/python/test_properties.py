@@ -296,3 +296,22 @@ def test_reference_far_field_and_order(theta, lh1, lh2):
             phi = ref.phi_reference(np.array([theta]), x)[0]
             errs.append(abs(phi / ref.far_field(np.array([theta]), x)[0] - 1))
         assert errs[1] <= 0.2 * errs[0] + 1e-9, errs
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.one_of(st.sampled_from([0.0, math.pi / 2, math.pi, 1e-300, math.pi - 1e-15,
+                                  math.nextafter(math.pi / 2, 0)]),
+                 st.floats(0, math.pi)),
+       st.one_of(st.sampled_from([1e-9, 1e-6, 1e-3, 1.0, 1e9, 1e15]), st.floats(1e-6, 1e12)))
+def test_reference_extreme_inputs_finite(theta, h):
+    """The baker's reference quadrature at stiff inputs (1e-9 km to 1e15 km,
+    theta exactly 0, pi/2, pi): finite, phi >= 0, psi in [0, pi/2], and phi
+    below its subsolar value at that altitude."""
+    ref = pytest.importorskip("bake.reference")
+    x = np.array([ref.x_from_h(h)])
+    with np.errstate(all="raise"):
+        phi, psi = ref.phi_psi_reference(np.array([theta]), x)
+        phi0, _ = ref.phi_psi_reference(np.array([0.0]), x)
+    assert np.isfinite(phi[0]) and np.isfinite(psi[0]) and phi[0] >= 0
+    assert -1e-12 <= psi[0] <= math.pi / 2 + 1e-12
+    assert phi[0] <= phi0[0] * (1 + 1e-12)
