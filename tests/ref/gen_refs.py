@@ -363,6 +363,24 @@ def sun_cases():
             # exactly on the axis, both sides (exact multiples)
             cases.append(([d, 0, 0], [-mp.mpf(r), 0, 0]))
             cases.append(([d, 0, 0], [mp.mpf(r), 0, 0]))
+    # random geometries (fixed seed): Sun 0.983-1.017 AU in a random direction,
+    # altitude log-uniform 1 m .. 2e6 km, separation across the penumbra and
+    # 20 % beyond either edge
+    rng = np.random.default_rng(20261122)
+    for _ in range(100):
+        d = mp.mpf(rng.uniform(0.983, 1.017)) * AU_KM
+        u = rng.normal(size=3)
+        u /= np.linalg.norm(u)
+        r = R_EARTH_KM + 10.0 ** rng.uniform(-3, 6.3)
+        re_app = float(mp.asin(R_EARTH_KM / r))
+        rs_app = float(mp.asin(R_SUN_KM / d))
+        lo, hi = abs(re_app - rs_app), re_app + rs_app
+        psi = rng.uniform(max(lo - 0.2 * (hi - lo), 0.0), hi + 0.2 * (hi - lo))
+        v = rng.normal(size=3)
+        v -= v.dot(u) * u
+        v /= np.linalg.norm(v)
+        P = r * (-np.cos(psi) * u + np.sin(psi) * v)
+        cases.append(([d * mp.mpf(x) for x in u], [mp.mpf(x) for x in P]))
     # exactly collinear, not axis-aligned
     cases.append(([mp.mpf(1e8), mp.mpf(1e8), 0], [mp.mpf(-5000), mp.mpf(-5000), 0]))
     cases.append(([mp.mpf(1e8), mp.mpf(-1e8), mp.mpf(2e7)], [mp.mpf(-5000), mp.mpf(5000), mp.mpf(-1000)]))
