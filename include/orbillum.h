@@ -144,7 +144,9 @@ typedef struct oi_shadow {
  *          point_km point position (km, Earth-centred), above the surface
  *          model    NULL or model constants
  * Returned: out    fractions and geometry
- * Returns: OI_OK; OI_ERR_NULL, OI_ERR_NONFINITE, OI_ERR_ZERO_VECTOR,
+ * Returns: OI_OK; OI_WARN_TABLE_RANGE (the point is beyond the atmosphere
+ *          table's reach behind the Earth: fraction_atm is the geometric one);
+ *          OI_ERR_NULL, OI_ERR_NONFINITE, OI_ERR_ZERO_VECTOR,
  *          OI_ERR_BELOW_SURFACE, OI_ERR_GEOMETRY, OI_ERR_MODEL, OI_ERR_RADIUS.
  */
 int oi_sun_fraction(const oi_real sun_km[3], const oi_real point_km[3],
@@ -173,7 +175,7 @@ int oi_earthshine(oi_real theta, oi_real h_km, const oi_model *model,
 /* Empirical lunar phase law: the Moon's brightness at phase angle alpha
  * (radians) relative to full Moon, 10^(-0.4 (0.026 a + 4e-9 a^4)), a in
  * degrees (Krisciunas & Schaefer 1991, PASP 103, 1033, eq. 20, after Allen).
- * Returns 1 at alpha = 0; alpha is clamped to [0, pi]. */
+ * Returns 1 at alpha = 0; |alpha| is used, clamped to [0, pi]; NaN gives 0. */
 oi_real oi_moon_phase_law(oi_real alpha);
 #endif
 

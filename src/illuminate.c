@@ -137,6 +137,7 @@ int oi_illuminate(const oi_scene *scene, const oi_model *model, oi_illum *out)
 
     st = oi_sun_fraction(scene->sun_km, scene->target_km, &m, &out->shadow);
     if (st < 0) goto fail;
+    if (st > 0) warn = st;
 
     out->earth_theta = oi_angle(scene->sun_km, scene->target_km);
     out->earth_h_km = oi__norm(scene->target_km) - m.earth_radius_km;
