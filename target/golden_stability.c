@@ -42,11 +42,12 @@ typedef struct known_issue {
     const char *why;
 } known_issue;
 
-/* tests/c/test_stability.c KNOWN, extracted by mk/cross.mk into
- * build/cross/stab_known.h, then a sentinel that matches no table */
+/* a sentinel that matches no table, then tests/c/test_stability.c's KNOWN
+ * entries, extracted by mk/cross.mk into build/cross/stab_known.h (with or
+ * without a trailing comma; possibly none) */
 static const known_issue KNOWN[] = {
-#include "stab_known.h"
     {"", NULL, "", 0, 0, ""},
+#include "stab_known.h"
 };
 
 static const known_issue *find_known(const char *table, const char *output, const char *label)
