@@ -67,6 +67,7 @@ REF_DEFS := $(foreach h,$(REF_HEADERS),-DOI_HAVE_$(shell echo $(basename $(notdi
 STAB_VECTORS := $(wildcard tests/stability/vectors.h)
 REF_HEADERS += $(STAB_VECTORS)
 REF_DEFS += $(if $(STAB_VECTORS),-DOI_HAVE_STABILITY_VECTORS)
+REF_DEFS += $(if $(and $(STAB_VECTORS),$(shell grep -l 'stab_camera_d' $(STAB_VECTORS) 2>/dev/null)),-DOI_HAVE_STAB_CAMERA)
 # the stability suite's list of known deviations, extracted from its source so
 # the target applies exactly the host's list (target/golden_stability.c)
 STAB_KNOWN_H := $(CROSS_DIR)/stab_known.h

@@ -186,6 +186,57 @@ static int ev_illum(const double *in, double *got, int *region)
     return st > 0 ? OI_OK : st;
 }
 
+#ifndef OI_NO_EXPOSURE
+/* tests/c/test_stability.c test_camera(): the camera of the camera vectors */
+static const oi_camera *test_camera(void)
+{
+    static oi_camera c;
+    static const double times[6] = {1e-4, 1e-3, 1e-2, 0.1, 1, 10};
+    static const double gains[3] = {1, 4, 16}, rn[3] = {10, 4, 2};
+    int i;
+    memset(&c, 0, sizeof c);
+    c.name = "stability test camera";
+    c.aperture_m = (oi_real)0.15;
+    c.focal_length_m = (oi_real)1.2;
+    c.pixel_pitch_m = (oi_real)5.5e-6;
+    c.transmission = (oi_real)0.8;
+    c.quantum_efficiency = (oi_real)0.6;
+    c.band_fraction = (oi_real)0.4;
+    c.photon_energy_j = (oi_real)3.6e-19;
+    c.full_well_e = (oi_real)30000;
+    c.dark_current_e_s = (oi_real)10;
+    c.psf_peak_fraction = (oi_real)0.3;
+    c.fov_rad = (oi_real)0.02;
+    c.sun_exclusion_rad = (oi_real)0.5;
+    c.n_times = 6;
+    c.n_gains = 3;
+    for (i = 0; i < 6; i++) c.times_s[i] = (oi_real)times[i];
+    for (i = 0; i < 3; i++) {
+        c.gains[i] = (oi_real)gains[i];
+        c.read_noise_e[i] = (oi_real)rn[i];
+    }
+    return &c;
+}
+
+static int ev_camera(const double *in, double *got, int *region)
+{
+    oi_expose_in x;
+    oi_exposure e;
+    int st;
+    x.flux_w_m2 = (oi_real)in[0];
+    x.background_w_m2_sr = (oi_real)in[1];
+    x.flags = 0;
+    st = oi_expose(test_camera(), &x, NULL, &e);
+    got[0] = (double)e.signal_e;
+    got[1] = (double)e.background_e;
+    got[2] = (double)e.peak_e;
+    got[3] = (double)e.fill;
+    got[4] = (double)e.snr;
+    *region = e.time_index * 100 + e.gain_index * 10 + (int)((e.flags >> 3) & 3u);
+    return st;
+}
+#endif
+
 static void run_table(const char *name, const stab_vec *v, unsigned n, int nout,
                       const char *const *outs, eval_fn f)
 {
@@ -199,7 +250,12 @@ static void run_table(const char *name, const stab_vec *v, unsigned n, int nout,
             check_int(v[i].label, OI_OK, st);
             continue;
         }
-        if (v[i].region >= 0 && v[i].region_sure) check_int(v[i].label, v[i].region, region);
+        if (v[i].region >= 0 && v[i].region_sure) {
+            if (region != v[i].region && find_known(name, "choice", v[i].label) != NULL)
+                note_known();
+            else
+                check_int(v[i].label, v[i].region, region);
+        }
         for (k = 0; k < nout; k++) {
             double want = v[i].want[k], err = dabs(got[k] - want);
             double tol = GOAL * dabs(want) + v[i].spread[k];
@@ -251,6 +307,12 @@ void golden_stability(void)
     RUN(magnitude, 1, o_mag, ev_magnitude);
     RUN(earth_lambert, 1, o_phi, ev_earth_lambert);
     RUN(illum, 7, o_illum, ev_illum);
+#if !defined(OI_NO_EXPOSURE) && defined(OI_HAVE_STAB_CAMERA)
+    {
+        static const char *const o_cam[] = {"signal_e", "background_e", "peak_e", "fill", "snr"};
+        RUN(camera, 5, o_cam, ev_camera);
+    }
+#endif
 }
 #else
 void golden_stability(void)
