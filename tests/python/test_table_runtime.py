@@ -60,3 +60,43 @@ def test_c_lookup_equals_python_mirror(tmp_path):
     phi0 = ref.phi_reference(np.zeros(n), ref.x_from_h(h), 24, 24)
     assert np.max(np.abs(phi_c - phi_p) / phi0) < 1e-12
     assert np.max(np.abs(psi_c - psi_p)) < 1e-12
+
+
+PROG_NO_TABLE = r"""
+#include <stdio.h>
+#include <math.h>
+#include "orbillum.h"
+int main(void)
+{
+    oi_real phi, psi;
+    double x = 6378.137 / (6378.137 + 500.0), t = 1.1;
+    double want = x * x * 2.0 / (3.0 * 3.14159265358979323846) *
+                  ((3.14159265358979323846 - t) * cos(t) + sin(t));
+    int st = oi_earthshine((oi_real)t, (oi_real)500.0, NULL, &phi, &psi);
+    printf("%d %.17g %.17g %.17g\n", st, (double)phi, (double)psi, want);
+    return 0;
+}
+"""
+
+
+@pytest.mark.skipif(shutil.which("cc") is None, reason="needs cc")
+@pytest.mark.parametrize("defs", [[], ["-DOI_SINGLE_PRECISION"]])
+def test_no_earth_table_falls_back_to_far_field(tmp_path, defs):
+    """-DOI_NO_EARTH_TABLE: the generated table compiles to nothing and
+    oi_earthshine uses the Lambert far field with OI_WARN_TABLE_RANGE (1)."""
+    src = tmp_path / "nt.c"
+    src.write_text(PROG_NO_TABLE)
+    exe = str(tmp_path / "nt")
+    warn = ["-std=c99", "-Wall", "-Wextra", "-Wpedantic", "-Wconversion", "-Wshadow",
+            "-Wdouble-promotion", "-Werror"]
+    files = [os.path.join(ROOT, f) for f in ("src/earthshine.c", "src/model.c", "src/phase.c",
+                                             "tables/oi_earth_diffuse.c")]
+    inc = ["-I" + os.path.join(ROOT, d) for d in ("include", "src", "tables")]
+    subprocess.run(["cc"] + warn + ["-O2", "-DOI_NO_EARTH_TABLE"] + defs + inc + files +
+                   [str(src), "-lm", "-o", exe], check=True)
+    out = subprocess.run(["nm", exe], capture_output=True, text=True, check=True).stdout
+    assert "oi_earth_diffuse" not in out
+    st, phi, psi, want = subprocess.run([exe], capture_output=True, text=True,
+                                        check=True).stdout.split()
+    assert int(st) == 1 and float(psi) == 0.0
+    assert abs(float(phi) / float(want) - 1) < (1e-5 if defs else 1e-13)
