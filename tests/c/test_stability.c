@@ -380,9 +380,9 @@ static int same_grid(void)
     return oi_earth_diffuse.n_lit == STAB_ES_N_LIT && oi_earth_diffuse.n_term == STAB_ES_N_TERM &&
            oi_earth_diffuse.n_alt == STAB_ES_N_ALT && oi_earth_diffuse.w_min == STAB_ES_W_MIN &&
            oi_earth_diffuse.w_max == STAB_ES_W_MAX &&
-           /* gen_vectors.py places terminator nodes with the uniform map (table
-            * format 2); format 3 grades them (term_k0 > 0, include/oi_table.h) */
-           oi_earth_diffuse.term_k0 == 0.0;
+           /* the terminator map of table format 3 (include/oi_table.h) */
+           oi_earth_diffuse.term_k0 == STAB_ES_TERM_K0 &&
+           oi_earth_diffuse.term_kp == STAB_ES_TERM_KP;
 }
 
 static void test_earth_table(void **state)

@@ -661,8 +661,9 @@ def read_table_grid(path):
     import re
     txt = open(path).read()
     g = {}
-    for key in ("w_min", "w_max"):
-        g[key] = float(re.search(r"\.%s = ([0-9.eE+-]+)," % key, txt).group(1))
+    for key in ("w_min", "w_max", "term_k0", "term_kp"):
+        m = re.search(r"\.%s = ([0-9.eE+-]+)," % key, txt)
+        g[key] = float(m.group(1)) if m else 0.0  # format 2 had no terminator map
     for key in ("N_LIT", "N_TERM", "N_ALT"):
         g[key.lower()] = int(re.search(r"#define OI_EARTH_DIFFUSE_%s (\d+)" % key,
                                        open(path[:-2] + ".h").read()).group(1))
@@ -682,8 +683,10 @@ def suite_earth_table():
     g = read_table_grid(TABLE_C)
     t.extra = ("/* the grid the node vectors were made for (tables/oi_earth_diffuse.c) */\n"
                "#define STAB_ES_N_LIT %d\n#define STAB_ES_N_TERM %d\n#define STAB_ES_N_ALT %d\n"
-               "#define STAB_ES_W_MIN %s\n#define STAB_ES_W_MAX %s" %
-               (g["n_lit"], g["n_term"], g["n_alt"], repr(g["w_min"]), repr(g["w_max"])))
+               "#define STAB_ES_W_MIN %s\n#define STAB_ES_W_MAX %s\n"
+               "#define STAB_ES_TERM_K0 %s\n#define STAB_ES_TERM_KP %s" %
+               (g["n_lit"], g["n_term"], g["n_alt"], repr(g["w_min"]), repr(g["w_max"]),
+                repr(g["term_k0"]), repr(g["term_kp"])))
     Re = R_EARTH
     nl, nt, na = g["n_lit"], g["n_term"], g["n_alt"]
     ws = [mp.mpf(g["w_min"]) + (mp.mpf(g["w_max"]) - mp.mpf(g["w_min"])) * j / (na - 1)
@@ -694,8 +697,13 @@ def suite_earth_table():
         h = Re / mp.cos(w) - Re
         for i in sorted(set([0, 1, nl // 2, nl - 2])):
             cases.append(("node lit i=%d j=%d" % (i, j), (PI / 2 - w) * i / (nl - 1), h))
+        # terminator nodes: theta = pi/2 + w m(2v - 1), m(t) = sinh(k t)/sinh(k),
+        # k = k0 x^kp (include/oi_table.h, format 3; m(t) = t for k = 0)
+        k = mp.mpf(g["term_k0"]) * mp.cos(w) ** mp.mpf(g["term_kp"])
         for i in sorted(set([0, 1, nt // 4, nt // 2, 3 * nt // 4, nt - 2, nt - 1])):
-            cases.append(("node term i=%d j=%d" % (i, j), PI / 2 - w + 2 * w * i / (nt - 1), h))
+            tt = 2 * mp.mpf(i) / (nt - 1) - 1
+            m_ = mp.sinh(k * tt) / mp.sinh(k) if k != 0 else tt
+            cases.append(("node term i=%d j=%d" % (i, j), PI / 2 + w * m_, h))
     # edges: the bottom of the table, theta exactly 0, pi/2, pi, the segment
     # boundaries, between nodes, and far away
     hb = Re / mp.cos(ws[0]) - Re
