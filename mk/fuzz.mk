@@ -9,8 +9,8 @@
 #   make fuzz-replay  replay the committed corpus only (no new inputs).
 #   make sanitize   every C test program (both precisions) built with
 #                   -fsanitize=address,undefined -fno-sanitize-recover, and run.
-#   make analyze    cppcheck (both precisions) and gcc -fanalyzer on src/ and
-#                   tables/, both must be clean.
+#   make analyze    cppcheck (three configurations), gcc -fanalyzer and clang
+#                   --analyze (both precisions) on src/ and tables/: all clean.
 # Each installs what it needs (clang, libclang-rt-dev, cppcheck) with apt-get.
 
 FUZZ_SECONDS ?= 60
@@ -31,7 +31,7 @@ SUDO_APT = SUDO=; [ "$$(id -u)" = 0 ] || SUDO=sudo; \
   $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq
 
 .PHONY: deps-fuzz deps-analyze fuzz fuzz-ci fuzz-replay fuzz-build sanitize analyze \
-        analyze-cppcheck analyze-gcc
+        analyze-cppcheck analyze-gcc analyze-clang
 
 deps-fuzz: $(BUILDDIR)/.deps-fuzz
 $(BUILDDIR)/.deps-fuzz:
@@ -124,7 +124,16 @@ analyze-gcc:
 	  gcc $(WARN) -O2 -fanalyzer -Iinclude -Isrc -Itables $$d -c $$f -o /dev/null; \
 	done; done
 
-analyze: analyze-cppcheck analyze-gcc ## cppcheck and gcc -fanalyzer on the runtime, must be clean
+# clang's static analyser too (clang is installed by deps-fuzz); any
+# warning fails.
+analyze-clang: deps-fuzz
+	@set -e; for f in $(RT_SRC); do for d in "" -DOI_SINGLE_PRECISION; do \
+	  echo "clang --analyze $$d $$f"; \
+	  out=$$($(FUZZ_CC) --analyze -std=c99 -Iinclude -Isrc -Itables $$d $$f -o /dev/null 2>&1); \
+	  if [ -n "$$out" ]; then echo "$$out"; exit 1; fi; \
+	done; done
+
+analyze: analyze-cppcheck analyze-gcc analyze-clang ## cppcheck, gcc -fanalyzer and clang --analyze on the runtime, must be clean
 
 # ---- the thin test binding's shared library (tests/python/_oi_ctypes.py):
 # the double-precision runtime plus a struct-size probe. Not the public
