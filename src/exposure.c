@@ -240,7 +240,7 @@ int oi_expose(const oi_camera *camera, const oi_expose_in *in,
     k = camera->transmission * camera->band_fraction * camera->quantum_efficiency /
         camera->photon_energy_j;
     ifov = camera->pixel_pitch_m / camera->focal_length_m;
-    rate_s = in->flux_w_m2 * area * k * camera->psf_peak_fraction;
+    rate_s = in->flux_w_m2 * (area * k * camera->psf_peak_fraction); /* no underflow of flux * area */
     rate_b = in->background_w_m2_sr * area * (ifov * ifov) * k + camera->dark_current_e_s;
 
     memset(&trial, 0, sizeof trial);
