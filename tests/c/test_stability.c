@@ -197,15 +197,10 @@ static const known_issue KNOWN[] = {
      * removed, the vectors stay as regressions): fraction = 1 - overlap/cap
      * cancelling near the umbra edge (4% error at F = 2e-15, 2% at 3.6e-6 in
      * single), the 16-point limb-darkening rings (3e-10), the overlap of two
-     * hemispheres (5.2 for pi) and of caps beyond a hemisphere. */
-    /* src/exposure.c: rate_s = flux * area * k * psf underflows for the
-     * smallest subnormal fluxes (flux * area first): signal 0 instead of
-     * 1.4e-307 e-, and with every SNR 0 the tie-break picks the shortest time
-     * at the lowest gain instead of the longest at the highest (TOO_FAINT
-     * either way). Physically void (1e-323 W/m^2); multiplying
-     * flux * (area * k * psf) would keep it. */
-    {"camera", NULL, "flux=4.9406564584124654e-324", 0, 1e300, "signal underflow (flux * area first)"},
-    {"camera", NULL, "flux=1.4e-45", 0, 1e300, "signal underflow (flux * area first)"},
+     * hemispheres (5.2 for pi) and of caps beyond a hemisphere. Fixed in
+     * src/exposure.c (one line, by this helper): rate_s = flux * area * k *
+     * psf underflowed for the smallest subnormal fluxes (flux * area first),
+     * so every SNR was 0 and the tie-break chose the shortest time. */
     {"", NULL, "", 0, 0, "no entry: matches no table"}
 };
 
