@@ -393,6 +393,18 @@ static void do_expose_scene(fz_in *in, const oi_scene *s, oi_illum *il, const oi
 }
 #endif
 
+/* (a / |v|)^2 without overflow or underflow of |v|^2 */
+static double inv_sq_scaled(double a, const double v[3])
+{
+    double m = fabs(v[0]), q;
+    int i;
+    for (i = 1; i < 3; i++)
+        if (fabs(v[i]) > m) m = fabs(v[i]);
+    if (m == 0) return HUGE_VAL;
+    q = (v[0] / m) * (v[0] / m) + (v[1] / m) * (v[1] / m) + (v[2] / m) * (v[2] / m);
+    return (a / m) * (a / m) / q;
+}
+
 static void do_illuminate(fz_in *in)
 {
     oi_scene s;
@@ -408,6 +420,27 @@ static void do_illuminate(fz_in *in)
     g_model = (use_model & 1) ? &m : NULL;
     g_dump_illum = &o;
     check_illum(st, &o);
+    if (st >= 0) {
+        /* physical upper bounds: direct sunlight at most the unobstructed
+         * solar irradiance at the target's distance; earthshine at most
+         * albedo E0 phi with phi <= 2 (a Lambertian plane filling half the
+         * sky); both with the model's constants */
+        double tsi = ((use_model & 1) && m.tsi_w_m2 > 0) ? (double)m.tsi_w_m2 : OI_TSI_W_M2;
+        double au = ((use_model & 1) && m.au_km > 0) ? (double)m.au_km : OI_AU_KM;
+        double d[3], sv[3], e_max, e0;
+        /* slack: relative, and a few units of the smallest subnormal times
+         * the factor applied after (AU/d)^2 may have been rounded there */
+        double tiny = 8.0 * (double)FZ_MIN_NORMAL * (double)FZ_EPS * (tsi > 1 ? tsi : 1);
+        int i;
+        for (i = 0; i < 3; i++) {
+            d[i] = (double)s.sun_km[i] - (double)s.target_km[i];
+            sv[i] = (double)s.sun_km[i];
+        }
+        e_max = tsi * inv_sq_scaled(au, d);
+        e0 = tsi * inv_sq_scaled(au, sv);
+        FZ_CHECK((double)o.e_sun <= e_max * (1 + 1e-5) + tiny);
+        FZ_CHECK((double)o.e_earth <= (double)s.earth_albedo * e0 * 2.02 + tiny);
+    }
     g_dump_illum = NULL;
 #ifndef OI_NO_EXPOSURE
     do_expose_scene(in, &s, &o, (use_model & 1) ? &m : NULL);
