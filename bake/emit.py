@@ -15,7 +15,7 @@ import numpy as np
 
 from . import __version__
 
-TABLE_FORMAT = 3  # must match OI_TABLE_FORMAT in include/oi_table.h
+TABLE_FORMAT = 4  # must match OI_TABLE_FORMAT in include/oi_table.h
 PER_LINE = 6
 
 
@@ -70,20 +70,26 @@ def provenance_lines(meta):
         "",
         "Table %s: diffuse earthshine of a uniform Lambertian Earth without" % meta["name"],
         "atmosphere, per unit albedo and unit solar irradiance (PHYSICS.md section 2).",
-        "Stored: q = phi / x^2 and psi (rad), float32, layout of include/oi_table.h.",
+        "Stored (format 4, include/oi_table.h): lit segment phi(0, x) / x^2 and G / w",
+        "  (phi = cos(theta) phi(0, x), tan psi = tan(theta) G exactly there);",
+        "  terminator segment phi / (x^2 w) and psi (rad); float32.",
         "Method: %s%s." % (meta["method"], meta.get("method_detail", "")),
         "Grid: n_lit = %d, n_term = %d, n_alt = %d (%d values per quantity)," % (
             g["n_lit"], g["n_term"], g["n_alt"], g["n_values"]),
-        "  w = acos(R/r) in [%s, %s] rad, uniform;" % (c_double(g["w_min"]), c_double(g["w_max"])),
+        "  w = acos(R/r) in [%s, %s] rad, uniform%s;" % (
+            c_double(g["w_min"]), c_double(g["w_max"]),
+            " (w = 0: the surface limit row)" if g["w_min"] == 0.0 else ""),
         "  terminator map k = %s x^%s." % (c_double(g["term_k0"]), c_double(g["term_kp"])),
         "Validity: altitude %s to %s (R = %s km; scale-free in R/r)," % (
-            _fmt_h(meta["h_min_km"]), _fmt_h(meta["h_max_km"]), "%.6f" % meta["radius_km"]),
+            _fmt_h(meta["h_min_km"]) if meta["h_min_km"] > 0 else "the surface (h > 0)",
+            _fmt_h(meta["h_max_km"]), "%.6f" % meta["radius_km"]),
         "  theta in [0, pi]; outside the altitude range the runtime uses the",
         "  Lambert far field and returns OI_WARN_TABLE_RANGE.",
         "Goal: relative error <= %g where phi >= 1%% of phi(0, x), absolute" % meta["rel_goal"],
         "  error <= %g phi(0, x) elsewhere." % (meta["rel_goal"] * 0.01),
         "Measured against bake/reference.py (order %d Gauss-Legendre) at %d points" % (
             m["reference_order"], m["n_points"]),
+        "  from %s up" % _fmt_h(max(meta["h_min_km"], m.get("h_measure_min_km", 0.0))),
         "  between the nodes (all cell centres, random, seed %d):" % m["seed"],
         "  max relative error (phi >= 1%% phi0)  %.3e" % m["max_rel_err"],
         "  max absolute error / phi0 (elsewhere) %.3e" % m["max_abs_err_frac"],

@@ -8,8 +8,10 @@ interpolation), spot-checked here against the mpmath path.
 
 Points are chosen off the table nodes: random (fixed seed) theta and log-
 uniform altitude from 100 km to 1e6 km, a dense set around the terminator at
-low altitude, LEO / GEO / lunar distance / Sun-Earth L2, huge altitudes, and
-points below the default table (far-field expected, computed here in mpmath).
+low altitude, LEO / GEO / lunar distance / Sun-Earth L2, huge altitudes; near
+the surface (es_low: 1 m, 1 km, 10 km, 50 km, 99 km and more, random 1 m to
+100 km); and points below the LEO scene table (far field expected, computed
+here in mpmath).
 """
 
 import math
@@ -52,6 +54,35 @@ def _points():
     return np.array(th), np.array(h)
 
 
+def _low_points():
+    """Near the surface (the default table's range below 100 km): named
+    altitudes 1 m, 1 km, 10 km, 50 km, 99 km and a few more, theta over the
+    lit side, around the 1% contour (cos theta ~ 0.005-0.05) and across the
+    terminator band pi/2 +- w; plus random log-uniform altitudes 1 m-100 km."""
+    rng = np.random.default_rng(20261123)
+    th, h = [], []
+    for hk in (0.001, 0.0037, 0.01, 0.1, 1.0, 3.3, 10.0, 27.0, 50.0, 99.0):
+        w = math.atan2(math.sqrt(hk * (2 * R + hk)), R)
+        for t in (0.0, 0.5, 1.2, 1.5):
+            th.append(t)
+            h.append(hk)
+        for c in (0.05, 0.02, 0.011):
+            th.append(math.acos(c))
+            h.append(hk)
+        for f in (-0.97, -0.7, -0.4, -0.13, -0.02, 0.0, 0.011, 0.09, 0.3, 0.6, 0.9):
+            th.append(math.pi / 2 + f * w)
+            h.append(hk)
+    n = 60
+    hh = 10 ** rng.uniform(-3.0, 2.0, n)
+    for hk in hh:
+        w = math.atan2(math.sqrt(hk * (2 * R + hk)), R)
+        th.append(math.pi / 2 + w * rng.uniform(-1.0, 1.0))
+        h.append(hk)
+    th += list(rng.uniform(0.0, math.pi / 2, n))
+    h += list(10 ** rng.uniform(-3.0, 2.0, n))
+    return np.array(th), np.array(h)
+
+
 def _far_field_mp(theta, h):
     import mpmath as mp
 
@@ -71,7 +102,16 @@ def main():
         pm, sm = ref.phi_psi_mpmath(th[k], x[k], 25)
         assert abs(float(pm) - phi[k]) <= 1e-12 * max(float(phi0[k]), 1e-300), k
         assert abs(float(sm) - psi[k]) <= 1e-10, k
-    # below the table (h < 100 km): far field and warning; theta outside [0, pi]
+    # near the surface: the reference with the altitude given exactly
+    # (phi_psi_reference_h, no cancellation in 1/x - 1)
+    th_l, h_l = _low_points()
+    phi_l, psi_l = ref.phi_psi_reference_h(th_l, h_l / R, ORDER, ORDER)
+    phi0_l = ref.phi_psi_reference_h(np.zeros_like(h_l), h_l / R, ORDER, ORDER)[0]
+    for k in (0, 5, 40, 80, 150):  # mpmath spot checks (lit side, low altitude)
+        pm, sm = ref.phi_psi_mpmath(th_l[k], R / (R + h_l[k]), 25)
+        assert abs(float(pm) - phi_l[k]) <= 1e-9 * float(phi0_l[k]), (k, float(pm), phi_l[k])
+    # below a table (the LEO scene table, 200-2000 km): far field and warning;
+    # theta outside [0, pi]
     below = [(0.3, 50.0), (1.2, 99.0), (2.0, 10.0)]
     clamped = [(-0.5, 500.0, 0.0), (4.0, 500.0, math.pi), (-1e-3, 35786.0, 0.0)]
 
@@ -87,7 +127,12 @@ def main():
     for a, b, c, d, e in zip(th, h, phi, psi, phi0):
         lines.append("    {%.17g, %.17g, %.17g, %.17g, %.17g}," % (a, b, c, d, e))
     lines.append("};\n")
-    lines.append("/* below the default table: far field x^2 p(theta) (mpmath), OI_WARN_TABLE_RANGE */")
+    lines.append("/* near the surface, 1 m .. 100 km (phi_psi_reference_h, altitude exact) */")
+    lines.append("static const es_ref es_low[] = {")
+    for a, b, c, d, e in zip(th_l, h_l, phi_l, psi_l, phi0_l):
+        lines.append("    {%.17g, %.17g, %.17g, %.17g, %.17g}," % (a, b, c, d, e))
+    lines.append("};\n")
+    lines.append("/* below the LEO scene table: far field x^2 p(theta) (mpmath), OI_WARN_TABLE_RANGE */")
     lines.append("static const es_ref es_below[] = {")
     for a, b in below:
         lines.append("    {%.17g, %.17g, %.17g, 0.0, 0.0}," % (a, b, _far_field_mp(a, b)))
@@ -100,7 +145,7 @@ def main():
     lines.append("#endif /* REF_EARTHSHINE_H */")
     with open(OUT, "w", encoding="ascii", newline="\n") as f:
         f.write("\n".join(lines) + "\n")
-    print("wrote %s (%d points)" % (OUT, len(th)))
+    print("wrote %s (%d + %d points)" % (OUT, len(th), len(th_l)))
 
 
 if __name__ == "__main__":

@@ -33,6 +33,9 @@ HALF_PI = 0.5 * math.pi
 # the default grid against the uniform map, docs/earthshine-table.md).
 TERM_K0 = 2.0
 TERM_KP = 8.0
+# Lowest altitude of the error measurement (1 m): a table that starts at the
+# surface (w_min = 0) is measured from there up.
+H_MEASURE_MIN_KM = 1e-3
 K_SMALL = 1e-4  # below: m(t) = t (the map's deviation is k^2/6 ~ 2e-9)
 
 
@@ -71,8 +74,8 @@ class TableSpec:
         self.w_max = float(w_max)
         if min(self.n_lit, self.n_term, self.n_alt) < 2:
             raise ValueError("each axis needs at least 2 nodes")
-        if not (0.0 < self.w_min < self.w_max <= HALF_PI):
-            raise ValueError("need 0 < w_min < w_max <= pi/2")
+        if not (0.0 <= self.w_min < self.w_max <= HALF_PI):
+            raise ValueError("need 0 <= w_min < w_max <= pi/2")
 
     @property
     def n_theta(self):
@@ -165,32 +168,100 @@ def reference_chunked(theta, x, order, label="reference", progress=None, chunk=2
     return phi, psi
 
 
-def node_values(spec, order=32, method="quadrature", progress=None, photon_args=None):
-    """q = phi/x^2 and psi at the nodes (float64, shape (n_alt, n_theta))."""
-    theta, x = node_coords(spec)
-    far = x <= 0.0
-    q = np.empty_like(theta)
-    psi = np.zeros_like(theta)
-    near = ~far
+def _eval(theta, x, order, method, progress, photon_args, label):
+    """phi, psi at flat arrays of points (quadrature or photon mapping)."""
     if method == "quadrature":
-        phi, ps = reference_chunked(theta[near], x[near], order, "bake (quadrature)", progress)
-    elif method == "photon":
+        return reference_chunked(theta, x, order, label, progress)
+    if method == "photon":
         from . import photon  # lazily: the photon mapper is optional
 
         args = dict(photon_args or {})
-        res = photon.bake_phi(theta[near], x[near], int(args.get("n_photons", 2_000_000)),
+        res = photon.bake_phi(theta, x, int(args.get("n_photons", 2_000_000)),
                               int(args.get("seed", 1)))
         if isinstance(res, tuple):
-            phi, ps = np.asarray(res[0], dtype=float), np.asarray(res[1], dtype=float)
-        else:
-            phi = np.asarray(res, dtype=float)
-            _, ps = reference_chunked(theta[near], x[near], order, "psi (quadrature)", progress)
-    else:
-        raise ValueError("unknown method %r" % method)
-    q[near] = phi / x[near] ** 2
-    psi[near] = ps
-    q[far] = ref.lambert_phase(theta[far])
-    psi[far] = 0.0
+            return np.asarray(res[0], dtype=float), np.asarray(res[1], dtype=float)
+        _, ps = reference_chunked(theta, x, order, "psi (quadrature)", progress)
+        return np.asarray(res, dtype=float), ps
+    raise ValueError("unknown method %r" % method)
+
+
+def node_values(spec, order=32, method="quadrature", progress=None, photon_args=None):
+    """Stored values at the nodes (float64, shape (n_alt, n_theta)): the
+    "q" and "psi" arrays of the table.
+
+    terminator segment: q = phi / x^2 and psi.
+    lit segment (format 4): where the visible cap is wholly lit, phi(theta, x)
+    = cos(theta) phi(0, x) and tan psi = tan(theta) G(x) exactly (the
+    azimuthal cos term of cos i integrates to zero over the cap, see
+    surface_limit), so every lit column stores the same two functions of
+    altitude: q0 = phi(0, x) / x^2 (in "q") and G (in "psi"); the runtime
+    forms q = q0 cos(theta), psi = atan2(G sin(theta), cos(theta)).
+    G is taken at theta = (pi/2 - w)/2."""
+    theta, x = node_coords(spec)
+    nl = spec.n_lit
+    far = x <= 0.0
+    q = np.empty_like(theta)
+    psi = np.zeros_like(theta)
+    surf = np.zeros(theta.shape, dtype=bool)
+    if spec.w_min == 0.0:
+        surf[0, :] = True  # the row w = 0 (h = 0): the limit, see surface_limit
+    near = ~far & ~surf
+    near[:, :nl] = False
+    # the lit columns: phi(0, x) and G(x) once per row
+    xr = x[:, 0]
+    rows = (xr > 0.0) & ~surf[:, 0]
+    th_g = 0.5 * (HALF_PI - spec.w_nodes()[rows])
+    n_r = int(rows.sum())
+    n_t = int(near.sum())
+    phi, ps = _eval(np.concatenate([theta[near], np.zeros(n_r), th_g]),
+                    np.concatenate([x[near], xr[rows], xr[rows]]), order, method, progress,
+                    photon_args, "bake (%s)" % method)
+    q[near] = phi[:n_t] / x[near] ** 2
+    psi[near] = ps[:n_t]
+    q0 = np.empty(spec.n_alt)
+    g = np.zeros(spec.n_alt)
+    q0[rows] = phi[n_t:n_t + n_r] / xr[rows] ** 2
+    g[rows] = np.tan(ps[n_t + n_r:]) / np.tan(th_g)
+    q0[xr <= 0.0] = ref.lambert_phase(0.0)
+    q0[surf[:, 0]] = 2.0
+    q[:, :nl] = q0[:, None]
+    psi[:, :nl] = g[:, None]
+    tf = far[:, nl:]
+    q[:, nl:][tf] = ref.lambert_phase(theta[:, nl:][tf])
+    psi[:, nl:][tf] = 0.0
+    # divided by w (format 4): near the surface the terminator segment's q and
+    # the lit segment's G vanish like w and w^2 (with log(1/w) factors that
+    # cubic interpolation in w handles poorly); the runtime multiplies by w
+    wn = spec.w_nodes()[1:, None] if spec.w_min == 0.0 else spec.w_nodes()[:, None]
+    r0 = 1 if spec.w_min == 0.0 else 0
+    q[r0:, nl:] /= wn
+    psi[r0:, :nl] /= wn
+    if surf.any():
+        t = 2.0 * np.linspace(0.0, 1.0, spec.n_term) - 1.0
+        q[0, nl:], psi[0, nl:] = surface_limit(term_m(t, term_k(spec, 1.0)))
+    return q, psi
+
+
+def surface_limit(m):
+    """q = phi / x^2 and psi of the terminator segment in the limit h -> 0
+    (the node row w = 0; the lit segment's row is q0 = 2, G = 0).
+
+    Where the visible cap is wholly lit (theta <= pi/2 - w) the azimuthal
+    cos term of cos i integrates to zero, so phi(theta, x) = cos(theta)
+    phi(0, x) exactly; phi(0, x) -> 2 (a flat Lambertian plane filling the
+    lower hemisphere: (1/pi) int cos(i) dOmega = 2 cos(i)), so q -> 2 cos(theta)
+    (the lit segment at w = 0 spans theta in [0, pi/2]). The terminator
+    segment shrinks to theta = pi/2, where q -> 0 (q = O(w) there: the
+    sun's elevation at the nadir is at most w). psi -> 0 on the lit side (tan
+    psi = tan(theta) G(x), G = O(w^2)); in the dark-nadir half of the
+    terminator segment only light from near the horizon arrives and psi ->
+    pi/2 (logarithmically slowly at theta = pi/2 exactly). psi is outside the
+    goal there (phi < 1% of phi(0, x)); the runtime clamps it to
+    [0, pi/2 - w]."""
+    m = np.asarray(m, dtype=float)  # (theta - pi/2) / w in [-1, 1]
+    # q / w -> 2 max(0, -m): the flat plane's 2 cos(theta), cos(theta) ~ -w m
+    q = np.where(m < 0.0, -2.0 * m, 0.0)
+    psi = np.where(m < 0.0, 0.0, HALF_PI)
     return q, psi
 
 
@@ -203,10 +274,11 @@ def _cr_weights(f):
             0.5 * (-3 * f3 + 4 * f2 + f), 0.5 * (f3 - f2))
 
 
-def _segment_interp(tab, fv, fw, kind="cubic"):
+def _segment_interp(tab, fv, fw, kind="cubic", surface=False):
     """Catmull-Rom on one segment tab[n_alt, n] at fractional indices (fv along
     theta, fw along altitude), ghosts by linear extrapolation; kind="linear":
-    bilinear (for the comparison in the report)."""
+    bilinear (for the comparison in the report). surface: the first row is
+    w = 0, its ghost row by quadratic extrapolation."""
     n_alt, n = tab.shape
     if kind == "linear":
         i = np.clip(np.floor(fv).astype(int), 0, n - 2)
@@ -216,6 +288,10 @@ def _segment_interp(tab, fv, fw, kind="cubic"):
         return ((1 - a) * (1 - b) * tab[j, i] + a * (1 - b) * tab[j, i + 1]
                 + (1 - a) * b * tab[j + 1, i] + a * b * tab[j + 1, i + 1])
     T = np.pad(tab, 1, mode="reflect", reflect_type="odd")  # ghost = 2 f0 - f1
+    if surface and n_alt >= 3:
+        # the row w = 0: quadratic extrapolation (q = 2w - 2w^2 + ... at the
+        # lit edge: the linear ghost cost 7x the goal at h ~ 150 m)
+        T[0, :] = 3.0 * T[1, :] - 3.0 * T[2, :] + T[3, :]
     i = np.clip(np.floor(fv).astype(int), 0, n - 2)
     a = fv - i
     j = np.clip(np.floor(fw).astype(int), 0, n_alt - 2)
@@ -247,10 +323,12 @@ def lookup(spec, q_tab, psi_tab, theta, x, kind="cubic"):
         v_term = 0.5 * (term_t(m, term_k(spec, x)) + 1.0)
     fl = np.clip(v_lit, 0, 1) * (spec.n_lit - 1)
     ft = np.clip(v_term, 0, 1) * (spec.n_term - 1)
-    q_lit = _segment_interp(q_tab[:, :spec.n_lit], fl, fw, kind)
-    q_term = _segment_interp(q_tab[:, spec.n_lit:], ft, fw, kind)
-    p_lit = _segment_interp(psi_tab[:, :spec.n_lit], fl, fw, kind)
-    p_term = _segment_interp(psi_tab[:, spec.n_lit:], ft, fw, kind)
+    sf = spec.w_min == 0.0
+    q_lit = _segment_interp(q_tab[:, :spec.n_lit], fl, fw, kind, sf) * np.cos(theta)
+    q_term = _segment_interp(q_tab[:, spec.n_lit:], ft, fw, kind, sf) * w
+    g_lit = _segment_interp(psi_tab[:, :spec.n_lit], fl, fw, kind, sf) * w
+    p_lit = np.arctan2(g_lit * np.sin(theta), np.cos(theta))
+    p_term = _segment_interp(psi_tab[:, spec.n_lit:], ft, fw, kind, sf)
     q = np.where(lit, q_lit, q_term)
     ps = np.where(lit, p_lit, p_term)
     dark = theta >= HALF_PI + w
@@ -312,13 +390,27 @@ def sample_points(spec, n_random, seed=12345, refine=True):
         add(VV, WW, 1)
     # log-uniform in altitude (denser at the bottom, where the terminator is
     # hardest), theta uniform in the terminator band and over [0, pi]
-    h_lo = h_from_w(spec.w_min)
+    h_lo = max(h_from_w(spec.w_min), H_MEASURE_MIN_KM)
     h_hi = min(h_from_w(spec.w_max), 1e7)
     hh = 10 ** rng.uniform(math.log10(h_lo), math.log10(h_hi), n_random)
     wl = np.minimum(np.maximum(w_from_h(hh), spec.w_min), spec.w_max)
     add(rng.uniform(0, 1, n_random), wl, 1)
     pts_t.append(rng.uniform(0, math.pi, n_random))
     pts_w.append(wl)
+    # near the surface (tables from below 100 km): 41 altitudes log-uniform
+    # from 1 m (or the table's floor) to 100 km, 61 theta each across the
+    # terminator segment (m in [-1, 1], jittered) and around the lit side's
+    # 1% contour (cos theta ~ 0.005 .. 0.05)
+    if h_lo < 100.0:
+        hs = np.logspace(math.log10(h_lo), 2.0, 41) * (1.0 + 0.01 * rng.uniform(0, 1, 41))
+        for hk in hs:
+            wk = float(w_from_h(hk))
+            if not (spec.w_min <= wk <= spec.w_max):
+                continue
+            mm = np.clip(np.linspace(-1.0, 1.0, 41) + rng.uniform(-0.02, 0.02, 41), -1.0, 1.0)
+            tl = np.arccos(np.geomspace(0.005, 0.05, 20))
+            pts_t.append(np.concatenate([HALF_PI + wk * mm, np.minimum(tl, HALF_PI - wk)]))
+            pts_w.append(np.full(61, wk))
     # uniform in (theta, w)
     tt = rng.uniform(0, math.pi, n_random)
     ww = rng.uniform(spec.w_min, spec.w_max, n_random)
@@ -327,6 +419,7 @@ def sample_points(spec, n_random, seed=12345, refine=True):
     theta = np.concatenate(pts_t)
     w = np.concatenate(pts_w)
     w = np.minimum(w, np.nextafter(HALF_PI, 0.0) - 1e-9)  # x > 0 for the reference
+    w = np.maximum(w, w_from_h(H_MEASURE_MIN_KM))  # the measured range starts at 1 m
     return np.clip(theta, 0.0, math.pi), w
 
 

@@ -31,12 +31,16 @@ at u = pi/4 and each half goes through a sinh map: about u = 0 with the
 altitude's scale (the near-singular 1/d^3 peak under low orbits) and about
 u = pi/2 with the scale x/ym (far away the limb half-width a(u) turns over on
 that scale); gamma goes through a sinh map about the nadir.  Gauss-Legendre
-on each piece then converges geometrically: with the default orders (48) the
-relative error is < 1e-12 for h >= 6 km (x <= 0.999), < 1e-10 down to
-h = 0.6 km, from there to infinity (checked by order doubling, against closed
+on each piece then converges geometrically.  The inner gamma integral is
+split at the nadir into two panels (each with half the nodes), so the 1/d^3
+peak sits at a panel end: a single panel across the sinh-mapped range (length
+~log(4/w), long near the surface) lost 1.3e-6 at h = 1 m.  With the default
+orders (48) the relative error is < 1e-11 from h = 1 cm to infinity (3e-12 at
+1 m, < 1e-14 above 1 km; checked by order doubling to 160, against closed
 forms and against the independent mpmath path `phi_psi_mpmath`, see
-tests/python/test_reference.py).  Order 32 (the bake) gives < 1e-11 for
-h >= 100 km.
+tests/python/test_reference.py).  Order 32 (the bake) gives < 3e-8 at 1 m and
+< 3e-14 at 100 km.  Near the surface pass the altitude itself
+(phi_psi_reference_h): 1/x - 1 keeps only 9 digits at h = 1 m.
 
 mpmath path: polar coordinates (alpha, beta) around the sub-point, the inner
 beta range closed-form from the terminator, tanh-sinh quadrature with
@@ -50,6 +54,7 @@ __all__ = [
     "phi_reference",
     "phi_psi_reference",
     "phi_psi_reference_x",
+    "phi_psi_reference_h",
     "uniform_sphere_reference",
     "uniform_sphere_closed",
     "lambert_phase",
@@ -106,9 +111,12 @@ def far_field(theta, x):
     return x * x * lambert_phase(theta)
 
 
-def _integrate(theta, x, n_outer, n_inner, uniform=False):
+def _integrate(theta, x, n_outer, n_inner, uniform=False, h_over_r=None):
     """Core quadrature. Returns (phi, fx, fz) with the flux vector (fx, fz),
-    fz measured towards the nadir, all per unit albedo and unit solar irradiance."""
+    fz measured towards the nadir, all per unit albedo and unit solar irradiance.
+    h_over_r (optional, same shape as x): the altitude in Earth radii, used
+    instead of 1/x - 1 (no cancellation near the surface: x = 1 - 1.6e-7 at
+    h = 1 m leaves 1/x - 1 only 9 correct digits)."""
     theta = np.asarray(theta, dtype=float)
     x = np.asarray(x, dtype=float)
     theta, x = np.broadcast_arrays(theta, x)
@@ -119,8 +127,15 @@ def _integrate(theta, x, n_outer, n_inner, uniform=False):
         raise ValueError("x = R/r must be in (0, 1)")
     r = 1.0 / xx
     ym = np.sqrt((1.0 - xx) * (1.0 + xx))
+    hr_given = None
+    if h_over_r is not None:
+        hr_given = np.broadcast_to(np.asarray(h_over_r, dtype=float), shape).ravel()
+        if np.any(~(hr_given > 0.0)):
+            raise ValueError("h_over_r must be > 0")
+        r = 1.0 + hr_given
+        ym = np.sqrt(hr_given * (2.0 + hr_given)) / r
     w = np.arctan2(ym, xx)  # acos(x): angular radius of the visible cap
-    hr = r - 1.0  # altitude in Earth radii
+    hr = r - 1.0 if hr_given is None else hr_given  # altitude in Earth radii
 
     c = th - 0.5 * np.pi
     if uniform:
@@ -148,7 +163,7 @@ def _integrate(theta, x, n_outer, n_inner, uniform=False):
     u0 = s0 / np.maximum(ym, 1e-300)
 
     tu, wu = _gl(n_outer)
-    tg, wg = _gl(n_inner)
+    tg, wg = _gl((n_inner + 1) // 2)  # per panel, two panels
 
     phi = np.zeros_like(th)
     fx = np.zeros_like(th)
@@ -187,9 +202,16 @@ def _integrate(theta, x, n_outer, n_inner, uniform=False):
         g0 = np.sqrt(s0[idx][:, None] ** 2 + y * y)
         sa = np.arcsinh(ga / g0)
         sb = np.arcsinh(gb / g0)
-        s = sa[..., None] + (sb - sa)[..., None] * tg
+        # two panels split at the nadir (s = 0), where the 1/d^3 peak sits:
+        # with the peak at a panel end Gauss-Legendre converges geometrically
+        # however long the sinh-mapped range is (~log(4/w), long at low
+        # altitude: one panel across it lost 1e-6 at h = 1 m)
+        sm = np.clip(0.0, sa, sb)
+        s = np.concatenate([sa[..., None] + (sm - sa)[..., None] * tg,
+                            sm[..., None] + (sb - sm)[..., None] * tg], axis=-1)
+        ds = np.concatenate([(sm - sa)[..., None] * wg, (sb - sm)[..., None] * wg], axis=-1)
         g = g0[..., None] * np.sinh(s)
-        dg = g0[..., None] * np.cosh(s) * (sb - sa)[..., None] * wg
+        dg = g0[..., None] * np.cosh(s) * ds
         rho3 = rho[..., None]
         r3 = r[idx][:, None, None]
         hr3 = hr[idx][:, None, None]
@@ -229,6 +251,17 @@ def phi_psi_reference(theta, x, n_outer=N_OUTER, n_inner=N_INNER):
     0 where phi = 0.
     """
     return phi_psi_reference_x(theta, x, n_outer, n_inner)
+
+
+def phi_psi_reference_h(theta, h_over_r, n_outer=N_OUTER, n_inner=N_INNER):
+    """phi and psi as functions of (theta, h / R): the same quadrature with the
+    altitude given directly (x = 1 / (1 + h/R)), for the last digits near the
+    surface (the stability suite's 1e-12 at h = 1 m)."""
+    hr = np.asarray(h_over_r, dtype=float)
+    theta, hr = np.broadcast_arrays(np.asarray(theta, dtype=float), hr)
+    phi, fx, fz = _integrate(theta, 1.0 / (1.0 + hr), n_outer, n_inner, h_over_r=hr)
+    psi = np.where(phi > 0.0, np.arctan2(fx, fz), 0.0)
+    return phi, psi
 
 
 def phi_reference(theta, x, n_outer=N_OUTER, n_inner=N_INNER):

@@ -68,7 +68,9 @@ def _lookup_bilinear(spec, q_tab, theta, x):
         v_term = (theta - tb) / (2.0 * w)
     q_lit = _bilinear_segment(q_tab[:, :spec.n_lit], np.clip(v_lit, 0, 1) * (spec.n_lit - 1), fw)
     q_term = _bilinear_segment(q_tab[:, spec.n_lit:], np.clip(v_term, 0, 1) * (spec.n_term - 1), fw)
-    q = np.where(lit, q_lit, q_term)
+    # table format 4 (include/oi_table.h): lit columns hold phi(0,x)/x^2, the
+    # terminator segment phi/(x^2 w)
+    q = np.where(lit, q_lit * np.cos(theta), q_term * w)
     dark = theta >= 0.5 * math.pi + w
     return np.where(dark, 0.0, np.maximum(q, 0.0) * x * x)
 

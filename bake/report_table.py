@@ -47,7 +47,7 @@ def _load_default():
 
 def _fig_image(spec, q, psi, path, plt):
     th = np.linspace(0, math.pi, 361)
-    h = np.logspace(2, 6, 241)
+    h = np.logspace(-3, 6, 361)  # 1 m .. 1e6 km
     TH, H = np.meshgrid(th, h)
     x = ref.x_from_h(H)
     phi, ps = grid.lookup(spec, q, psi, TH, x)
@@ -74,7 +74,7 @@ def _fig_image(spec, q, psi, path, plt):
 
 def _fig_curves(path, plt):
     th = np.linspace(0, math.pi, 721)
-    alts = [100.0, 400.0, 2000.0, 20200.0, 35786.0, 384400.0]
+    alts = [0.001, 10.0, 100.0, 400.0, 2000.0, 20200.0, 35786.0, 384400.0]
     fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
     rows = []
     for hk in alts:
@@ -98,8 +98,8 @@ def _fig_curves(path, plt):
 
 
 def _error_vs_bytes(path, plt, quick=False):
-    w_lo = float(grid.w_from_h(100.0))
-    sizes = [(9, 17, 16), (17, 33, 32), (25, 49, 48), (33, 65, 64), (41, 81, 64), (65, 129, 96)]
+    w_lo = 0.0  # from the surface (format 4: two lit columns are exact)
+    sizes = [(2, 17, 32), (2, 33, 48), (2, 49, 64), (2, 65, 96), (2, 65, 122), (2, 97, 160)]
     if quick:
         sizes = sizes[:3]
     res = {"cubic": [], "linear": []}
@@ -153,6 +153,31 @@ def _farfield(path, plt):
     return out
 
 
+BAND_EDGES_KM = [0.0, 0.01, 0.1, 1.0, 10.0, 30.0, 100.0, 1000.0, 1e5, math.inf]
+
+
+def bands(spec, q, psi, n_random=4000, seed=12345):
+    """Max error / goal and psi error by altitude band, at the bake's
+    measurement points (grid.sample_points). Returns markdown rows."""
+    theta, w = grid.sample_points(spec, n_random, seed, True)
+    x = np.cos(w)
+    phi_r, psi_r = grid.reference_chunked(theta, x, 32, "bands", False)
+    phi0, _ = grid.reference_chunked(np.zeros_like(x), x, 32, "bands", False)
+    phi_i, psi_i = grid.lookup(spec, q.astype(float), psi.astype(float), theta, x)
+    s, big = grid.goal_score(phi_i, phi_r, phi0)
+    dpsi = np.where(big, np.abs(psi_i - psi_r), 0.0)
+    h = ref.h_from_x(x)
+    rows = ["| altitude (km) | points | max error / goal | psi error (rad) | worst at m = (theta - 90 deg)/w |",
+            "|---|---|---|---|---|"]
+    for a, b in zip(BAND_EDGES_KM[:-1], BAND_EDGES_KM[1:]):
+        m = (h >= a) & (h < b)
+        if m.any():
+            k = int(np.argmax(np.where(m, s, -1.0)))
+            rows.append("| %g - %g | %d | %.3f | %.2e | %.3f |" % (
+                a, b, int(m.sum()), s[m].max(), dpsi[m].max(), (theta[k] - math.pi / 2) / w[k]))
+    return rows
+
+
 def section(outdir, quick=False):
     """Markdown of the table section; PNGs into outdir."""
     import matplotlib
@@ -182,8 +207,9 @@ def section(outdir, quick=False):
     L.append("Design: docs/earthshine-table.md. Reference: bake/reference.py (quadrature, "
              "< 1e-11 relative at the bake's order, checked against mpmath and closed forms).\n")
     L.append("Shipped table `%s`: %d+%d theta nodes x %d altitude nodes, %d bytes (phi and psi, "
-             "float32), altitude %.0f km to %s.\n" % (
-                 TABLE, spec.n_lit, spec.n_term, spec.n_alt, spec.bytes(), hmin,
+             "float32), altitude %s to %s.\n" % (
+                 TABLE, spec.n_lit, spec.n_term, spec.n_alt, spec.bytes(),
+                 "the surface (measured from 1 m)" if hmin == 0 else "%.0f km" % hmin,
                  "infinity" if hmax == math.inf else "%.0f km" % hmax))
     L.append("Measured now at %d points between the nodes (seed 2024, not the bake's), in %.1f s:\n" % (
         m["n_points"], t_meas))
@@ -193,8 +219,11 @@ def section(outdir, quick=False):
     L.append("| max error in units of the goal (whole domain) | %.3f | <= 1 |" % m["max_score"])
     L.append("| same, terminator band theta = 90 deg +- acos(R/r) | %.3f | <= 1 |" % m["max_score_terminator"])
     L.append("| max psi error where phi >= 1%% phi(0,x) (rad) | %.3e | 1e-3 |" % m["max_psi_err_rad"])
-    L.append("| worst point | theta = %.4f rad, h = %.0f km | |" % (m["worst_theta"], m["worst_h_km"]))
+    L.append("| worst point | theta = %.4f rad, h = %.4g km | |" % (m["worst_theta"], m["worst_h_km"]))
     L.append("| payload bytes | %d | <= 65536 |\n" % spec.bytes())
+    L.append("By altitude band (the bake's measurement points):\n")
+    L.extend(bands(spec, q, psi))
+    L.append("")
     L.append("![table image](%s)\n" % img("table_image.png"))
     L.append("*Seed Fig. 7 redone*: the table's phi and psi over theta and log altitude "
              "(the seed tabulated uniform in h; here w = acos(R/r)).\n")
@@ -205,7 +234,7 @@ def section(outdir, quick=False):
     for hk, p0, ratio in rows:
         L.append("| %g | %.6e | %.5f |" % (hk, p0, ratio))
     L.append("\n![error vs bytes](%s)\n" % img("table_error_bytes.png"))
-    L.append("Interpolation error against resolution and bytes, 100 km to infinity "
+    L.append("Interpolation error against resolution and bytes, the surface (1 m) to infinity "
              "(800 random points per segment plus every cell centre):\n")
     L.append("| grid (lit+term x alt) | bytes | Catmull-Rom max rel err | CR error/goal | "
              "bilinear max rel err | bilinear error/goal | node bake (s) |\n|---|---|---|---|---|---|---|")
@@ -216,7 +245,7 @@ def section(outdir, quick=False):
     L.append("Far-field Lambert model x^2 p(theta) against the reference, max error in units of "
              "the goal over theta: %s. It stays outside the goal to %s, so the table runs to "
              "infinity (its last node is x = 0, where q = p(theta) exactly) and the far field is "
-             "used only below the table's lowest altitude or by request.\n" % (
+             "used only outside a scene table's altitude band or by request.\n" % (
                  ", ".join("%.3g km: %.3g" % o for o in ff[::4]),
                  ("%.3g km" % ff_ok[0]) if ff_ok else "beyond %.3g km" % ff[-1][0]))
     return "\n".join(L) + "\n"
@@ -225,5 +254,9 @@ def section(outdir, quick=False):
 if __name__ == "__main__":
     import sys
 
+    if "--bands" in sys.argv:  # only the per-band error table of the default table
+        sp, qq, pp, _ = _load_default()
+        print("\n".join(bands(sp, qq, pp)))
+        sys.exit(0)
     out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build", "report_table")
     print(section(out, quick="--quick" in sys.argv))

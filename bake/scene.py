@@ -19,7 +19,8 @@ from . import reference as ref
 
 # Ladder of theta resolutions (n_lit, n_term) and altitude resolutions tried
 # for scenes, smallest first.
-THETA_LADDER = [(3, 5), (5, 9), (7, 13), (9, 17), (13, 25), (17, 33), (25, 49), (33, 65), (41, 81)]
+# (format 4: the lit segment is exact in theta, two columns suffice)
+THETA_LADDER = [(2, 5), (2, 9), (2, 13), (2, 17), (2, 25), (2, 33), (2, 49), (2, 65), (2, 81)]
 ALT_LADDER = [2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64]
 SEARCH_MARGIN = 0.6  # a candidate passes the (sparser) search at 60 % of the goal
 
@@ -44,12 +45,14 @@ def band(cfg):
     R = float(cfg["radius_km"])
     h_lo = float(cfg["h_min_km"])
     h_hi = cfg["h_max_km"]
+    if not h_lo >= 0.0:
+        raise ValueError("need h_min_km >= 0 (0: from the surface)")
     w_lo = float(grid.w_from_h(h_lo, R))
     if h_hi is None:
         return w_lo, grid.HALF_PI, h_lo, math.inf
     h_hi = float(h_hi)
-    if not h_hi > h_lo > 0:
-        raise ValueError("need 0 < h_min_km < h_max_km")
+    if not h_hi > h_lo >= 0:
+        raise ValueError("need 0 <= h_min_km < h_max_km")
     return w_lo, float(grid.w_from_h(h_hi, R)), h_lo, h_hi
 
 
@@ -111,6 +114,7 @@ def bake(cfg, outdir, method="quadrature", log=print, progress=None, photon_args
     m = grid.measure(spec, q32, p32, n_random=int(mcfg["n_random"]), order=order,
                      progress=progress, rel_goal=cfg["rel_goal"], seed=int(mcfg["seed"]))
     m["reference_order"] = order
+    m["h_measure_min_km"] = grid.H_MEASURE_MIN_KM
     m["seed"] = int(mcfg["seed"])
     m["n_random"] = int(mcfg["n_random"])
     # round the measurements so that the output does not depend on the last
@@ -135,8 +139,11 @@ def bake(cfg, outdir, method="quadrature", log=print, progress=None, photon_args
                      coordinates="w = acos(R/r) uniform; theta: lit segment v(pi/2-w), "
                                  "terminator segment pi/2 + w sinh(k(2v-1))/sinh(k), "
                                  "k = term_k0 x^term_kp",
-                     stored="q = phi/x^2, psi (rad), float32",
-                     interpolation="Catmull-Rom per segment, linear-extrapolated ghosts"),
+                     stored="lit segment: q = phi(0,x)/x^2, psi = G/w (phi = cos(theta) phi(0,x), "
+                            "tan psi = tan(theta) G); terminator segment: q = phi/(x^2 w), "
+                            "psi (rad); float32",
+                     interpolation="Catmull-Rom per segment, linear-extrapolated ghosts "
+                                   "(quadratic below the surface row w = 0)"),
         "h_min_km": h_lo,
         "h_max_km": h_hi,
         "radius_km": float(cfg["radius_km"]),

@@ -4,11 +4,11 @@
  * tables/ and docs/earthshine-table.md).
  *
  * A table holds, per unit albedo and unit solar irradiance at the Earth,
- *   q(theta, w)   = phi(theta, x) / x^2     (phi: scalar irradiance)
- *   psi(theta, w) = mean incidence direction (rad, from the nadir towards the Sun)
- * on a grid in
+ * values of phi (scalar irradiance) and psi (mean incidence direction, rad,
+ * from the nadir towards the Sun) on a grid in
  *   w = acos(x) = atan2(sqrt(h (2R + h)), R)   (x = R / r), nodes uniform in
- *       w on [w_min, w_max]; w_max = pi/2 means "to infinity";
+ *       w on [w_min, w_max]; w_max = pi/2 means "to infinity"; w_min = 0
+ *       means "from the surface": that row is the limit h -> 0 (see below);
  *   theta, in two segments that share their boundary node column:
  *       lit  (v = 0..1):  theta = v (pi/2 - w)          (visible cap fully lit)
  *       term (v = 0..1):  theta = pi/2 + w m(2v - 1)      (terminator crosses it)
@@ -16,10 +16,22 @@
  *                         (m(t) = t for k = 0): nodes denser near theta = pi/2
  *                         at low altitude, where the terminator crosses the nadir
  *       beyond theta = pi/2 + w nothing lit is visible: phi = 0.
+ * Stored (format 4):
+ *   lit segment:   q[] = q0(w) = phi(0, x) / x^2 and psi[] = G(w) / w, where
+ *                  phi(theta, x) = cos(theta) phi(0, x) and
+ *                  tan psi = tan(theta) G(x) hold exactly while the whole
+ *                  visible cap is lit (every lit column holds the same values;
+ *                  n_lit = 2 suffices);
+ *   term segment:  q[] = phi / (x^2 w) and psi[] = psi.
+ *   The runtime forms phi = x^2 cos(theta) q0, psi = atan2(G sin(theta),
+ *   cos(theta)) in the lit segment and phi = x^2 w q in the terminator segment.
+ *   Surface row (w_min = 0): q0 = 2, G / w = 0 (a flat Lambertian plane:
+ *   phi = 2 cos(theta)); terminator q = 2 max(0, -m), psi = 0 for m < 0 and
+ *   pi/2 for m >= 0; its ghost row is extrapolated quadratically (n_alt >= 3).
  * Values are row-major by altitude: value[j * (n_lit + n_term) + i], j the
  * altitude node, i < n_lit the lit segment, i >= n_lit the terminator segment.
  * The runtime interpolates with Catmull-Rom splines per segment (ghost nodes
- * by linear extrapolation at segment ends).
+ * by linear extrapolation at segment ends, quadratic below a surface row).
  *
  * The table is scale-free (phi depends on theta and x only): it serves any
  * Earth radius. The payload is float in both precisions; the grid is double.
@@ -28,22 +40,24 @@
 #define OI_TABLE_H
 
 /* Version of this layout: every generated table header checks it. */
-#define OI_TABLE_FORMAT 3
+#define OI_TABLE_FORMAT 4
 
 typedef struct oi_earth_table {
     int format;           /* OI_TABLE_FORMAT of the generator */
     int n_lit;            /* theta nodes of the lit segment, >= 2 */
     int n_term;           /* theta nodes of the terminator segment, >= 2 */
     int n_alt;            /* altitude (w) nodes, >= 2 */
-    double w_min;         /* first altitude node, w = acos(R/r) (rad), > 0 */
+    double w_min;         /* first altitude node, w = acos(R/r) (rad), >= 0
+                             (0: the surface, h = 0) */
     double w_max;         /* last altitude node (rad), <= pi/2 (pi/2: infinity) */
     double term_k0;       /* terminator map strength k0 (>= 0, 0: uniform in theta) */
     double term_kp;       /* terminator map altitude exponent kp (>= 0) */
     double max_rel_err;   /* measured max relative error of phi where phi >= 1% of
                              phi(0, x) (provenance, not used by the lookup) */
     double max_abs_err;   /* measured max error / phi(0, x) elsewhere (provenance) */
-    const float *q;       /* phi / x^2, (n_lit + n_term) * n_alt values */
-    const float *psi;     /* mean incidence direction (rad), same layout */
+    const float *q;       /* lit: phi(0, x) / x^2; term: phi / (x^2 w);
+                             (n_lit + n_term) * n_alt values */
+    const float *psi;     /* lit: G / w; term: psi (rad); same layout */
 } oi_earth_table;
 
 #endif /* OI_TABLE_H */

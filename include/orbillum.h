@@ -65,6 +65,18 @@ const char *oi_status_name(int status);
 #define OI_TERM_MOON  (4u)
 #define OI_TERM_ALL   (OI_TERM_SUN | OI_TERM_EARTH | OI_TERM_MOON)
 
+/* Physical bounds of oi_model's constants and of positions (see oi_model). */
+#define OI_MODEL_TSI_MIN (1.0e-6)       /* W/m^2 */
+#define OI_MODEL_TSI_MAX (1.0e6)        /* W/m^2 */
+#define OI_MODEL_AU_MIN (1.0e3)         /* km */
+#define OI_MODEL_AU_MAX (1.0e10)        /* km */
+#define OI_MODEL_RADIUS_MIN (1.0e-3)    /* km */
+#define OI_MODEL_RADIUS_MAX (1.0e8)     /* km */
+/* Largest accepted distance of any position from the Earth's centre (km, about
+ * 6700 AU): larger positions give OI_ERR_GEOMETRY, so that differences and
+ * squares of positions stay finite in single precision. */
+#define OI_POSITION_MAX_KM (1.0e12)
+
 /* oi_model.earth_model */
 #define OI_EARTH_TABLE   (0)  /* baked table, analytic beyond its range (default) */
 #define OI_EARTH_LAMBERT (1)  /* far-field Lambert sphere, (R/r)^2 p(theta) */
@@ -79,8 +91,12 @@ const char *oi_status_name(int status);
 
 /*
  * Model constants and options. Zero in any field means its default.
- * Fields are validated by every function that takes a model: a negative or
- * non-finite value gives OI_ERR_MODEL (radii: OI_ERR_RADIUS).
+ * Fields are validated by every function that takes a model: a non-finite
+ * value, a negative one, or one outside its physical bounds below gives
+ * OI_ERR_MODEL (radii: OI_ERR_RADIUS). The bounds keep every intermediate
+ * finite in both precisions:
+ *   tsi_w_m2 in [OI_MODEL_TSI_MIN, OI_MODEL_TSI_MAX]; au_km in [OI_MODEL_AU_MIN, OI_MODEL_AU_MAX];
+ *   radii in [OI_MODEL_RADIUS_MIN, OI_MODEL_RADIUS_MAX] km.
  */
 typedef struct oi_model {
     oi_real tsi_w_m2;         /* solar irradiance at 1 AU (W/m^2) */
@@ -164,8 +180,17 @@ int oi_sun_fraction(const oi_real sun_km[3], const oi_real point_km[3],
  * Returned: phi   normalised scalar irradiance (>= 0)
  *           psi   mean incidence direction: angle from the nadir (point to Earth
  *                 centre) towards the Sun side, in the Sun-Earth-point plane (rad)
- * Returns: OI_OK; OI_WARN_TABLE_RANGE (outside the table: Lambert far field
- *          used); OI_ERR_NULL, OI_ERR_NONFINITE, OI_ERR_BELOW_SURFACE, OI_ERR_MODEL.
+ * Returns: OI_OK (also for model->earth_model = OI_EARTH_LAMBERT: the far
+ *          field (R/r)^2 p(theta), psi = 0, by choice); OI_WARN_TABLE_RANGE
+ *          (outside the altitude range of model->earth_table, or a build with
+ *          OI_NO_EARTH_TABLE and no table given: Lambert far field used);
+ *          OI_ERR_NULL, OI_ERR_NONFINITE, OI_ERR_BELOW_SURFACE (h_km <= 0),
+ *          OI_ERR_MODEL, OI_ERR_RADIUS (negative model radius).
+ * Notes:   The default table covers every altitude h > 0, from the surface to
+ *          infinity: relative error <= 1e-3 where phi >= 1% of phi(0, h),
+ *          absolute <= 1e-5 phi(0, h) elsewhere, measured from h = 1 m up
+ *          (docs/earthshine-table.md); near the surface phi -> 2 cos(theta)
+ *          (a flat Lambertian plane).
  */
 int oi_earthshine(oi_real theta, oi_real h_km, const oi_model *model,
                   oi_real *phi, oi_real *psi);
@@ -228,7 +253,9 @@ typedef struct oi_illum {
  * Given:   scene  positions, terms, albedos, target radius
  *          model  NULL or model constants and options
  * Returned: out   see oi_illum
- * Returns: OI_OK; OI_WARN_TABLE_RANGE; any OI_ERR_* above (outputs zeroed).
+ * Returns: OI_OK; OI_WARN_TABLE_RANGE; any OI_ERR_* above (outputs zeroed);
+ *          OI_ERR_GEOMETRY also for a position farther than OI_POSITION_MAX_KM,
+ *          or the target inside the Moon.
  */
 int oi_illuminate(const oi_scene *scene, const oi_model *model, oi_illum *out);
 

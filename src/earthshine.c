@@ -58,9 +58,10 @@ static int cell_of(oi_real f, int n, oi_real *frac)
 }
 
 /* Bicubic Catmull-Rom in one segment (columns off..off+n-1 of a table with
- * row stride ld) at fractional indices fv (theta) and fw (altitude). */
+ * row stride ld) at fractional indices fv (theta) and fw (altitude);
+ * surface: the first row is w = 0 (h = 0). */
 static oi_real seg_interp(const float *base, int ld, int off, int n, int n_alt,
-                          oi_real fv, oi_real fw)
+                          int surface, oi_real fv, oi_real fw)
 {
     oi_real wa[4], wb[4], r[4], fa, fb;
     int i = cell_of(fv, n, &fa);
@@ -72,8 +73,12 @@ static oi_real seg_interp(const float *base, int ld, int off, int n, int n_alt,
         int jj = j - 1 + k;
         if (jj >= 0 && jj < n_alt) r[k] = seg_row(base + (size_t)jj * (size_t)ld + (size_t)off, n, i, wa);
     }
-    /* ghost rows by linear extrapolation (the theta spline is linear in the rows) */
-    if (j - 1 < 0) r[0] = OI_R(2.0) * r[1] - r[2];
+    /* ghost rows by extrapolation (the theta spline is linear in the rows):
+     * quadratic below a surface row (w_min = 0, n_alt >= 3), else linear */
+    if (j - 1 < 0) {
+        if (surface && n_alt >= 3) r[0] = OI_R(3.0) * (r[1] - r[2]) + r[3];
+        else r[0] = OI_R(2.0) * r[1] - r[2];
+    }
     if (j + 2 >= n_alt) r[3] = OI_R(2.0) * r[2] - r[1];
     return wb[0] * r[0] + wb[1] * r[1] + wb[2] * r[2] + wb[3] * r[3];
 }
@@ -129,8 +134,9 @@ static int table_valid(const oi_earth_table *t)
     const double half_pi = 0.5 * OI_PI;
     if (t->format != OI_TABLE_FORMAT || t->n_lit < 2 || t->n_term < 2 || t->n_alt < 2) return 0;
     if (t->q == NULL || t->psi == NULL) return 0;
-    if (!(t->w_min > 0.0) || !(t->w_max > t->w_min) || !(t->w_max <= half_pi * (1.0 + 1e-15)))
+    if (!(t->w_min >= 0.0) || !(t->w_max > t->w_min) || !(t->w_max <= half_pi * (1.0 + 1e-15)))
         return 0;
+    if (t->w_min == 0.0 && t->n_alt < 3) return 0; /* quadratic ghost row */
     if (!(t->term_k0 >= 0.0 && t->term_k0 <= 20.0) || !(t->term_kp >= 0.0 && t->term_kp <= 100.0))
         return 0;
     return 1;
@@ -144,7 +150,7 @@ static int table_valid(const oi_earth_table *t)
  *   theta  oi_real      angle at the Earth's centre between the Sun and the
  *                       point (rad); clamped to [0, pi]
  *   h_km   oi_real      altitude of the point above the model's Earth radius
- *                       (km), > 0
+ *                       (km), > 0 (the default table reaches the surface)
  *   model  oi_model*    NULL (defaults) or model: earth_model, earth_table
  *                       (NULL: the baked default table oi_earth_diffuse),
  *                       earth_radius_km
@@ -157,10 +163,11 @@ static int table_valid(const oi_earth_table *t)
  *                       Sun-Earth-point plane (rad), in [0, asin(R/r)];
  *                       0 where phi = 0 and in the Lambert far field
  * Returned (function value):
- *          int          OI_OK
- *                       OI_WARN_TABLE_RANGE  altitude outside the table's range,
- *                            or no table compiled in (OI_NO_EARTH_TABLE): the
- *                            Lambert far field (R/r)^2 p(theta), psi = 0, is used
+ *          int          OI_OK                (also with OI_EARTH_LAMBERT, note 3)
+ *                       OI_WARN_TABLE_RANGE  altitude outside the range of the
+ *                            table given in model->earth_table, or no table at
+ *                            all (OI_NO_EARTH_TABLE build, earth_table NULL):
+ *                            the Lambert far field (R/r)^2 p(theta), psi = 0
  *                       OI_ERR_NULL          phi or psi is NULL
  *                       OI_ERR_NONFINITE     theta or h_km is NaN or infinite
  *                       OI_ERR_BELOW_SURFACE h_km <= 0
@@ -169,19 +176,24 @@ static int table_valid(const oi_earth_table *t)
  *                       OI_ERR_RADIUS        negative model radius
  *                       On error phi and psi (when not NULL) are 0.
  * Notes:
- *  1. The table stores q = phi / x^2 (x = R/r) and psi on a grid uniform in
- *     w = acos(x), computed here as atan2(sqrt(h (2R + h)), R) (no
- *     cancellation at low altitude), and in theta over two segments: the
- *     visible cap fully lit (theta <= pi/2 - w) and the terminator crossing
- *     it (pi/2 - w < theta < pi/2 + w, nodes graded towards theta = pi/2 at
- *     low altitude by the map sinh(k t)/sinh(k)). Beyond theta = pi/2 + w nothing lit
- *     is visible and phi = 0 exactly. Interpolation: bicubic Catmull-Rom per
- *     segment. See include/oi_table.h and docs/earthshine-table.md.
+ *  1. The table (format 4) has a grid uniform in w = acos(x) (x = R/r),
+ *     computed here as atan2(sqrt(h (2R + h)), R) (no cancellation at low
+ *     altitude), from w = 0 (the surface) or w_min up, and in theta two
+ *     segments: the visible cap fully lit (theta <= pi/2 - w), where
+ *     phi = cos(theta) phi(0, x) and tan psi = tan(theta) G(x) hold exactly
+ *     (stored: phi(0, x) / x^2 and G / w), and the terminator crossing it
+ *     (pi/2 - w < theta < pi/2 + w; stored phi / (x^2 w) and psi; nodes
+ *     graded towards theta = pi/2 at low altitude by the map
+ *     sinh(k t)/sinh(k)). Beyond theta = pi/2 + w nothing lit is visible and
+ *     phi = 0 exactly. Interpolation: bicubic Catmull-Rom per segment. See
+ *     include/oi_table.h and docs/earthshine-table.md.
  *  2. Accuracy of the default table (measured against the quadrature
  *     reference at points between the nodes, see tables/oi_earth_diffuse.c):
  *     relative error <= 1e-3 wherever phi >= 1% of its subsolar value at
  *     that altitude, absolute error <= 1e-5 of the subsolar value elsewhere,
- *     from 100 km to infinity. In single precision add ~1e-6 relative.
+ *     from h = 1 m (measured; the table's first row is the limit h -> 0,
+ *     phi = 2 cos(theta)) to infinity. In single precision add ~1e-6
+ *     relative, more where theta rounded to float moves the terminator.
  *  3. OI_EARTH_LAMBERT selects the far field everywhere and returns OI_OK.
  *     The far field is exact only at infinity: at the Moon's distance it is
  *     still ~12% off where phi is 1% of its subsolar value (PHYSICS.md; the
@@ -234,24 +246,29 @@ int oi_earthshine(oi_real theta, oi_real h_km, const oi_model *model,
         const oi_real fw = (w - w_min) / (w_max - w_min) * cells;
         if (fw >= -EDGE_TOL_CELLS && fw <= cells + EDGE_TOL_CELLS) {
             const int ld = t->n_lit + t->n_term;
+            const int surf = t->w_min == 0.0;
             oi_real q, p, fv;
-            int off, n;
             if (theta >= HALF_PI_R + w) return OI_OK; /* nothing lit is visible */
             tb = HALF_PI_R - w;
             if (theta <= tb && tb > (oi_real)0) {
-                off = 0;
-                n = t->n_lit;
+                /* cap wholly lit: phi = cos(theta) phi(0, x), tan psi =
+                 * tan(theta) G(x) exactly; stored q0 = phi(0, x) / x^2, G / w */
+                const int n = t->n_lit;
+                const oi_real ct = OI_COS(theta);
                 fv = theta / tb * (oi_real)(n - 1);
+                q = seg_interp(t->q, ld, 0, n, t->n_alt, surf, fv, fw) * ct;
+                p = seg_interp(t->psi, ld, 0, n, t->n_alt, surf, fv, fw) * w;
+                p = OI_ATAN2(p * OI_SIN(theta), ct);
             } else {
-                off = t->n_lit;
-                n = t->n_term;
+                /* terminator segment: stored q / w and psi */
+                const int n = t->n_term;
                 oi_real mm = (theta - HALF_PI_R) / w;
                 if (mm > OI_R(1.0)) mm = OI_R(1.0);
                 if (mm < OI_R(-1.0)) mm = OI_R(-1.0);
                 fv = OI_R(0.5) * (term_t(mm, x, t) + OI_R(1.0)) * (oi_real)(n - 1);
+                q = seg_interp(t->q, ld, t->n_lit, n, t->n_alt, surf, fv, fw) * w;
+                p = seg_interp(t->psi, ld, t->n_lit, n, t->n_alt, surf, fv, fw);
             }
-            q = seg_interp(t->q, ld, off, n, t->n_alt, fv, fw);
-            p = seg_interp(t->psi, ld, off, n, t->n_alt, fv, fw);
             if (q < (oi_real)0) q = (oi_real)0;
             if (p < (oi_real)0) p = (oi_real)0;
             if (p > tb) p = tb; /* the limb: asin(x) = pi/2 - w */

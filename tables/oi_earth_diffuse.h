@@ -7,17 +7,17 @@
 
 #include "oi_table.h"
 
-#if OI_TABLE_FORMAT != 3
+#if OI_TABLE_FORMAT != 4
 #error "oi_earth_diffuse.h: table format mismatch: regenerate tables (make bake)"
 #endif
 
-#define OI_EARTH_DIFFUSE_N_LIT 41
-#define OI_EARTH_DIFFUSE_N_TERM 81
-#define OI_EARTH_DIFFUSE_N_ALT 64
-#define OI_EARTH_DIFFUSE_N_VALUES 7808
+#define OI_EARTH_DIFFUSE_N_LIT 2
+#define OI_EARTH_DIFFUSE_N_TERM 65
+#define OI_EARTH_DIFFUSE_N_ALT 122
+#define OI_EARTH_DIFFUSE_N_VALUES 8174
 
 #ifndef OI_NO_EARTH_TABLE
-/* oi_earth_diffuse: altitude 100 km to infinity, max relative error 4.864e-04 (see oi_earth_diffuse.c). */
+/* oi_earth_diffuse: altitude 0 km to infinity, max relative error 2.908e-04 (see oi_earth_diffuse.c). */
 extern const oi_earth_table oi_earth_diffuse;
 #endif
 

@@ -7,17 +7,17 @@
 
 #include "oi_table.h"
 
-#if OI_TABLE_FORMAT != 3
+#if OI_TABLE_FORMAT != 4
 #error "oi_earth_geo.h: table format mismatch: regenerate tables (make bake)"
 #endif
 
-#define OI_EARTH_GEO_N_LIT 25
+#define OI_EARTH_GEO_N_LIT 2
 #define OI_EARTH_GEO_N_TERM 49
 #define OI_EARTH_GEO_N_ALT 2
-#define OI_EARTH_GEO_N_VALUES 148
+#define OI_EARTH_GEO_N_VALUES 102
 
 #ifndef OI_NO_EARTH_TABLE
-/* oi_earth_geo: altitude 35000 km to 37000 km, max relative error 2.665e-04 (see oi_earth_geo.c). */
+/* oi_earth_geo: altitude 35000 km to 37000 km, max relative error 2.603e-04 (see oi_earth_geo.c). */
 extern const oi_earth_table oi_earth_geo;
 #endif
 

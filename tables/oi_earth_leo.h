@@ -7,17 +7,17 @@
 
 #include "oi_table.h"
 
-#if OI_TABLE_FORMAT != 3
+#if OI_TABLE_FORMAT != 4
 #error "oi_earth_leo.h: table format mismatch: regenerate tables (make bake)"
 #endif
 
-#define OI_EARTH_LEO_N_LIT 33
-#define OI_EARTH_LEO_N_TERM 65
-#define OI_EARTH_LEO_N_ALT 16
-#define OI_EARTH_LEO_N_VALUES 1568
+#define OI_EARTH_LEO_N_LIT 2
+#define OI_EARTH_LEO_N_TERM 49
+#define OI_EARTH_LEO_N_ALT 24
+#define OI_EARTH_LEO_N_VALUES 1224
 
 #ifndef OI_NO_EARTH_TABLE
-/* oi_earth_leo: altitude 200 km to 2000 km, max relative error 4.040e-04 (see oi_earth_leo.c). */
+/* oi_earth_leo: altitude 200 km to 2000 km, max relative error 4.606e-04 (see oi_earth_leo.c). */
 extern const oi_earth_table oi_earth_leo;
 #endif
 

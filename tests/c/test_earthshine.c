@@ -90,16 +90,64 @@ static void test_reference_points(void **state)
     assert_int_equal(bad, 0);
 }
 
+/* Below a table's altitude range (here the LEO scene table, 200-2000 km; the
+ * default table reaches down to the surface): the far field with a warning. */
 static void test_below_table_far_field(void **state)
 {
     size_t k;
+    oi_model m;
     (void)state;
+    memset(&m, 0, sizeof m);
+    m.earth_table = &oi_earth_leo;
     for (k = 0; k < sizeof es_below / sizeof es_below[0]; k++) {
         oi_real phi = -1, psi = -1;
-        int st = oi_earthshine((oi_real)es_below[k].theta, (oi_real)es_below[k].h_km, NULL, &phi, &psi);
+        int st = oi_earthshine((oi_real)es_below[k].theta, (oi_real)es_below[k].h_km, &m, &phi, &psi);
         assert_int_equal(st, OI_WARN_TABLE_RANGE);
         check_rel("far field below the table", es_below[k].phi, (double)phi, EXACT_REL);
         assert_true(psi == 0);
+    }
+}
+
+/* Near the surface (1 m .. 99 km) the default table answers with OI_OK and
+ * meets the goal at the reference points of es_low. */
+static void test_low_altitude(void **state)
+{
+    size_t k, n = sizeof es_low / sizeof es_low[0];
+    int bad = 0;
+    (void)state;
+    for (k = 0; k < n; k++) {
+        oi_real phi = -1, psi = -1;
+        int st = oi_earthshine((oi_real)es_low[k].theta, (oi_real)es_low[k].h_km, NULL, &phi, &psi);
+        if (st != OI_OK) {
+            print_error("status %d at theta=%.17g h=%.17g\n", st, es_low[k].theta, es_low[k].h_km);
+            bad++;
+            continue;
+        }
+        if (!check_goal("default table, low altitude", &es_low[k], (double)phi, (double)psi)) bad++;
+    }
+    assert_int_equal(bad, 0);
+}
+
+/* The near-surface closed form: while the visible cap is wholly lit,
+ * phi = cos(theta) phi(0, x) exactly, and phi(0, x) = x^2 (2 (1 - w) + O(w^2))
+ * (a flat Lambertian plane gives 2 cos(theta); the sky band of the horizon's
+ * depression w takes 2w): at 1 mm (w = 1.8e-5) the O(w^2) term is < 1e-9. */
+static void test_flat_plane_limit(void **state)
+{
+    static const double hs[] = {1e-6, 3e-6, 1e-5};
+    static const double th[] = {0.0, 0.3, 1.0, 1.4, 1.55};
+    size_t a, b;
+    (void)state;
+    for (a = 0; a < sizeof hs / sizeof hs[0]; a++) {
+        double w = atan2(sqrt(hs[a] * (2 * RE + hs[a])), RE);
+        double x = RE / (RE + hs[a]);
+        for (b = 0; b < sizeof th / sizeof th[0]; b++) {
+            oi_real phi = -1, psi = -1;
+            double want = x * x * 2.0 * (1.0 - w) * cos(th[b]);
+            assert_int_equal(oi_earthshine((oi_real)th[b], (oi_real)hs[a], NULL, &phi, &psi), OI_OK);
+            check_rel("flat-plane limit", want, (double)phi, GOAL_REL);
+            assert_true(psi >= 0 && (double)psi < 1e-3);
+        }
     }
 }
 
@@ -155,8 +203,8 @@ static void test_sweep_bounds(void **state)
 {
     int i, j;
     (void)state;
-    for (j = 0; j <= 60; j++) {
-        double h = 100.0 * pow(10.0, j / 10.0); /* 100 km .. 1e8 km */
+    for (j = 0; j <= 110; j++) {
+        double h = 1e-3 * pow(10.0, j / 10.0); /* 1 m .. 1e8 km */
         double x = RE / (RE + h);
         for (i = 0; i <= 400; i++) {
             oi_real phi = -1, psi = -1;
@@ -183,9 +231,12 @@ static void test_radius_scaling(void **state)
     check_rel("scale-free psi", (double)s1, (double)s2, EXACT_REL * 10);
 }
 
-/* A hand-made table, q linear in the node coordinates: Catmull-Rom with
- * linearly extrapolated ghosts reproduces it exactly, so phi = x^2 (a + b v +
- * c s) with v, s the fractional grid positions computed here. */
+/* A hand-made table, values linear in the node coordinates: Catmull-Rom with
+ * linearly extrapolated ghosts reproduces them exactly, so (format 4) the lit
+ * segment gives phi = x^2 cos(theta) (a + b v + c s) and psi = atan2(G w
+ * sin(theta), cos(theta)) with G / w = 0.02 v, the terminator segment
+ * phi = x^2 w (a + b v + c s), with v, s the fractional grid positions
+ * computed here. */
 static const float hand_q[3 * 7] = {
     /* s = 0 */ 1.0f, 1.5f, 2.0f, /* term */ 2.0f, 3.0f, 4.0f, 5.0f,
     /* s = .5*/ 1.5f, 2.0f, 2.5f, 2.5f, 3.5f, 4.5f, 5.5f,
@@ -226,12 +277,15 @@ static void test_hand_table(void **state)
             /* lit segment: v in [0, 1] over 2 cells; q = 1 + v + s */
             double th = fr[b] * (PI / 2 - w);
             assert_int_equal(oi_earthshine((oi_real)th, (oi_real)h, &m, &phi, &psi), OI_OK);
-            check_rel("hand table lit", x * x * (1.0 + fr[b] + s), (double)phi, EXACT_REL * 10);
-            check_rel("hand table lit psi", (double)0.02f * fr[b], (double)psi, EXACT_REL * 10);
-            /* terminator segment: v over 3 cells; q = 2 + 3 v + s */
+            check_rel("hand table lit", x * x * cos(th) * (1.0 + fr[b] + s), (double)phi,
+                      EXACT_REL * 10);
+            check_rel("hand table lit psi", atan2((double)0.02f * fr[b] * w * sin(th), cos(th)),
+                      (double)psi, EXACT_REL * 10);
+            /* terminator segment: v over 3 cells; q / w = 2 + 3 v + s */
             th = PI / 2 - w + 2 * w * fr[b];
             assert_int_equal(oi_earthshine((oi_real)th, (oi_real)h, &m, &phi, &psi), OI_OK);
-            check_rel("hand table term", x * x * (2.0 + 3 * fr[b] + s), (double)phi, EXACT_REL * 100);
+            check_rel("hand table term", x * x * w * (2.0 + 3 * fr[b] + s), (double)phi,
+                      EXACT_REL * 100);
         }
     }
     /* graded terminator map: theta = pi/2 + w sinh(k t)/sinh(k), k = k0 x^kp,
@@ -249,7 +303,7 @@ static void test_hand_table(void **state)
             double tt = 2 * fr[b] - 1;
             double th = PI / 2 + w * sinh(k * tt) / sinh(k);
             assert_int_equal(oi_earthshine((oi_real)th, (oi_real)h, &m, &phi, &psi), OI_OK);
-            check_rel("hand table graded term", x * x * (2.0 + 3 * fr[b] + s), (double)phi,
+            check_rel("hand table graded term", x * x * w * (2.0 + 3 * fr[b] + s), (double)phi,
                       EXACT_REL * 100);
         }
     }
@@ -285,6 +339,61 @@ static void test_hand_table(void **state)
         t.term_k0 = 0.0;
         t.q = NULL;
         assert_int_equal(oi_earthshine(OI_R(0.5), OI_R(1000.0), &m, &phi, &psi), OI_ERR_MODEL);
+    }
+}
+
+/* A hand-made table from the surface (w_min = 0): its ghost row below w = 0
+ * is extrapolated quadratically, so values quadratic in the altitude index
+ * are reproduced exactly in the first cells. q0 = 1 + s^2 / 8 (lit),
+ * q / w = 2 + s^2 / 8 (terminator), s = w / (w_max / 3). */
+static const float surf_q[4 * 4] = {
+    1.0f, 1.0f, 2.0f, 2.0f,
+    1.125f, 1.125f, 2.125f, 2.125f,
+    1.5f, 1.5f, 2.5f, 2.5f,
+    2.125f, 2.125f, 3.125f, 3.125f,
+};
+static const float surf_psi[4 * 4] = {0};
+
+static void test_surface_row_table(void **state)
+{
+    oi_earth_table t;
+    oi_model m;
+    static const double hs[] = {0.001, 1.0, 50.0, 150.0};
+    size_t a;
+    (void)state;
+    memset(&t, 0, sizeof t);
+    t.format = OI_TABLE_FORMAT;
+    t.n_lit = 2;
+    t.n_term = 2;
+    t.n_alt = 4;
+    t.w_min = 0.0;
+    t.w_max = atan2(sqrt(4000.0 * (2 * RE + 4000.0)), RE);
+    t.q = surf_q;
+    t.psi = surf_psi;
+    memset(&m, 0, sizeof m);
+    m.earth_table = &t;
+    for (a = 0; a < sizeof hs / sizeof hs[0]; a++) {
+        double h = hs[a];
+        double w = atan2(sqrt(h * (2 * RE + h)), RE);
+        double s = w / (t.w_max / 3.0);
+        double x = RE / (RE + h);
+        double th = 0.4 * (PI / 2 - w);
+        oi_real phi, psi;
+        assert_int_equal(oi_earthshine((oi_real)th, (oi_real)h, &m, &phi, &psi), OI_OK);
+        check_rel("surface table lit", x * x * cos(th) * (1.0 + 0.125 * s * s), (double)phi,
+                  EXACT_REL * 10);
+        th = PI / 2 + 0.3 * w;
+        assert_int_equal(oi_earthshine((oi_real)th, (oi_real)h, &m, &phi, &psi), OI_OK);
+        check_rel("surface table term", x * x * w * (2.0 + 0.125 * s * s), (double)phi,
+                  EXACT_REL * 100);
+    }
+    {
+        oi_real phi = 1, psi = 1;
+        t.n_alt = 2; /* a surface row needs 3 rows for its ghost */
+        assert_int_equal(oi_earthshine(OI_R(0.5), OI_R(100.0), &m, &phi, &psi), OI_ERR_MODEL);
+        t.n_alt = 4;
+        t.w_min = -0.1;
+        assert_int_equal(oi_earthshine(OI_R(0.5), OI_R(100.0), &m, &phi, &psi), OI_ERR_MODEL);
     }
 }
 
@@ -369,12 +478,15 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_reference_points),
         cmocka_unit_test(test_below_table_far_field),
+        cmocka_unit_test(test_low_altitude),
+        cmocka_unit_test(test_flat_plane_limit),
         cmocka_unit_test(test_theta_clamped),
         cmocka_unit_test(test_dark_side_exact_zero),
         cmocka_unit_test(test_lambert_model),
         cmocka_unit_test(test_sweep_bounds),
         cmocka_unit_test(test_radius_scaling),
         cmocka_unit_test(test_hand_table),
+        cmocka_unit_test(test_surface_row_table),
         cmocka_unit_test(test_scene_table_leo),
         cmocka_unit_test(test_errors),
         cmocka_unit_test(test_huge_altitude),

@@ -105,3 +105,55 @@ def test_far_field_function():
     t = math.pi - 1e-2
     a = ref.lambert_phase(np.array([t - 1e-12, t + 1e-12]))
     assert abs(a[1] / a[0] - 1) < 1e-9
+
+
+def test_low_altitude_converged():
+    """Down to 1 cm the default order agrees with order 160 (the nadir peak
+    sits at a panel end of the inner integral: geometric convergence however
+    low the point)."""
+    R = ref.R_EARTH_KM
+    for hk in (1e-5, 1e-3, 1.0, 10.0):
+        hr = hk / R
+        w = math.atan2(math.sqrt(hr * (2 + hr)), 1.0)
+        th = np.array([0.0, 1.2, math.pi / 2 - w, math.pi / 2 - 0.5 * w, math.pi / 2 + 0.3 * w])
+        p48, s48 = ref.phi_psi_reference_h(th, hr)
+        p160, s160 = ref.phi_psi_reference_h(th, hr, 160, 160)
+        phi0 = p160[0]
+        assert np.all(np.abs(p48 - p160) <= 1e-10 * p160 + 1e-15 * phi0), hk
+        assert np.all(np.abs(s48 - s160) <= 1e-9), hk
+
+
+def test_low_altitude_against_mpmath():
+    """h = 1 m: the independent mpmath path at 25 digits."""
+    x = float(ref.x_from_h(1e-3))
+    w = math.acos(x)
+    for th in (0.7, math.pi / 2 - 0.5 * w):
+        pm, sm = ref.phi_psi_mpmath(th, x, 25)
+        p, s = ref.phi_psi_reference(th, x)
+        assert abs(float(pm) / float(p) - 1) < 1e-10
+        assert abs(float(sm) - float(s)) < 1e-10
+
+
+def test_near_surface_closed_form():
+    """Flat-Earth limit with its first correction: the cap wholly lit gives
+    phi = cos(theta) phi(0, x) and phi(0, x) = x^2 (2 (1 - w) + O(w^2)) (the
+    sky band of the horizon's depression w takes 2w of the flat plane's 2)."""
+    R = ref.R_EARTH_KM
+    for hk in (1e-5, 1e-3, 0.1):
+        hr = hk / R
+        w = math.atan2(math.sqrt(hr * (2 + hr)), 1.0)
+        x = 1 / (1 + hr)
+        th = np.array([0.0, 0.5, 1.3])
+        p, _ = ref.phi_psi_reference_h(th, hr)
+        want = x * x * 2 * (1 - w) * np.cos(th)
+        assert np.all(np.abs(p / want - 1) < 2 * w * w), hk
+
+
+def test_h_form_matches_x_form():
+    """phi_psi_reference_h(theta, h/R) = phi_psi_reference(theta, R/(R+h))
+    where 1/x - 1 loses nothing (h >= 100 km)."""
+    th = np.array([0.3, 1.5, 1.7])
+    for hr in (0.02, 1.0, 30.0):
+        a = ref.phi_psi_reference_h(th, hr)
+        b = ref.phi_psi_reference(th, 1 / (1 + hr))
+        assert np.allclose(a[0], b[0], rtol=1e-12, atol=0) and np.allclose(a[1], b[1], atol=1e-12)
