@@ -48,27 +48,14 @@ static void check_shadow(int st, const oi_shadow *s)
     if (s->region == OI_SHADOW_UMBRA) FZ_CHECK(s->fraction == 0);
 }
 
-/* A model constant. Known issue (reported): oi__model_resolve accepts any
- * finite positive constant, and e.g. tsi_w_m2 = 1e300 makes e_sun overflow to
- * inf with status OK, a subnormal earth_radius_km lets a Sun 1e-158 km from
- * the Earth's centre through and e_earth becomes NaN. Until the model
- * validation bounds its constants, positive finite values are kept within
- * 0.5..2 times the default (a Moon radius of 1.7 m let the Moon sit 1 m from
- * the target and e_moon overflow in single precision with constants 1e6 x
- * the default) unless the target is built with -DFUZZ_STRICT (the
- * regression check). NaN, inf, zero and negative values pass through. */
+/* Model constants pass through unchanged, NaN, inf, zero, negative,
+ * subnormal and huge alike: the model validation (src/model.c, bounds
+ * OI_MODEL_*) must reject what would overflow (docs/stability.md, findings
+ * 7-8, fixed). */
 static oi_real fz_model_const(fz_in *in, double def)
 {
-    oi_real v = fz_real(in);
-#ifndef FUZZ_STRICT
-    if (fz_finite(v) && v > 0) {
-        if ((double)v > def * 2) v = (oi_real)(def * 2);
-        if ((double)v < def * 0.5) v = (oi_real)(def * 0.5);
-    }
-#else
     (void)def;
-#endif
-    return v;
+    return fz_real(in);
 }
 
 static void fz_model(fz_in *in, oi_model *m)
@@ -178,26 +165,6 @@ static void fz_scene(fz_in *in, oi_scene *s)
             fz_vec(in, s->observer_km);
         }
     }
-#ifndef FUZZ_STRICT
-    {
-        /* Known issue (reported): src/illuminate.c forms target - observer,
-         * sun - target and target - moon without checking that they stay
-         * finite: with components near the largest finite value they overflow
-         * and range_km = inf or dir_moon = NaN come out with status OK.
-         * Until fixed, scene positions are kept within RMAX/16 (differences
-         * cannot overflow) unless built with -DFUZZ_STRICT. */
-        oi_real *vs[4];
-        int i, k;
-        vs[0] = s->sun_km;
-        vs[1] = s->target_km;
-        vs[2] = s->moon_km;
-        vs[3] = s->observer_km;
-        for (k = 0; k < 4; k++)
-            for (i = 0; i < 3; i++)
-                if (fz_finite(vs[k][i]) && OI_FABS_FZ(vs[k][i]) > FZ_MAX / 16)
-                    vs[k][i] = vs[k][i] > 0 ? FZ_MAX / 16 : -FZ_MAX / 16;
-    }
-#endif
     if (flags & 4) s->terms = fz_u8(in) % 16u;
     if (flags & 8) s->earth_albedo = fz_real(in);
     if (flags & 16) s->target_albedo = fz_real(in);

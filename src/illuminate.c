@@ -17,6 +17,11 @@ static int check_scalar(oi_real value, oi_real lo, oi_real hi, int range_error)
     return OI_OK;
 }
 
+static int too_far(const oi_real v[3])
+{
+    return oi__norm(v) > (oi_real)OI_POSITION_MAX_KM;
+}
+
 /* Validation of everything in the scene that does not need geometry. */
 static int check_scene(const oi_scene *s, const oi_model *m)
 {
@@ -38,6 +43,11 @@ static int check_scene(const oi_scene *s, const oi_model *m)
         return OI_ERR_ZERO_VECTOR;
     if ((s->terms & OI_TERM_MOON) && oi__norm(s->moon_km) == (oi_real)0) return OI_ERR_ZERO_VECTOR;
     if (s->has_observer && oi__norm(s->observer_km) == (oi_real)0) return OI_ERR_ZERO_VECTOR;
+    /* Bounded positions keep every difference and square finite. */
+    if (too_far(s->sun_km) || too_far(s->target_km) ||
+        ((s->terms & OI_TERM_MOON) && too_far(s->moon_km)) ||
+        (s->has_observer && too_far(s->observer_km)))
+        return OI_ERR_GEOMETRY;
     if (oi__norm(s->target_km) <= m->earth_radius_km) return OI_ERR_BELOW_SURFACE;
     if (s->has_observer && oi__norm(s->observer_km) <= m->earth_radius_km)
         return OI_ERR_BELOW_SURFACE;

@@ -13,12 +13,14 @@ static void model_defaults(oi_model *m)
     m->moon_albedo = (oi_real)OI_MOON_ALBEDO_DEFAULT;
 }
 
-/* Replace a zero constant by its default; reject negative or non-finite. */
-static int resolve_positive(oi_real given, oi_real fallback, oi_real *out)
+/* Replace a zero constant by its default; reject negative, non-finite, or
+ * outside [lo, hi] (the bounds keep every intermediate finite). */
+static int resolve_positive(oi_real given, oi_real fallback, oi_real lo, oi_real hi,
+                            oi_real *out)
 {
     if (!OI_ISFINITE(given) || given < (oi_real)0) return -1;
     *out = given > (oi_real)0 ? given : fallback;
-    return 0;
+    return *out < lo || *out > hi ? -1 : 0;
 }
 
 int oi__model_resolve(const oi_model *in, oi_model *out)
@@ -28,19 +30,24 @@ int oi__model_resolve(const oi_model *in, oi_model *out)
     *out = def;
     if (in == NULL) return OI_OK;
 
-    if (resolve_positive(in->sun_radius_km, def.sun_radius_km, &out->sun_radius_km) ||
-        resolve_positive(in->earth_radius_km, def.earth_radius_km, &out->earth_radius_km) ||
-        resolve_positive(in->moon_radius_km, def.moon_radius_km, &out->moon_radius_km)) {
+    const oi_real r_lo = (oi_real)OI_MODEL_RADIUS_MIN, r_hi = (oi_real)OI_MODEL_RADIUS_MAX;
+    if (resolve_positive(in->sun_radius_km, def.sun_radius_km, r_lo, r_hi, &out->sun_radius_km) ||
+        resolve_positive(in->earth_radius_km, def.earth_radius_km, r_lo, r_hi,
+                         &out->earth_radius_km) ||
+        resolve_positive(in->moon_radius_km, def.moon_radius_km, r_lo, r_hi,
+                         &out->moon_radius_km)) {
         *out = def;
         return OI_ISFINITE(in->sun_radius_km) && OI_ISFINITE(in->earth_radius_km) &&
                        OI_ISFINITE(in->moon_radius_km)
                    ? OI_ERR_RADIUS
                    : OI_ERR_MODEL;
     }
-    if (resolve_positive(in->tsi_w_m2, def.tsi_w_m2, &out->tsi_w_m2) ||
-        resolve_positive(in->au_km, def.au_km, &out->au_km) ||
-        resolve_positive(in->moon_albedo, def.moon_albedo, &out->moon_albedo) ||
-        out->moon_albedo > (oi_real)1 ||
+    if (resolve_positive(in->tsi_w_m2, def.tsi_w_m2, (oi_real)OI_MODEL_TSI_MIN, (oi_real)OI_MODEL_TSI_MAX,
+                         &out->tsi_w_m2) ||
+        resolve_positive(in->au_km, def.au_km, (oi_real)OI_MODEL_AU_MIN, (oi_real)OI_MODEL_AU_MAX,
+                         &out->au_km) ||
+        resolve_positive(in->moon_albedo, def.moon_albedo, (oi_real)0, (oi_real)1,
+                         &out->moon_albedo) ||
         (in->earth_model != OI_EARTH_TABLE && in->earth_model != OI_EARTH_LAMBERT) ||
         (in->moon_model != OI_MOON_PHASE_LAW && in->moon_model != OI_MOON_LAMBERT) ||
         (in->limb_darkening != OI_LIMB_UNIFORM && in->limb_darkening != OI_LIMB_DARKENED)) {

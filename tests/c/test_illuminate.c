@@ -320,6 +320,24 @@ static void test_error_paths(void **state)
     m.earth_model = 7; expect_error(&s, &m, OI_ERR_MODEL);
     memset(&m, 0, sizeof m);
     m.moon_albedo = (oi_real)2; expect_error(&s, &m, OI_ERR_MODEL);
+    /* constants whose products overflow, radii too small to mean anything */
+    memset(&m, 0, sizeof m);
+    m.tsi_w_m2 = (oi_real)3e30; m.au_km = (oi_real)1e9; expect_error(&s, &m, OI_ERR_MODEL);
+    memset(&m, 0, sizeof m);
+    m.au_km = (oi_real)1e20; expect_error(&s, &m, OI_ERR_MODEL);
+    memset(&m, 0, sizeof m);
+    m.tsi_w_m2 = (oi_real)1e-30; expect_error(&s, &m, OI_ERR_MODEL);
+    memset(&m, 0, sizeof m);
+    m.earth_radius_km = (oi_real)1e-30; expect_error(&s, &m, OI_ERR_RADIUS);
+    memset(&m, 0, sizeof m);
+    m.sun_radius_km = (oi_real)1e30; expect_error(&s, &m, OI_ERR_RADIUS);
+    /* positions past OI_POSITION_MAX_KM (differences would overflow) */
+    bad = s; set3(bad.observer_km, 1e30, -1e30, 1e30); expect_error(&bad, NULL, OI_ERR_GEOMETRY);
+    bad = s; set3(bad.sun_km, 2e12, 0, 0); expect_error(&bad, NULL, OI_ERR_GEOMETRY);
+    bad = s; set3(bad.target_km, 0, 2e12, 0); expect_error(&bad, NULL, OI_ERR_GEOMETRY);
+#ifndef OI_NO_MOON
+    bad = s; set3(bad.moon_km, 0, 3e35, 0); expect_error(&bad, NULL, OI_ERR_GEOMETRY);
+#endif
     /* Sun inside the Earth + Sun radii: impossible geometry */
     bad = s; set3(bad.sun_km, 10000.0, 0, 0); expect_error(&bad, NULL, OI_ERR_GEOMETRY);
 #ifndef OI_NO_MOON
