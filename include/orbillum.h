@@ -180,8 +180,17 @@ int oi_sun_fraction(const oi_real sun_km[3], const oi_real point_km[3],
  * Returned: phi   normalised scalar irradiance (>= 0)
  *           psi   mean incidence direction: angle from the nadir (point to Earth
  *                 centre) towards the Sun side, in the Sun-Earth-point plane (rad)
- * Returns: OI_OK; OI_WARN_TABLE_RANGE (outside the table: Lambert far field
- *          used); OI_ERR_NULL, OI_ERR_NONFINITE, OI_ERR_BELOW_SURFACE, OI_ERR_MODEL.
+ * Returns: OI_OK (also for model->earth_model = OI_EARTH_LAMBERT: the far
+ *          field (R/r)^2 p(theta), psi = 0, by choice); OI_WARN_TABLE_RANGE
+ *          (outside the altitude range of model->earth_table, or a build with
+ *          OI_NO_EARTH_TABLE and no table given: Lambert far field used);
+ *          OI_ERR_NULL, OI_ERR_NONFINITE, OI_ERR_BELOW_SURFACE (h_km <= 0),
+ *          OI_ERR_MODEL, OI_ERR_RADIUS (negative model radius).
+ * Notes:   The default table covers every altitude h > 0, from the surface to
+ *          infinity: relative error <= 1e-3 where phi >= 1% of phi(0, h),
+ *          absolute <= 1e-5 phi(0, h) elsewhere, measured from h = 1 m up
+ *          (docs/earthshine-table.md); near the surface phi -> 2 cos(theta)
+ *          (a flat Lambertian plane).
  */
 int oi_earthshine(oi_real theta, oi_real h_km, const oi_model *model,
                   oi_real *phi, oi_real *psi);
