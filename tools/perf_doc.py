@@ -65,6 +65,8 @@ def dirty():
 
 def run_all(builddir, outdir):
     os.makedirs(outdir, exist_ok=True)
+    with open(os.path.join(outdir, "commit.txt"), "w") as f:
+        f.write("%s%s\n" % (commit(), " + local changes" if dirty() else ""))
     for name, cmd in RUNS:
         args = ["make", "-s", "BUILDDIR=" + builddir] + cmd.split()[1:]
         print("perf-doc: %s" % cmd, file=sys.stderr, flush=True)
@@ -101,7 +103,11 @@ def main():
         if os.path.exists(path):
             with open(path) as f:
                 outs[name] = f.read().splitlines()
-    tag = "at commit %s%s" % (commit(), " + local changes" if dirty() else "")
+    try:  # the commit the outputs were measured at (written by run_all)
+        with open(os.path.join(outdir, "commit.txt")) as f:
+            tag = "at commit " + f.read().strip()
+    except OSError:
+        tag = "at commit %s%s" % (commit(), " + local changes" if dirty() else "")
     with open(args.doc) as f:
         doc = f.read()
 
