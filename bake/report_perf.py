@@ -58,7 +58,8 @@ def _bilinear_segment(tab, fv, fw):
 
 
 def _lookup_bilinear(spec, q_tab, theta, x):
-    """Same coordinates as bake.grid.lookup, bilinear instead of Catmull-Rom."""
+    """Bilinear in the coordinates of the format-3 table (bake.grid before its
+    own kind="linear" option); used only with such a grid module."""
     w = np.arctan2(np.sqrt((1.0 - x) * (1.0 + x)), x)
     fw = (w - spec.w_min) / (spec.w_max - spec.w_min) * (spec.n_alt - 1)
     tb = 0.5 * math.pi - w
@@ -84,20 +85,27 @@ def _sweep(cache: Path):
     w_min = float(grid.w_from_h(cfg["h_min_km"], r))
     order = int(cfg.get("reference_order", 32))
     # test points and reference once, on the default grid's sampling
-    spec0 = grid.TableSpec(g["n_lit"], g["n_term"], g["n_alt"], w_min, 0.5 * math.pi)
+    extra = {k: g[k] for k in ("term_k0", "term_kp") if k in g}
+    spec0 = grid.TableSpec(g["n_lit"], g["n_term"], g["n_alt"], w_min, 0.5 * math.pi, **extra)
     theta, w = grid.sample_points(spec0, 2000, seed=12345)
     x = np.cos(w)
     phi_ref, _ = grid.reference_chunked(theta, x, order, "perf: reference")
     phi0, _ = grid.reference_chunked(np.zeros_like(x), x, order, "perf: phi(0,x)")
     rows = []
     for s in SCALES:
-        spec = grid.TableSpec(max(3, round(g["n_lit"] * s)), max(3, round(g["n_term"] * s)),
-                              max(3, round(g["n_alt"] * s)), w_min, 0.5 * math.pi)
+        # a lit segment of <= 3 nodes is exact by design (format 4): keep it
+        n_lit = g["n_lit"] if g["n_lit"] <= 3 else max(2, round(g["n_lit"] * s))
+        spec = grid.TableSpec(n_lit, max(3, round(g["n_term"] * s)),
+                              max(3, round(g["n_alt"] * s)), w_min, 0.5 * math.pi, **extra)
         q, psi = grid.node_values(spec, order=order)
         q32 = q.astype(np.float32).astype(np.float64)
         psi32 = psi.astype(np.float32).astype(np.float64)
         phi_cr, _ = grid.lookup(spec, q32, psi32, theta, x)
-        phi_bl = _lookup_bilinear(spec, q32, theta, x)
+        try:  # the baker's own bilinear variant of its lookup (same coordinates)
+            phi_bl, _ = grid.lookup(spec, q32, psi32, theta, x, kind="linear")
+        except TypeError:  # an older grid module: the mirror written here
+            phi_bl = _lookup_bilinear(spec, q32, theta, x)
+
         # 16-bit storage: q and psi as uint16 with one float32 scale per
         # altitude row (the row maximum): half the bytes of float32
         def q16(a):
