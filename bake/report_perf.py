@@ -253,8 +253,8 @@ def section(outdir) -> str:
             "the square of the scale, the cost per call does not change." % (
                 smallest["scale"], smallest["bytes"], default["bytes"], default["max_score"],
                 "is that grid" if smallest is default else
-                "keeps a margin of %.1fx on the goal against the float32 rounding and the single-precision "
-                "build" % (1.0 / max(default["max_score"], 1e-30)),
+                "keeps a margin of %.1fx on the goal, at %d more bytes than the smallest grid that meets "
+                "it" % (1.0 / max(default["max_score"], 1e-30), default["bytes"] - smallest["bytes"]),
                 "meets it at no resolution tried" if not bl_meeting else
                 "meets it from %d bytes" % min(r["bytes"] for r in bl_meeting),
                 ins_lam or float("nan"), lam["max_rel_err"],
