@@ -248,7 +248,7 @@ def section(outdir) -> str:
             "Smallest Catmull-Rom grid of the sweep meeting the 1e-3 goal (score <= 1): scale %.2f, "
             "%d bytes; the default (scale 1, %d bytes, score %.2f) %s. Bilinear interpolation of the "
             "same grids %s. The Lambert model costs no flash and %.0f instructions, but its error "
-            "(%.2g relative) rules it out below GEO; the quadrature is exact and %s times slower "
+            "(%.2g relative, worst over the test points) rules it out where the finite distance matters; the quadrature is exact and %s times slower "
             "than the table. Pick a coarser grid if the mission accepts more error: bytes fall with "
             "the square of the scale, the cost per call does not change." % (
                 smallest["scale"], smallest["bytes"], default["bytes"], default["max_score"],
