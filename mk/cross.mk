@@ -156,7 +156,7 @@ size: $(SIZE_ELFS) ## flash and RAM per configuration and option set (Cortex-M, 
 	@$(HOST_PY) tools/size_report.py --objdir $(CROSS_DIR) --cfgs "$(CROSS_CFGS)" --sets "$(CROSS_OPTSETS)" \
 	  --nm $(CROSS_PREFIX)nm
 
-stack: $(SIZE_ELFS) $(SELFTEST_ELFS) ## worst-case stack per public function (fails on recursion, VLA, > 512 B)
+stack: $(SIZE_ELFS) $(SELFTEST_ELFS) ## worst-case stack per public function (fails on recursion or VLA; reports the 512 B goal)
 	@$(HOST_PY) tools/stack_report.py --objdir $(CROSS_DIR) --cfgs "$(CROSS_CFGS)" \
 	  --objdump $(CROSS_PREFIX)objdump --limit 512 --public "$(OI_PUBLIC)"
 
