@@ -80,7 +80,7 @@ def provenance_lines(meta):
             c_double(g["w_min"]), c_double(g["w_max"]),
             " (w = 0: the surface limit row)" if g["w_min"] == 0.0 else ""),
         "  terminator map k = %s x^%s." % (c_double(g["term_k0"]), c_double(g["term_kp"])),
-        "Validity: altitude %s to %s (R = %s km; scale-free in R/r)," % (
+        "Validity: altitude from %s to %s (R = %s km; scale-free in R/r)," % (
             _fmt_h(meta["h_min_km"]) if meta["h_min_km"] > 0 else "the surface (h > 0)",
             _fmt_h(meta["h_max_km"]), "%.6f" % meta["radius_km"]),
         "  theta in [0, pi]; outside the altitude range the runtime uses the",
@@ -89,8 +89,8 @@ def provenance_lines(meta):
         "  error <= %g phi(0, x) elsewhere." % (meta["rel_goal"] * 0.01),
         "Measured against bake/reference.py (order %d Gauss-Legendre) at %d points" % (
             m["reference_order"], m["n_points"]),
-        "  from %s up" % _fmt_h(max(meta["h_min_km"], m.get("h_measure_min_km", 0.0))),
-        "  between the nodes (all cell centres, random, seed %d):" % m["seed"],
+        "  between the nodes from h = %s up (all cell centres, random, seed %d):" % (
+            _fmt_h(max(meta["h_min_km"], m.get("h_measure_min_km", 0.0))), m["seed"]),
         "  max relative error (phi >= 1%% phi0)  %.3e" % m["max_rel_err"],
         "  max absolute error / phi0 (elsewhere) %.3e" % m["max_abs_err_frac"],
         "  max error in units of the goal        %.3f" % m["max_score"],

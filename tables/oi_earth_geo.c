@@ -14,14 +14,13 @@
  * Grid: n_lit = 2, n_term = 49, n_alt = 2 (102 values per quantity),
  *   w = acos(R/r) in [1.4160366207099628, 1.4232255460852268] rad, uniform;
  *   terminator map k = 2.0 x^8.0.
- * Validity: altitude 35000 km to 37000 km (R = 6378.137000 km; scale-free in R/r),
+ * Validity: altitude from 35000 km to 37000 km (R = 6378.137000 km; scale-free in R/r),
  *   theta in [0, pi]; outside the altitude range the runtime uses the
  *   Lambert far field and returns OI_WARN_TABLE_RANGE.
  * Goal: relative error <= 0.001 where phi >= 1% of phi(0, x), absolute
  *   error <= 1e-05 phi(0, x) elsewhere.
  * Measured against bake/reference.py (order 32 Gauss-Legendre) at 10049 points
- *   from 35000 km up
- *   between the nodes (all cell centres, random, seed 12345):
+ *   between the nodes from h = 35000 km up (all cell centres, random, seed 12345):
  *   max relative error (phi >= 1% phi0)  2.603e-04
  *   max absolute error / phi0 (elsewhere) 2.268e-06
  *   max error in units of the goal        0.260
