@@ -210,10 +210,6 @@ def test_earthshine_falls_with_altitude(theta, lh1, lh2, earth_model):
     assert p1 >= p2 * (1 - 1e-12), (theta, h1, h2, p1, p2)
 
 
-@pytest.mark.xfail(reason="known issue (reported to the lead): below the earthshine table's "
-                          "lowest altitude oi_earthshine returns the far-field Lambert "
-                          "(R/r)^2 p(theta), 3x low at theta = 0 near the surface (phi -> 2)",
-                   strict=False)
 def test_earthshine_below_table_continuous():
     """Just below the table's bottom, phi stays within 1 % of the value at
     the bottom, and near the surface at theta = 0 phi approaches 2 (a
@@ -285,20 +281,20 @@ def test_shell_tracer_rotation_invariant(rot, seed, kind):
 def test_reference_far_field_and_order(theta, lh1, lh2):
     """bake.reference: phi >= 0, psi in [-pi/2, pi/2], and phi tends to the
     Lambert far field (R/r)^2 p(theta): on the day side the relative
-    difference shrinks at least in proportion to x = R/r (5x smaller at 10x
-    the distance)."""
+    difference is O(x), x = R/r: below 1.0 x for theta < 80 deg and h >= 1e4 km
+    (measured max 0.79 x). A ratio test between r and 10 r is not valid: the
+    x and x^2 terms can cancel at r (hypothesis found theta = 1.28, h = 1e4 km)."""
     ref = pytest.importorskip("bake.reference")
     for lh in (lh1, lh2):
         x = ref.x_from_h(10 ** lh)
         phi, psi = ref.phi_psi_reference(np.array([theta]), np.array([x]))
         assert phi[0] >= 0 and abs(psi[0]) <= math.pi / 2 + 1e-12
     if theta < math.radians(80):
-        errs = []
         for r in (R_E + 10 ** lh2, 10 * (R_E + 10 ** lh2)):
             x = np.array([R_E / r])
             phi = ref.phi_reference(np.array([theta]), x)[0]
-            errs.append(abs(phi / ref.far_field(np.array([theta]), x)[0] - 1))
-        assert errs[1] <= 0.2 * errs[0] + 1e-9, errs
+            err = abs(phi / ref.far_field(np.array([theta]), x)[0] - 1)
+            assert err <= 1.0 * x[0] + 1e-12, (err, x[0])
 
 
 @settings(max_examples=60, deadline=None)

@@ -694,6 +694,8 @@ def suite_earth_table():
     cases = []
     for j in sorted(set([0, 1, 2, na // 4, na // 2, 3 * na // 4, na - 3, na - 2])):
         w = ws[j]
+        if w == 0:
+            continue  # format 4: row 0 is the surface (h = 0), which oi_earthshine rejects
         h = Re / mp.cos(w) - Re
         for i in sorted(set([0, 1, nl // 2, nl - 2])):
             cases.append(("node lit i=%d j=%d" % (i, j), (PI / 2 - w) * i / (nl - 1), h))
@@ -706,7 +708,8 @@ def suite_earth_table():
             cases.append(("node term i=%d j=%d" % (i, j), PI / 2 + w * m_, h))
     # edges: the bottom of the table, theta exactly 0, pi/2, pi, the segment
     # boundaries, between nodes, and far away
-    hb = Re / mp.cos(ws[0]) - Re
+    # the table's bottom; format 4 reaches the surface, validated from 1 m up
+    hb = Re / mp.cos(ws[0]) - Re if ws[0] > 0 else mp.mpf("0.001")
     for h, hl in ((hb, "bottom"), (hb * (1 + mp.mpf("1e-9")), "bottom+"), (mp.mpf(400), "400"),
                   (mp.mpf(35786), "GEO"), (mp.mpf("1e7"), "1e7"), (mp.mpf("1e9"), "1e9")):
         w = mp.acos(Re / (Re + h))
