@@ -34,11 +34,12 @@ CTEST_float  := $(patsubst tests/c/%.c,$(BUILDDIR)/tests/float/%,$(CTEST_SRC))
 
 PLAN_SRC := $(sort $(wildcard examples/oi_plan/*.c))
 PLAN := $(BUILDDIR)/oi-plan
+QUICKSTART := $(BUILDDIR)/quickstart
 
 .PHONY: all lib demo test test-c test-py deps deps-c deps-py clean help
 .DEFAULT_GOAL := all
 
-all: lib $(PLAN) ## build the library (both precisions) and the planner
+all: lib $(PLAN) $(QUICKSTART) ## build the library (both precisions), the planner and the README example
 
 lib: $(LIB_double) $(LIB_float) ## build build/liborbillum.a and build/float/liborbillum.a
 
@@ -61,6 +62,10 @@ $(LIB_float): $(OBJ_float)
 $(PLAN): $(PLAN_SRC) $(LIB_double)
 	@mkdir -p $(dir $@)
 	$(CC) $(HOST_CFLAGS) -Iexamples/oi_plan $(PLAN_SRC) $(LIB_double) -lm $(HOST_LDFLAGS) -o $@
+
+$(QUICKSTART): examples/quickstart/quickstart.c $(LIB_double)
+	@mkdir -p $(dir $@)
+	$(CC) $(TEST_CFLAGS) $< $(LIB_double) -lm -o $@
 
 demo: $(PLAN) ## run the exposure planner on its built-in scenario
 	$(PLAN)
@@ -99,8 +104,9 @@ $(BUILDDIR)/tests/float/%: tests/c/%.c $(LIB_float) | deps-c
 TEST_TARGETS := test-c test-py
 -include $(sort $(wildcard mk/*.mk))
 
-test-c: $(CTEST_double) $(CTEST_float) $(PLAN) ## C unit tests, double and single precision
+test-c: $(CTEST_double) $(CTEST_float) $(PLAN) $(QUICKSTART) ## C unit tests, double and single precision
 	@set -e; for t in $(CTEST_double) $(CTEST_float); do echo "== $$t"; $$t; done
+	$(QUICKSTART)
 
 test-py: deps-py all ## Python tests (baker, references, planner batch interface)
 	$(PY) -m pytest -q tests/python
