@@ -109,7 +109,7 @@ $(call xdir,$(1),$(2))/stubs/%.o: target/stubs.c | deps-cross
 $(call xdir,$(1),$(2))/libstubs.a: $(patsubst %,$(call xdir,$(1),$(2))/stubs/%.o,$(OI_PUBLIC))
 	rm -f $$@ && $$(CROSS_AR) rcs $$@ $$^
 
-$(call xdir,$(1),$(2))/harness/%.o: target/%.c target/semihost.h target/check.h $(REF_HEADERS) $(STAB_KNOWN_H) | deps-cross
+$(call xdir,$(1),$(2))/harness/%.o: target/%.c target/semihost.h target/check.h tests/stability/evaluators.h $(REF_HEADERS) $(STAB_KNOWN_H) | deps-cross
 	@mkdir -p $$(dir $$@)
 	$$(CROSS_CC) $$(call HARNESS_CFLAGS,$(1)) $$(OPTSET_$(2)) $$(REF_DEFS) -c $$< -o $$@
 
