@@ -122,4 +122,55 @@ static int ev_illum(const double *in, double *got, int *region)
     return st > 0 ? OI_OK : st;
 }
 
+#ifndef OI_NO_EXPOSURE
+/* The camera of the camera vectors (tests/stability/gen_vectors.py CAM). */
+static const oi_camera *test_camera(void)
+{
+    static oi_camera c;
+    static const double times[6] = {1e-4, 1e-3, 1e-2, 0.1, 1, 10};
+    static const double gains[3] = {1, 4, 16}, rn[3] = {10, 4, 2};
+    int i;
+    memset(&c, 0, sizeof c);
+    c.name = "stability test camera";
+    c.aperture_m = (oi_real)0.15;
+    c.focal_length_m = (oi_real)1.2;
+    c.pixel_pitch_m = (oi_real)5.5e-6;
+    c.transmission = (oi_real)0.8;
+    c.quantum_efficiency = (oi_real)0.6;
+    c.band_fraction = (oi_real)0.4;
+    c.photon_energy_j = (oi_real)3.6e-19;
+    c.full_well_e = (oi_real)30000;
+    c.dark_current_e_s = (oi_real)10;
+    c.psf_peak_fraction = (oi_real)0.3;
+    c.fov_rad = (oi_real)0.02;
+    c.sun_exclusion_rad = (oi_real)0.5;
+    c.n_times = 6;
+    c.n_gains = 3;
+    for (i = 0; i < 6; i++) c.times_s[i] = (oi_real)times[i];
+    for (i = 0; i < 3; i++) {
+        c.gains[i] = (oi_real)gains[i];
+        c.read_noise_e[i] = (oi_real)rn[i];
+    }
+    return &c;
+}
+
+static int ev_camera(const double *in, double *got, int *region)
+{
+    oi_expose_in x;
+    oi_exposure e;
+    int st;
+    x.flux_w_m2 = (oi_real)in[0];
+    x.background_w_m2_sr = (oi_real)in[1];
+    x.flags = 0;
+    st = oi_expose(test_camera(), &x, NULL, &e);
+    got[0] = (double)e.signal_e;
+    got[1] = (double)e.background_e;
+    got[2] = (double)e.peak_e;
+    got[3] = (double)e.fill;
+    got[4] = (double)e.snr;
+    *region = e.time_index * 100 + e.gain_index * 10 + (int)((e.flags >> 3) & 3u);
+    return st;
+}
+#endif
+
 #endif /* OI_STABILITY_EVALUATORS_H */
