@@ -134,7 +134,7 @@ static oi_real reflected_flux(oi_real e, const oi_real dir[3], const oi_real to_
 int oi_illuminate(const oi_scene *scene, const oi_model *model, oi_illum *out)
 {
     oi_model m;
-    oi_real e0, phi = (oi_real)0, psi = (oi_real)0, to_sun[3];
+    oi_real e0, phi = (oi_real)0, psi = (oi_real)0, to_sun[3], sun_dir[3], sun_distance;
     int st, warn = OI_OK;
 
     if (out == NULL) return OI_ERR_NULL;
@@ -145,7 +145,11 @@ int oi_illuminate(const oi_scene *scene, const oi_model *model, oi_illum *out)
     st = check_scene(scene, &m);
     if (st < 0) return st;
 
-    st = oi_sun_fraction(scene->sun_km, scene->target_km, &m, &out->shadow);
+    /* the Sun's direction, replaced by the refracted light's mean direction
+     * where the atmosphere bends sunlight into the shadow */
+    oi__sub(scene->sun_km, scene->target_km, to_sun);
+    sun_distance = oi__unit(to_sun, sun_dir);
+    st = oi__sun_shadow(scene->sun_km, scene->target_km, &m, &out->shadow, sun_dir);
     if (st < 0) goto fail;
     if (st > 0) warn = st;
 
@@ -154,19 +158,8 @@ int oi_illuminate(const oi_scene *scene, const oi_model *model, oi_illum *out)
     e0 = solar_irradiance(&m, oi__norm(scene->sun_km));
 
     if (scene->terms & OI_TERM_SUN) {
-        oi__sub(scene->sun_km, scene->target_km, to_sun);
-        out->e_sun = solar_irradiance(&m, oi__unit(to_sun, out->dir_sun)) * out->shadow.fraction_atm;
-#ifndef OI_NO_ATMOSPHERE
-        /* In the shadow, sunlight arrives bent by the atmosphere: take its mean
-         * direction (lit points see the Sun's centre to within refraction). */
-        if (!m.no_atmosphere && out->shadow.region != OI_SHADOW_LIT && out->e_sun > (oi_real)0) {
-            oi_real f, dir[3];
-            if (oi__atm_fraction(scene->sun_km, scene->target_km, &m, out->shadow.fraction,
-                                 out->shadow.fraction_ld, &f, dir) == OI_OK &&
-                oi__norm(dir) > (oi_real)0)
-                oi__unit(dir, out->dir_sun);
-        }
-#endif
+        out->e_sun = solar_irradiance(&m, sun_distance) * out->shadow.fraction_atm;
+        memcpy(out->dir_sun, sun_dir, sizeof sun_dir);
     }
     if (scene->terms & OI_TERM_EARTH) {
         st = oi_earthshine(out->earth_theta, out->earth_h_km, &m, &phi, &psi);

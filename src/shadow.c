@@ -614,6 +614,14 @@ static oi_real apparent_radius(oi_real rad, oi_real dist)
 int oi_sun_fraction(const oi_real sun_km[3], const oi_real point_km[3],
                     const oi_model *model, oi_shadow *out)
 {
+    return oi__sun_shadow(sun_km, point_km, model, out, NULL);
+}
+
+/* oi_sun_fraction, and (light_dir not NULL, atmosphere compiled in and on)
+ * the mean direction the sunlight arrives from: see src/oi_internal.h. */
+int oi__sun_shadow(const oi_real sun_km[3], const oi_real point_km[3], const oi_model *model,
+                   oi_shadow *out, oi_real light_dir[3])
+{
     oi_model m;
     oi_real rel[3], anti[3];
     oi_real ds, dp, dsp, rs, re, sep, frac, frac_ld, q_earth;
@@ -692,11 +700,13 @@ int oi_sun_fraction(const oi_real sun_km[3], const oi_real point_km[3],
      * modify the sunlight reaching the point (issue 3). Until then the
      * model's choice of disc, uniform or limb-darkened. */
     out->fraction_atm = m.limb_darkening == OI_LIMB_DARKENED ? frac_ld : frac;
-#ifndef OI_NO_ATMOSPHERE
+#ifdef OI_NO_ATMOSPHERE
+    (void)light_dir;
+#else
     /* issue 4 (src/atmosphere.c): refraction and extinction from the baked
      * table; OI_WARN_TABLE_RANGE outside its z range (geometric kept). */
     if (!m.no_atmosphere)
-        st = oi__atm_fraction(sun_km, point_km, &m, frac, frac_ld, &out->fraction_atm, NULL);
+        st = oi__atm_fraction(sun_km, point_km, &m, frac, frac_ld, &out->fraction_atm, light_dir);
 #endif
     /* ---- end atmosphere */
     out->sun_radius_rad = rs;
