@@ -210,8 +210,6 @@ int oi_earthshine(oi_real theta, oi_real h_km, const oi_model *model,
                   oi_real *phi, oi_real *psi)
 {
     oi_model m;
-    const oi_earth_table *t = NULL;
-    oi_real R, x, w, s, tb;
     int st;
 
     if (phi != NULL) *phi = (oi_real)0;
@@ -220,19 +218,32 @@ int oi_earthshine(oi_real theta, oi_real h_km, const oi_model *model,
 
     st = oi__model_resolve(model, &m);
     if (st < 0) return st;
+    return oi__earthshine(theta, h_km, &m, phi, psi);
+}
+
+/* oi_earthshine with a resolved model and non-NULL outputs (oi_internal.h). */
+int oi__earthshine(oi_real theta, oi_real h_km, const oi_model *model, oi_real *phi,
+                   oi_real *psi)
+{
+    const oi_model *m = model;
+    const oi_earth_table *t = NULL;
+    oi_real R, x, w, s, tb;
+
+    *phi = (oi_real)0;
+    *psi = (oi_real)0;
     if (!OI_ISFINITE(theta) || !OI_ISFINITE(h_km)) return OI_ERR_NONFINITE;
     if (!(h_km > (oi_real)0)) return OI_ERR_BELOW_SURFACE;
 
     if (theta < (oi_real)0) theta = (oi_real)0;
     if (theta > OI_PI_R) theta = OI_PI_R;
 
-    R = m.earth_radius_km;
+    R = m->earth_radius_km;
     x = R / (R + h_km);
     s = OI_SQRT(h_km) * OI_SQRT(OI_R(2.0) * R + h_km); /* no overflow for huge h */
     w = OI_ATAN2(s, R);
 
-    if (m.earth_model == OI_EARTH_TABLE) {
-        t = m.earth_table;
+    if (m->earth_model == OI_EARTH_TABLE) {
+        t = m->earth_table;
 #ifndef OI_NO_EARTH_TABLE
         if (t == NULL) t = &oi_earth_diffuse;
 #endif
@@ -281,5 +292,5 @@ int oi_earthshine(oi_real theta, oi_real h_km, const oi_model *model,
     /* Lambert far field: explicit model, no table, or outside its range */
     *phi = x * x * oi_lambert_phase(theta);
     *psi = (oi_real)0;
-    return m.earth_model == OI_EARTH_LAMBERT ? OI_OK : OI_WARN_TABLE_RANGE;
+    return m->earth_model == OI_EARTH_LAMBERT ? OI_OK : OI_WARN_TABLE_RANGE;
 }

@@ -78,7 +78,7 @@ static int moon_irradiance(const oi_scene *s, const oi_model *m, oi_real *e_moon
 {
     oi_shadow moon_shadow;
     oi_real to_sun[3], to_target[3], d_sun, d_target, alpha, ratio;
-    int st = oi_sun_fraction(s->sun_km, s->moon_km, m, &moon_shadow);
+    int st = oi__sun_shadow(s->sun_km, s->moon_km, m, &moon_shadow, NULL);
     if (st < 0) return st;
     oi__sub(s->sun_km, s->moon_km, to_sun);
     oi__sub(s->target_km, s->moon_km, to_target);
@@ -162,7 +162,7 @@ int oi_illuminate(const oi_scene *scene, const oi_model *model, oi_illum *out)
         memcpy(out->dir_sun, sun_dir, sizeof sun_dir);
     }
     if (scene->terms & OI_TERM_EARTH) {
-        st = oi_earthshine(out->earth_theta, out->earth_h_km, &m, &phi, &psi);
+        st = oi__earthshine(out->earth_theta, out->earth_h_km, &m, &phi, &psi);
         if (st < 0) goto fail;
         if (st > 0) warn = st;
         out->earth_phi = phi;

@@ -2,16 +2,15 @@
 /* model.c: defaults and validation of oi_model, and oi_scene_defaults. */
 #include "oi_internal.h"
 
-static void model_defaults(oi_model *m)
-{
-    memset(m, 0, sizeof *m);
-    m->tsi_w_m2 = (oi_real)OI_TSI_W_M2;
-    m->au_km = (oi_real)OI_AU_KM;
-    m->sun_radius_km = (oi_real)OI_SUN_RADIUS_KM;
-    m->earth_radius_km = (oi_real)OI_EARTH_RADIUS_KM;
-    m->moon_radius_km = (oi_real)OI_MOON_RADIUS_KM;
-    m->moon_albedo = (oi_real)OI_MOON_ALBEDO_DEFAULT;
-}
+/* The default model (every other field zero: the default options). */
+static const oi_model default_model = {
+    .tsi_w_m2 = (oi_real)OI_TSI_W_M2,
+    .au_km = (oi_real)OI_AU_KM,
+    .sun_radius_km = (oi_real)OI_SUN_RADIUS_KM,
+    .earth_radius_km = (oi_real)OI_EARTH_RADIUS_KM,
+    .moon_radius_km = (oi_real)OI_MOON_RADIUS_KM,
+    .moon_albedo = (oi_real)OI_MOON_ALBEDO_DEFAULT,
+};
 
 /* Replace a zero constant by its default; reject negative, non-finite, or
  * outside [lo, hi] (the bounds keep every intermediate finite). */
@@ -25,8 +24,7 @@ static int resolve_positive(oi_real given, oi_real fallback, oi_real lo, oi_real
 
 int oi__model_resolve(const oi_model *in, oi_model *out)
 {
-    oi_model def;
-    model_defaults(&def);
+    const oi_model def = default_model;
     *out = def;
     if (in == NULL) return OI_OK;
 

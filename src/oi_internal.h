@@ -80,14 +80,24 @@ static inline void oi__zero3(oi_real a[3])
 int oi__model_resolve(const oi_model *in, oi_model *out);
 
 /*
- * oi_sun_fraction (src/shadow.c) that also returns, when light_dir is not NULL
- * and the atmosphere is compiled in and enabled, the unit vector from the
- * point towards where the sunlight comes from on average (refracted light in
- * the shadow; the Sun's direction elsewhere). light_dir is left untouched
- * otherwise, so the caller sets it to the Sun's direction first.
+ * oi_sun_fraction (src/shadow.c) for callers that already hold a resolved
+ * model (oi__model_resolve) and non-NULL pointers: the model is not
+ * validated again. When light_dir is not NULL and the atmosphere is compiled
+ * in and enabled, it also returns the unit vector from the point towards
+ * where the sunlight comes from on average (refracted light in the shadow;
+ * the Sun's direction elsewhere). light_dir is left untouched otherwise, so
+ * the caller sets it to the Sun's direction first.
  */
-int oi__sun_shadow(const oi_real sun_km[3], const oi_real point_km[3], const oi_model *model,
+int oi__sun_shadow(const oi_real sun_km[3], const oi_real point_km[3], const oi_model *resolved,
                    oi_shadow *out, oi_real light_dir[3]);
+
+/*
+ * oi_earthshine (src/earthshine.c) for callers that already hold a resolved
+ * model and non-NULL phi, psi: same results and statuses, the model is not
+ * validated again.
+ */
+int oi__earthshine(oi_real theta, oi_real h_km, const oi_model *resolved, oi_real *phi,
+                   oi_real *psi);
 
 #ifndef OI_NO_ATMOSPHERE
 /*

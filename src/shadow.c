@@ -614,50 +614,54 @@ static oi_real apparent_radius(oi_real rad, oi_real dist)
 int oi_sun_fraction(const oi_real sun_km[3], const oi_real point_km[3],
                     const oi_model *model, oi_shadow *out)
 {
-    return oi__sun_shadow(sun_km, point_km, model, out, NULL);
-}
-
-/* oi_sun_fraction, and (light_dir not NULL, atmosphere compiled in and on)
- * the mean direction the sunlight arrives from: see src/oi_internal.h. */
-int oi__sun_shadow(const oi_real sun_km[3], const oi_real point_km[3], const oi_model *model,
-                   oi_shadow *out, oi_real light_dir[3])
-{
     oi_model m;
-    oi_real rel[3], anti[3];
-    oi_real ds, dp, dsp, rs, re, sep, frac, frac_ld, q_earth;
-    int st, region;
-
+    int st;
     if (out == NULL) return OI_ERR_NULL;
     memset(out, 0, sizeof *out);
     if (sun_km == NULL || point_km == NULL) return OI_ERR_NULL;
     st = oi__model_resolve(model, &m);
     if (st < 0) return st;
+    return oi__sun_shadow(sun_km, point_km, &m, out, NULL);
+}
+
+/* oi_sun_fraction with a resolved model, and (light_dir not NULL, atmosphere
+ * compiled in and on) the mean direction the sunlight arrives from: see
+ * src/oi_internal.h. */
+int oi__sun_shadow(const oi_real sun_km[3], const oi_real point_km[3], const oi_model *model,
+                   oi_shadow *out, oi_real light_dir[3])
+{
+    const oi_model *m = model;
+    oi_real rel[3], anti[3];
+    oi_real ds, dp, dsp, rs, re, sep, frac, frac_ld, q_earth;
+    int st = OI_OK, region;
+
+    memset(out, 0, sizeof *out);
     if (!oi__finite3(sun_km) || !oi__finite3(point_km)) return OI_ERR_NONFINITE;
     ds = oi__norm(sun_km);
     dp = oi__norm(point_km);
     if (ds == (oi_real)0 || dp == (oi_real)0) return OI_ERR_ZERO_VECTOR;
-    if (dp < (oi_real)2 * m.earth_radius_km) {
+    if (dp < (oi_real)2 * m->earth_radius_km) {
         /* near the surface: the sign of |p|^2 - R^2 decides, and its value
          * gives the Earth's apparent radius atan2(R, sqrt(|p|^2 - R^2)) */
-        q_earth = radial_excess(point_km, m.earth_radius_km);
+        q_earth = radial_excess(point_km, m->earth_radius_km);
         if (!(q_earth > (oi_real)0)) return OI_ERR_BELOW_SURFACE;
     } else {
         q_earth = (oi_real)-1; /* far: the plain form is accurate */
     }
-    if (ds <= m.sun_radius_km + m.earth_radius_km) return OI_ERR_GEOMETRY;
+    if (ds <= m->sun_radius_km + m->earth_radius_km) return OI_ERR_GEOMETRY;
     oi__sub(sun_km, point_km, rel);
     if (!oi__finite3(rel)) return OI_ERR_NONFINITE;
     dsp = oi__norm(rel);
     if (!OI_ISFINITE(dsp) || !OI_ISFINITE(dp)) return OI_ERR_NONFINITE;
-    if (dsp <= m.sun_radius_km) return OI_ERR_GEOMETRY;
+    if (dsp <= m->sun_radius_km) return OI_ERR_GEOMETRY;
 
     anti[0] = -point_km[0];
     anti[1] = -point_km[1];
     anti[2] = -point_km[2];
     sep = oi_angle(rel, anti);
-    rs = apparent_radius(m.sun_radius_km, dsp);
-    re = q_earth > (oi_real)0 ? OI_ATAN2(m.earth_radius_km, OI_SQRT(q_earth))
-                              : apparent_radius(m.earth_radius_km, dp);
+    rs = apparent_radius(m->sun_radius_km, dsp);
+    re = q_earth > (oi_real)0 ? OI_ATAN2(m->earth_radius_km, OI_SQRT(q_earth))
+                              : apparent_radius(m->earth_radius_km, dp);
 
     if (sep >= re + rs || dp >= dsp) {
         /* discs apart, or the Earth behind the Sun (a point beyond the Sun:
@@ -699,14 +703,14 @@ int oi__sun_shadow(const oi_real sun_km[3], const oi_real point_km[3], const oi_
     /* ---- atmosphere: the single place where refraction and extinction will
      * modify the sunlight reaching the point (issue 3). Until then the
      * model's choice of disc, uniform or limb-darkened. */
-    out->fraction_atm = m.limb_darkening == OI_LIMB_DARKENED ? frac_ld : frac;
+    out->fraction_atm = m->limb_darkening == OI_LIMB_DARKENED ? frac_ld : frac;
 #ifdef OI_NO_ATMOSPHERE
     (void)light_dir;
 #else
     /* issue 4 (src/atmosphere.c): refraction and extinction from the baked
      * table; OI_WARN_TABLE_RANGE outside its z range (geometric kept). */
-    if (!m.no_atmosphere)
-        st = oi__atm_fraction(sun_km, point_km, &m, frac, frac_ld, &out->fraction_atm, light_dir);
+    if (!m->no_atmosphere)
+        st = oi__atm_fraction(sun_km, point_km, m, frac, frac_ld, &out->fraction_atm, light_dir);
 #endif
     /* ---- end atmosphere */
     out->sun_radius_rad = rs;
