@@ -48,7 +48,12 @@ int oi__model_resolve(const oi_model *in, oi_model *out)
                          &out->moon_albedo) ||
         (in->earth_model != OI_EARTH_TABLE && in->earth_model != OI_EARTH_LAMBERT) ||
         (in->moon_model != OI_MOON_PHASE_LAW && in->moon_model != OI_MOON_LAMBERT) ||
-        (in->limb_darkening != OI_LIMB_UNIFORM && in->limb_darkening != OI_LIMB_DARKENED)) {
+        (in->limb_darkening != OI_LIMB_UNIFORM && in->limb_darkening != OI_LIMB_DARKENED)
+#ifdef OI_NO_LIMB_DARKENING
+        /* the limb-darkened disc is compiled out (include/oi_config.h) */
+        || in->limb_darkening == OI_LIMB_DARKENED
+#endif
+    ) {
         *out = def;
         return OI_ERR_MODEL;
     }
