@@ -55,52 +55,93 @@ static int check_scene(const oi_scene *s, const oi_model *m)
 }
 
 /* Mean incidence direction of earthshine: psi from the nadir towards the Sun
- * side, in the Sun-Earth-target plane. */
-static void earth_direction(const oi_real target[3], const oi_real sun[3], oi_real psi,
+ * side, in the Sun-Earth-target plane (r_hat, s_hat: unit vectors from the
+ * Earth's centre to the target and to the Sun). */
+static void earth_direction(const oi_real r_hat[3], const oi_real s_hat[3], oi_real psi,
                             oi_real dir[3])
 {
-    oi_real r_hat[3], s_hat[3], t[3], along;
+    oi_real t[3], along, c, s;
     int i;
-    oi__unit(target, r_hat);
-    oi__unit(sun, s_hat);
     along = oi__dot(s_hat, r_hat);
     for (i = 0; i < 3; i++) t[i] = s_hat[i] - along * r_hat[i];
     /* On the Sun-Earth axis the plane is undefined, and psi is 0 by symmetry. */
-    if (oi__unit(t, t) == (oi_real)0) psi = (oi_real)0;
-    for (i = 0; i < 3; i++) dir[i] = -OI_COS(psi) * r_hat[i] + OI_SIN(psi) * t[i];
+    if (oi__unit_bounded(t, t) == (oi_real)0) psi = (oi_real)0;
+    c = psi == (oi_real)0 ? (oi_real)1 : OI_COS(psi);
+    s = psi == (oi_real)0 ? (oi_real)0 : OI_SIN(psi);
+    for (i = 0; i < 3; i++) dir[i] = -c * r_hat[i] + s * t[i];
 }
 
 #ifndef OI_NO_MOON
+/* 10^(-0.4 (OI_MOON_MAG_V_FULL - OI_SUN_MAG_V)) = 10^(-0.4 x 14.01), the full
+ * Moon's irradiance over the Sun's (mpmath, 30 digits; checked against pow in
+ * tests/c/test_illuminate.c). */
+#define MOON_FULL_OVER_SUN OI_R(2.48885731828238908997e-6)
+
+/* Height above the Earth's surface that any sunlight grazing through the
+ * atmosphere stays below (the atmosphere table's top is OI_ATM_TOP_KM =
+ * 100 km), with a factor 2 to spare. */
+#define GRAZING_TOP_KM OI_R(200.0)
+
+/*
+ * 1 when a point is certainly in full sunlight, the atmosphere included:
+ * the angle sep between the Sun's centre and the anti-centre of the Earth
+ * exceeds the sum of the Sun's apparent radius and that of the Earth
+ * enlarged by GRAZING_TOP_KM, by a margin of 1e-6 in cosine (far beyond
+ * rounding). Compared as cosines (cos is decreasing on [0, pi], both radii
+ * are below asin(0.9) so their sum is below pi): no inverse trigonometry.
+ * Then oi__sun_shadow would return the LIT region and a fraction of exactly
+ * 1 (the atmosphere's window lies inside the enlarged disc), so the caller
+ * may skip it. 0 means "not certain": compute the shadow.
+ *   u_sun    unit vector from the point to the Sun, d_sun its distance
+ *   point    the point (Earth-centred), d_point its distance
+ */
+static int certainly_lit(const oi_real u_sun[3], oi_real d_sun, const oi_real point[3],
+                         oi_real d_point, const oi_model *m)
+{
+    oi_real sin_e = (m->earth_radius_km + GRAZING_TOP_KM) / d_point;
+    oi_real sin_s = m->sun_radius_km / d_sun;
+    oi_real cos_e, cos_s, cos_sep;
+    if (!(sin_e < OI_R(0.9)) || !(sin_s < OI_R(0.9))) return 0;
+    cos_e = OI_SQRT(((oi_real)1 - sin_e) * ((oi_real)1 + sin_e));
+    cos_s = OI_SQRT(((oi_real)1 - sin_s) * ((oi_real)1 + sin_s));
+    cos_sep = -oi__dot(u_sun, point) / d_point;
+    return cos_sep < cos_e * cos_s - sin_e * sin_s - OI_R(1e-6);
+}
+
 /* Scalar irradiance of moonlight at the target; moon_fraction is the fraction
  * of sunlight reaching the Moon. */
 static int moon_irradiance(const oi_scene *s, const oi_model *m, oi_real *e_moon,
                            oi_real dir[3], oi_real *moon_fraction)
 {
-    oi_shadow moon_shadow;
-    oi_real to_sun[3], to_target[3], d_sun, d_target, alpha, ratio;
-    int st = oi__sun_shadow(s->sun_km, s->moon_km, m, &moon_shadow, NULL);
-    if (st < 0) return st;
+    oi_real to_sun[3], u_sun[3], to_target[3], d_sun, d_target, alpha, ratio;
     oi__sub(s->sun_km, s->moon_km, to_sun);
     oi__sub(s->target_km, s->moon_km, to_target);
-    d_sun = oi__norm(to_sun);
+    d_sun = oi__unit_bounded(to_sun, u_sun);
+    if (certainly_lit(u_sun, d_sun, s->moon_km, oi__norm_bounded(s->moon_km), m)) {
+        *moon_fraction = (oi_real)1;
+    } else {
+        oi_shadow moon_shadow;
+        int st = oi__sun_shadow(s->sun_km, s->moon_km, m, &moon_shadow, NULL);
+        if (st < 0) return st;
+        *moon_fraction = moon_shadow.fraction_atm;
+    }
     d_target = oi__unit(to_target, dir);
     if (!(d_target > m->moon_radius_km)) return OI_ERR_GEOMETRY;
+    alpha = oi__angle_unit(u_sun, dir);
     dir[0] = -dir[0];
     dir[1] = -dir[1];
     dir[2] = -dir[2];
-    alpha = oi_angle(to_sun, to_target);
-    *moon_fraction = moon_shadow.fraction_atm;
     if (m->moon_model == OI_MOON_LAMBERT) {
         ratio = m->moon_radius_km / d_target;
         *e_moon = solar_irradiance(m, d_sun) * m->moon_albedo * ratio * ratio *
                   oi_lambert_phase(alpha);
     } else {
         /* Full Moon at mean distance and 1 AU: V = OI_MOON_MAG_V_FULL; scale by
-         * both inverse squares and the phase law (Krisciunas & Schaefer 1991). */
+         * both inverse squares and the phase law (Krisciunas & Schaefer 1991):
+         * 10^(-0.4 (V_full - V_sun)) = MOON_FULL_OVER_SUN. */
         ratio = (oi_real)OI_MOON_MEAN_DISTANCE_KM / d_target;
-        *e_moon = solar_irradiance(m, d_sun) *
-                  OI_POW(OI_R(10.0), OI_R(-0.4) * (oi_real)(OI_MOON_MAG_V_FULL - OI_SUN_MAG_V)) *
-                  ratio * ratio * oi_moon_phase_law(alpha);
+        *e_moon = solar_irradiance(m, d_sun) * MOON_FULL_OVER_SUN * ratio * ratio *
+                  oi_moon_phase_law(alpha);
     }
     *e_moon *= *moon_fraction;
     return OI_OK;
@@ -108,11 +149,12 @@ static int moon_irradiance(const oi_scene *s, const oi_model *m, oi_real *e_moon
 #endif
 
 /* Flux at the observer from a Lambertian sphere lit by irradiance e from
- * direction dir: F = e albedo a^2 p(xi) / d^2. */
-static oi_real reflected_flux(oi_real e, const oi_real dir[3], const oi_real to_observer[3],
+ * the unit direction dir: F = e albedo a^2 p(xi) / d^2 (obs_hat: unit vector
+ * from the target to the observer). */
+static oi_real reflected_flux(oi_real e, const oi_real dir[3], const oi_real obs_hat[3],
                               oi_real radius_over_range, oi_real albedo, oi_real *phase)
 {
-    *phase = oi_angle(dir, to_observer);
+    *phase = oi__angle_unit(dir, obs_hat);
     if (!(e > (oi_real)0)) return (oi_real)0;
     return e * albedo * radius_over_range * radius_over_range * oi_lambert_phase(*phase);
 }
@@ -127,14 +169,20 @@ static oi_real reflected_flux(oi_real e, const oi_real dir[3], const oi_real to_
  *  2. Earth: e_earth = earth_albedo * TSI (AU/|sun|)^2 * phi(theta, h).
  *  3. Moon: the Moon is lit by the fraction of the Sun it sees (so it darkens
  *     in the Earth's shadow). The Moon's own shadow on the target (solar
- *     eclipses by the Moon) is not modelled.
+ *     eclipses by the Moon) is not modelled. The Moon's shadow test is
+ *     skipped when the Moon is certainly in full sunlight (certainly_lit).
  *  4. The target is a Lambertian sphere; earthshine is reflected as if it came
  *     from its mean incidence direction (exact in the far field).
+ *  5. Cost: the model is resolved and the scene validated once; after that
+ *     every position is bounded (OI_POSITION_MAX_KM), so norms skip the
+ *     overflow scaling and angles between unit vectors are formed directly
+ *     (oi__angle_unit), each unit vector once. docs/performance.md.
  */
 int oi_illuminate(const oi_scene *scene, const oi_model *model, oi_illum *out)
 {
     oi_model m;
     oi_real e0, phi = (oi_real)0, psi = (oi_real)0, to_sun[3], sun_dir[3], sun_distance;
+    oi_real s_hat[3], r_hat[3], d_sun, r_target;
     int st, warn = OI_OK;
 
     if (out == NULL) return OI_ERR_NULL;
@@ -148,14 +196,16 @@ int oi_illuminate(const oi_scene *scene, const oi_model *model, oi_illum *out)
     /* the Sun's direction, replaced by the refracted light's mean direction
      * where the atmosphere bends sunlight into the shadow */
     oi__sub(scene->sun_km, scene->target_km, to_sun);
-    sun_distance = oi__unit(to_sun, sun_dir);
+    sun_distance = oi__unit_bounded(to_sun, sun_dir);
     st = oi__sun_shadow(scene->sun_km, scene->target_km, &m, &out->shadow, sun_dir);
     if (st < 0) goto fail;
     if (st > 0) warn = st;
 
-    out->earth_theta = oi_angle(scene->sun_km, scene->target_km);
-    out->earth_h_km = oi__norm(scene->target_km) - m.earth_radius_km;
-    e0 = solar_irradiance(&m, oi__norm(scene->sun_km));
+    d_sun = oi__unit_bounded(scene->sun_km, s_hat);
+    r_target = oi__unit_bounded(scene->target_km, r_hat);
+    out->earth_theta = oi__angle_unit(s_hat, r_hat);
+    out->earth_h_km = r_target - m.earth_radius_km;
+    e0 = solar_irradiance(&m, d_sun);
 
     if (scene->terms & OI_TERM_SUN) {
         out->e_sun = solar_irradiance(&m, sun_distance) * out->shadow.fraction_atm;
@@ -168,7 +218,7 @@ int oi_illuminate(const oi_scene *scene, const oi_model *model, oi_illum *out)
         out->earth_phi = phi;
         out->earth_psi = psi;
         out->e_earth = scene->earth_albedo * e0 * phi;
-        earth_direction(scene->target_km, scene->sun_km, psi, out->dir_earth);
+        earth_direction(r_hat, s_hat, psi, out->dir_earth);
     }
 #ifndef OI_NO_MOON
     if (scene->terms & OI_TERM_MOON) {
@@ -178,23 +228,23 @@ int oi_illuminate(const oi_scene *scene, const oi_model *model, oi_illum *out)
 #endif
 
     if (scene->has_observer) {
-        oi_real to_obs[3], ratio;
+        oi_real to_obs[3], obs_hat[3], ratio;
         oi__sub(scene->observer_km, scene->target_km, to_obs);
-        out->range_km = oi__norm(to_obs);
+        out->range_km = oi__unit(to_obs, obs_hat);
         /* radius and range in the same unit */
         ratio = scene->target_radius_m / (out->range_km * OI_R(1000.0));
         if (!(ratio < (oi_real)1)) {
             st = OI_ERR_OBSERVER_AT_TARGET;
             goto fail;
         }
-        out->flux_sun = reflected_flux(out->e_sun, out->dir_sun, to_obs, ratio,
+        out->flux_sun = reflected_flux(out->e_sun, out->dir_sun, obs_hat, ratio,
                                        scene->target_albedo, &out->phase_sun);
-        out->flux_earth = reflected_flux(out->e_earth, out->dir_earth, to_obs, ratio,
+        out->flux_earth = reflected_flux(out->e_earth, out->dir_earth, obs_hat, ratio,
                                          scene->target_albedo, &out->phase_earth);
-        out->flux_moon = reflected_flux(out->e_moon, out->dir_moon, to_obs, ratio,
+        out->flux_moon = reflected_flux(out->e_moon, out->dir_moon, obs_hat, ratio,
                                         scene->target_albedo, &out->phase_moon);
         out->flux_obs = out->flux_sun + out->flux_earth + out->flux_moon;
-        out->mag_v = oi_magnitude_v(out->flux_obs, &m);
+        out->mag_v = oi__magnitude_v(out->flux_obs, m.tsi_w_m2);
     }
     return warn;
 

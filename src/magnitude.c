@@ -15,11 +15,23 @@
 oi_real oi_magnitude_v(oi_real flux_w_m2, const oi_model *model)
 {
     oi_model m;
-    oi_real mag;
     (void)oi__model_resolve(model, &m);
+    return oi__magnitude_v(flux_w_m2, m.tsi_w_m2);
+}
+
+/* oi_magnitude_v for a resolved TSI (src/oi_internal.h). */
+oi_real oi__magnitude_v(oi_real flux_w_m2, oi_real tsi_w_m2)
+{
+    oi_real mag, ratio;
     if (!OI_ISFINITE(flux_w_m2) || !(flux_w_m2 > (oi_real)0)) return (oi_real)OI_MAG_DARK;
-    /* log10 of each factor apart: flux / tsi may underflow in single precision */
-    mag = (oi_real)OI_SUN_MAG_V - OI_R(2.5) * (OI_LOG10(flux_w_m2) - OI_LOG10(m.tsi_w_m2));
+    ratio = flux_w_m2 / tsi_w_m2;
+    if (ratio > OI_R(1e-30) && ratio < OI_R(1e30)) {
+        mag = (oi_real)OI_SUN_MAG_V - OI_R(2.5) * OI_LOG10(ratio);
+    } else {
+        /* log10 of each factor apart: the ratio may underflow (single
+         * precision) or overflow (a tiny model TSI) */
+        mag = (oi_real)OI_SUN_MAG_V - OI_R(2.5) * (OI_LOG10(flux_w_m2) - OI_LOG10(tsi_w_m2));
+    }
     if (!(mag < (oi_real)OI_MAG_DARK)) return (oi_real)OI_MAG_DARK;
     return mag;
 }

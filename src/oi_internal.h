@@ -61,6 +61,38 @@ static inline oi_real oi__unit(const oi_real a[3], oi_real out[3])
     return n;
 }
 
+/* Norm, unit vector and angle for vectors whose components are known to be
+ * finite and at most ~1e18 in magnitude (positions validated against
+ * OI_POSITION_MAX_KM, unit vectors): the plain sum of squares cannot
+ * overflow in either precision, so the scaling of oi__norm is skipped. A
+ * vector shorter than ~1e-150 (double) or ~1e-18 (float) may come out as
+ * zero: callers use them only where such lengths are excluded. */
+static inline oi_real oi__norm_bounded(const oi_real a[3])
+{
+    return OI_SQRT(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+}
+
+static inline oi_real oi__unit_bounded(const oi_real a[3], oi_real out[3])
+{
+    oi_real n = oi__norm_bounded(a);
+    if (n > (oi_real)0) {
+        out[0] = a[0] / n;
+        out[1] = a[1] / n;
+        out[2] = a[2] / n;
+    } else {
+        out[0] = out[1] = out[2] = (oi_real)0;
+    }
+    return n;
+}
+
+/* Angle between two unit vectors, atan2(|a x b|, a . b) (see oi_angle). */
+static inline oi_real oi__angle_unit(const oi_real ua[3], const oi_real ub[3])
+{
+    oi_real c[3];
+    oi__cross(ua, ub, c);
+    return OI_ATAN2(oi__norm_bounded(c), oi__dot(ua, ub));
+}
+
 static inline int oi__finite3(const oi_real a[3])
 {
     return OI_ISFINITE(a[0]) && OI_ISFINITE(a[1]) && OI_ISFINITE(a[2]);
@@ -98,6 +130,9 @@ int oi__sun_shadow(const oi_real sun_km[3], const oi_real point_km[3], const oi_
  */
 int oi__earthshine(oi_real theta, oi_real h_km, const oi_model *resolved, oi_real *phi,
                    oi_real *psi);
+
+/* oi_magnitude_v (src/magnitude.c) with the model's TSI already resolved. */
+oi_real oi__magnitude_v(oi_real flux_w_m2, oi_real tsi_w_m2);
 
 #ifndef OI_NO_ATMOSPHERE
 /*

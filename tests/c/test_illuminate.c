@@ -160,6 +160,77 @@ static void test_moon_lambert_and_phase_law(void **state)
     }
 }
 
+/* The default phase law against its definition written out here: full Moon
+ * V = -12.73 at 384,400 km and 1 AU, scaled by both inverse squares and
+ * 10^(-0.4 (0.026 a + 4e-9 a^4)), a in degrees (Krisciunas & Schaefer 1991). */
+static void test_moon_phase_law_irradiance(void **state)
+{
+    oi_scene s = lit_scene();
+    oi_illum out;
+    double dm = 384400.0, moon[3] = {60000.0, 300000.0, 200000.0}, tgt[3] = {0, 7000, 0};
+    double sm[3], tm[3], d_sm, d_tm, ca, a_deg, law, want;
+    int k;
+    (void)state;
+    (void)dm;
+    set3(s.moon_km, moon[0], moon[1], moon[2]);
+    s.terms = OI_TERM_MOON;
+    s.has_observer = 0;
+    assert_int_equal(oi_illuminate(&s, NULL, &out), OI_OK);
+    for (k = 0; k < 3; k++) {
+        sm[k] = (k == 0 ? AU : 0.0) - moon[k];
+        tm[k] = tgt[k] - moon[k];
+    }
+    d_sm = sqrt(sm[0] * sm[0] + sm[1] * sm[1] + sm[2] * sm[2]);
+    d_tm = sqrt(tm[0] * tm[0] + tm[1] * tm[1] + tm[2] * tm[2]);
+    ca = (sm[0] * tm[0] + sm[1] * tm[1] + sm[2] * tm[2]) / (d_sm * d_tm);
+    a_deg = acos(ca) * 180.0 / PI; /* well away from 0 and 180: acos is fine */
+    law = pow(10.0, -0.4 * (0.026 * a_deg + 4e-9 * pow(a_deg, 4)));
+    want = TSI * (AU / d_sm) * (AU / d_sm) * pow(10.0, -0.4 * (-12.73 + 26.74)) *
+           (384400.0 / d_tm) * (384400.0 / d_tm) * law;
+    check_rel(1.0, out.moon_sun_fraction, 0, "moon lit");
+    check_rel(want, out.e_moon, REL_TOL * 100, "e_moon phase law");
+}
+
+/* oi_illuminate skips the Moon's shadow computation when the Moon is certainly
+ * lit: over Moon positions swept across the Earth's shadow (umbra, penumbra,
+ * the atmosphere's reach and beyond) its moon_sun_fraction must equal
+ * oi_sun_fraction's fraction_atm at the Moon, bit for bit. */
+static void test_moon_fraction_matches_shadow(void **state)
+{
+    oi_scene s = lit_scene();
+    oi_illum out;
+    oi_shadow sh;
+    int i, j, skipped_region = 0, shadowed = 0;
+    (void)state;
+    s.terms = OI_TERM_MOON;
+    s.has_observer = 0;
+    for (i = 0; i < 60; i++) {
+        /* distances from 8,000 km to 1.5 million km behind the Earth */
+        double dist = 8000.0 * pow(1.5e6 / 8000.0, i / 59.0);
+        for (j = -40; j <= 40; j++) {
+            /* lateral offsets across the shadow: up to 1.3 x the penumbra's
+             * radius there (Earth radius + dist x (R_sun + R_earth) / AU) */
+            double pen = 6378.137 + dist * (695700.0 + 6378.137) / AU + 300.0;
+            double off = 1.3 * pen * j / 40.0;
+            int st;
+            set3(s.moon_km, -dist, off, 0.37 * off);
+            if (sqrt(dist * dist + 1.1369 * off * off) < 6378.137 + 1737.4 + 10.0) continue;
+            st = oi_illuminate(&s, NULL, &out);
+            assert_true(st >= 0);
+            assert_true(oi_sun_fraction(s.sun_km, s.moon_km, NULL, &sh) >= 0);
+            if (out.moon_sun_fraction != sh.fraction_atm) {
+                print_error("moon at (%g, %g): want %.17g got %.17g\n", -dist, off,
+                            (double)sh.fraction_atm, (double)out.moon_sun_fraction);
+                fail();
+            }
+            if (sh.fraction_atm < 1) shadowed++;
+            if (sh.region == OI_SHADOW_LIT) skipped_region++;
+        }
+    }
+    /* the sweep must reach both sides of the shortcut */
+    assert_true(shadowed > 100 && skipped_region > 100);
+}
+
 static void test_moon_in_umbra_is_dark(void **state)
 {
     oi_scene s = lit_scene();
@@ -358,6 +429,8 @@ int main(void)
 #ifndef OI_NO_MOON
         cmocka_unit_test(test_moon_lambert_and_phase_law),
         cmocka_unit_test(test_moon_in_umbra_is_dark),
+        cmocka_unit_test(test_moon_phase_law_irradiance),
+        cmocka_unit_test(test_moon_fraction_matches_shadow),
 #endif
         cmocka_unit_test(test_target_in_umbra),
 #ifndef OI_NO_ATMOSPHERE
