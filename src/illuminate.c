@@ -154,9 +154,16 @@ static int moon_irradiance(const oi_scene *s, const oi_model *m, oi_real *e_moon
 static oi_real reflected_flux(oi_real e, const oi_real dir[3], const oi_real obs_hat[3],
                               oi_real radius_over_range, oi_real albedo, oi_real *phase)
 {
-    *phase = oi__angle_unit(dir, obs_hat);
+    oi_real c[3], cos_xi, sin_xi;
+    oi__cross(dir, obs_hat, c);
+    sin_xi = oi__norm_bounded(c);
+    cos_xi = oi__dot(dir, obs_hat);
+    *phase = OI_ATAN2(sin_xi, cos_xi);
     if (!(e > (oi_real)0)) return (oi_real)0;
-    return e * albedo * radius_over_range * radius_over_range * oi_lambert_phase(*phase);
+    /* dir and obs_hat are unit vectors to rounding: cos and sin of the
+     * phase angle to a few ulp, as accurate as OI_COS/OI_SIN of the angle */
+    return e * albedo * radius_over_range * radius_over_range *
+           oi__lambert_phase_cs(*phase, cos_xi, sin_xi);
 }
 
 /*

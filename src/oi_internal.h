@@ -131,6 +131,12 @@ int oi__sun_shadow(const oi_real sun_km[3], const oi_real point_km[3], const oi_
 int oi__earthshine(oi_real theta, oi_real h_km, const oi_model *resolved, oi_real *phi,
                    oi_real *psi);
 
+/* oi_lambert_phase (src/phase.c) for a caller that holds cos(xi) and
+ * sin(xi) of the same angle (e.g. the dot and cross products of two unit
+ * vectors, xi = atan2(sin, cos)): used where the closed form needs them
+ * (pi - xi >= 1), so no cosine or sine is evaluated. cos_xi > 1: not given. */
+oi_real oi__lambert_phase_cs(oi_real xi, oi_real cos_xi, oi_real sin_xi);
+
 /* oi_magnitude_v (src/magnitude.c) with the model's TSI already resolved. */
 oi_real oi__magnitude_v(oi_real flux_w_m2, oi_real tsi_w_m2);
 

@@ -69,6 +69,13 @@ static oi_real series_sin_minus_tcos(oi_real t)
  */
 oi_real oi_lambert_phase(oi_real xi)
 {
+    return oi__lambert_phase_cs(xi, (oi_real)2, (oi_real)0);
+}
+
+/* oi_lambert_phase with cos(xi), sin(xi) given when the caller has them
+ * (cos_xi > 1 means "not given": computed here); see src/oi_internal.h. */
+oi_real oi__lambert_phase_cs(oi_real xi, oi_real cos_xi, oi_real sin_xi)
+{
     oi_real t, f;
     if (xi != xi) return (oi_real)0;              /* NaN */
     if (xi <= (oi_real)0) return (oi_real)2 / (oi_real)3;  /* p(0) = 2/3 */
@@ -77,7 +84,11 @@ oi_real oi_lambert_phase(oi_real xi)
     if (t < (oi_real)1) {
         f = series_sin_minus_tcos(t);
     } else {
-        f = t * OI_COS(xi) + OI_SIN(xi);
+        if (cos_xi > (oi_real)1) {
+            cos_xi = OI_COS(xi);
+            sin_xi = OI_SIN(xi);
+        }
+        f = t * cos_xi + sin_xi;
     }
     f *= TWO_THIRDS_OVER_PI;
     return f > (oi_real)0 ? f : (oi_real)0;

@@ -231,6 +231,45 @@ static void test_moon_fraction_matches_shadow(void **state)
     assert_true(shadowed > 100 && skipped_region > 100);
 }
 
+/* The reflected flux uses the phase function with the cosine and sine that
+ * the angle came from (no trigonometry): over random lit geometries it must
+ * agree with the public oi_lambert_phase of the returned phase angle. */
+static void test_reflected_flux_matches_phase_function(void **state)
+{
+    oi_scene s = lit_scene();
+    oi_illum out;
+    uint64_t r = 12345u;
+    int i, n = 0;
+    double worst = 0;
+    (void)state;
+    s.terms = OI_TERM_SUN;
+    for (i = 0; i < 3000; i++) {
+        double u[3], want, ratio;
+        int k;
+        for (k = 0; k < 3; k++) {
+            r = r * 6364136223846793005ULL + 1442695040888963407ULL;
+            u[k] = (double)(r >> 11) / 9007199254740992.0 * 2.0 - 1.0;
+        }
+        /* observer anywhere within 40,000 km of a target on +y */
+        set3(s.observer_km, 40000.0 * u[0], 7000.0 + 40000.0 * u[1], 40000.0 * u[2]);
+        if (sqrt(pow(40000.0 * u[0], 2) + pow(7000.0 + 40000.0 * u[1], 2) +
+                 pow(40000.0 * u[2], 2)) < 6500.0)
+            continue;
+        assert_int_equal(oi_illuminate(&s, NULL, &out), OI_OK);
+        ratio = (double)s.target_radius_m / ((double)out.range_km * 1000.0);
+        want = (double)out.e_sun * (double)s.target_albedo * ratio * ratio *
+               (double)oi_lambert_phase(out.phase_sun);
+        if (want > 0) {
+            double rel = fabs((double)out.flux_sun - want) / want;
+            if (rel > worst) worst = rel;
+        }
+        check_rel(want, out.flux_sun, REL_TOL, "flux_sun vs oi_lambert_phase(phase_sun)");
+        n++;
+    }
+    assert_true(n > 2000);
+    print_message("reflected flux vs oi_lambert_phase: worst relative difference %.3g\n", worst);
+}
+
 static void test_moon_in_umbra_is_dark(void **state)
 {
     oi_scene s = lit_scene();
@@ -429,6 +468,7 @@ int main(void)
 #ifndef OI_NO_MOON
         cmocka_unit_test(test_moon_lambert_and_phase_law),
         cmocka_unit_test(test_moon_in_umbra_is_dark),
+        cmocka_unit_test(test_reflected_flux_matches_phase_function),
         cmocka_unit_test(test_moon_phase_law_irradiance),
         cmocka_unit_test(test_moon_fraction_matches_shadow),
 #endif
