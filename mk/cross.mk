@@ -49,7 +49,7 @@ OI_PUBLIC := oi_status_name oi_lambert_phase oi_angle oi_cap_overlap oi_sun_frac
 cfg_core = $(word 1,$(subst -, ,$(1)))
 cfg_opt = $(word 2,$(subst -, ,$(1)))
 CROSS_CFLAGS = $(WARN) -$(call cfg_opt,$(1)) $(CPU_$(call cfg_core,$(1))) \
-  -ffunction-sections -fdata-sections -fstack-usage -fcallgraph-info=su $(CROSS_EXTRA) \
+  $(RT_MATH) -ffunction-sections -fdata-sections -fstack-usage -fcallgraph-info=su $(CROSS_EXTRA) \
   -Iinclude -Isrc -Itables
 CROSS_LDFLAGS = $(CPU_$(call cfg_core,$(1))) -nostartfiles -T target/mps2.ld -Wl,--gc-sections
 CROSS_LIBS := -lm -lc -lgcc
