@@ -14,29 +14,97 @@
 #endif
 
 #define ATM_R(x) ((oi_real)(x))
+#define ATM_HC ATM_R(OI_ATM_H_C_KM)
+#define ATM_HA ATM_R(OI_ATM_H_A_KM)
 
-/* Image radius (km) of the ray of lowest altitude v (km) at z km behind the
- * Earth, in the table's coordinate model alpha(v) = alpha_c exp(-(v - h_c)/H_A)
- * (bake/atm_table.py, _m): rho = rc + v - z alpha(v). Increasing in v. */
-static oi_real image_radius(oi_real v, oi_real z, oi_real rc)
-{
-    return rc + v - z * ATM_R(OI_ATM_ALPHA_C_RAD) *
-                        OI_EXP(-(v - ATM_R(OI_ATM_H_C_KM)) / ATM_R(OI_ATM_H_A_KM));
-}
+/* Derived constants of the table's coordinates, written out because C has no
+ * constant exp/log (tests/c/test_atmosphere.c recomputes each from the
+ * table's macros and fails if the table moves them):
+ *   ATM_E_MID = exp(-(OI_ATM_V_MID_KM - OI_ATM_H_C_KM) / OI_ATM_H_A_KM)
+ *   ATM_C_IU  = (OI_ATM_NZ - 1) / ln(OI_ATM_Z_MAX_KM / OI_ATM_Z_MIN_KM)
+ *   ATM_LN10  = ln 10 */
+#define ATM_E_MID ATM_R(4.56323900581031082406e-4)
+#define ATM_C_IU ATM_R(6.80394688315094529987)
+#define ATM_LN10 ATM_R(2.30258509299404568402)
 
-/* v in [lo, hi] with image_radius(v) = target, by OI_ATM_N_BISECT bisection
- * steps (the same fixed count as the baker: identical coordinates). */
-static oi_real solve_v(oi_real target, oi_real z, oi_real rc, oi_real lo, oi_real hi)
+/* The ray-altitude solve (see solve_x): a Halley step whose size is below
+ * ATM_X_TOL (units of OI_ATM_H_A_KM) leaves an error of order ATM_X_TOL^3
+ * (cubic convergence, relative curvature of phi below 1), far below the
+ * rounding of phi itself; ATM_MAX_IT bounds the loop (bisection fallback
+ * halves a bracket of < 20 units to < ATM_X_TOL in ~20 steps). */
+#ifdef OI_SINGLE_PRECISION
+#define ATM_X_TOL OI_R(1e-3)
+#else
+#define ATM_X_TOL OI_R(1e-4)
+#endif
+#define ATM_MAX_IT 40
+
+/*
+ * Ray altitude of the table's coordinate map: the root x in [lo, hi] of
+ *   phi(x) = H x - K exp(-x) - tp,
+ * x = (v - h_c) / H, K = z alpha_c, tp = rho - rc - h_c, i.e. the v with
+ * image radius rc + v - z alpha_c exp(-(v - h_c)/H) = rho (bake/atm_table.py
+ * _m, _solve_v). phi is increasing and concave; lo must be a lower bound of
+ * the root and hi an upper bound; e_lo is K exp(-lo) when the caller knows
+ * it (else any value <= 0).
+ *
+ * The baker inverts the map by 48 fixed bisection steps (each an exp); here
+ * safeguarded Halley iteration (one exp a step) from the largest cheap lower
+ * bound: lo, x >= tp / H (as K exp(-x) > 0) and, since K exp(-x) = H x - tp
+ * <= H hi - tp at the root, x >= ln(K / (H hi - tp)). At the last two
+ * K exp(-x) is known without an exp (H hi - tp, e_lo). Two or three steps
+ * reach the root to ~1e-13 (double); the bisection's own result is within
+ * 2^-48 of its bracket of the root, so both agree to ~1e-12 km, ~1e-12
+ * table cells (tests/c/test_atmosphere.c measures it against a copy of the
+ * bisection). Each evaluation also narrows [lo, hi]; a step leaving it is
+ * replaced by bisection, so the iteration cannot diverge.
+ *
+ * Reference: Halley's method, e.g. Press, W. H. et al. 2007, Numerical
+ * Recipes, 3rd ed., Cambridge, section 9.4.2.
+ */
+static oi_real solve_x(oi_real tp, oi_real k, oi_real lo, oi_real hi, oi_real e_lo)
 {
-    int i;
-    for (i = 0; i < OI_ATM_N_BISECT; ++i) {
-        oi_real mid = OI_R(0.5) * (lo + hi);
-        if (image_radius(mid, z, rc) < target)
-            lo = mid;
-        else
-            hi = mid;
+    oi_real x = lo, e = e_lo, den, xb;
+    int n;
+
+    if (tp / ATM_HA > x) {
+        x = tp / ATM_HA;
+        e = (oi_real)0;
     }
-    return OI_R(0.5) * (lo + hi);
+    den = ATM_HA * hi - tp;
+    if (den > (oi_real)0 && k > (oi_real)0) {
+        xb = OI_LOG(k / den);
+        if (xb > x) {
+            x = xb;
+            e = den;
+        }
+    }
+    if (x > hi) {
+        x = hi;
+        e = (oi_real)0;
+    }
+    lo = x;
+    if (!(e > (oi_real)0)) e = k * OI_EXP(-x);
+    for (n = 0; n < ATM_MAX_IT; ++n) {
+        oi_real phi = ATM_HA * x - e - tp;
+        oi_real d1 = ATM_HA + e;
+        oi_real xn;
+        int halley;
+        if (phi < (oi_real)0)
+            lo = x;
+        else
+            hi = x;
+        /* Halley: dx = -2 phi phi' / (2 phi'^2 - phi phi''), phi'' = -e;
+         * the denominator is >= (H + e)^2 > 0 for x >= tp / H */
+        xn = x - (oi_real)2 * phi * d1 / ((oi_real)2 * d1 * d1 + phi * e);
+        halley = xn >= lo && xn <= hi;
+        if (!halley) xn = OI_R(0.5) * (lo + hi);
+        if (halley && OI_FABS(xn - x) <= ATM_X_TOL) return xn;
+        x = xn;
+        if (!(hi - lo > (oi_real)0)) break;
+        e = k * OI_EXP(-x);
+    }
+    return x;
 }
 
 static oi_real clamp01(oi_real x)
@@ -56,6 +124,80 @@ static oi_real bilinear(const unsigned short *tab, int i, int j, oi_real fu, oi_
 }
 
 /*
+ * Continuous table indices (iu along z, it along the window) of a point at
+ * z (OI_ATM_Z_MIN_KM..OI_ATM_Z_MAX_KM) behind the Earth and rho < rho_hi
+ * from the axis, with rc = R (1 + z/d) and a = z R_sun / d. Returns 0 when
+ * the point is inside the window, -1 below it (no unblocked refracted ray:
+ * fraction exactly 0). The coordinates of bake/atm_table.py (Window, coords):
+ *   target = max(0, M(h_c) - 1.2 a); v_lo: M(v_lo) = target, in
+ *   [h_c - 60, h_c] (the root is always inside: M(h_c - 60) < target);
+ *   rho_lo = M(v_lo) = target; rho_mid = M(V_MID).
+ * Below the window costs no transcendental; segment B a log; segment A a
+ * log and two solves (solve_x).
+ */
+static int table_index(oi_real z, oi_real rho, oi_real rc, oi_real a, oi_real *iu,
+                       oi_real *it)
+{
+    oi_real k = z * ATM_R(OI_ATM_ALPHA_C_RAD);
+    oi_real rho_lo, rho_mid, rho_hi;
+
+    rho_lo = rc + ATM_HC - k - OI_R(1.2) * a;
+    if (rho_lo < (oi_real)0) rho_lo = (oi_real)0;
+    if (rho < rho_lo) return -1;
+    rho_hi = rc + a + ATM_R(OI_ATM_TOP_KM);
+    rho_mid = rc + ATM_R(OI_ATM_V_MID_KM) - k * ATM_E_MID;
+    if (rho >= rho_mid) {
+        *it = (oi_real)(OI_ATM_NA - 1) + (rho - rho_mid) / (rho_hi - rho_mid) * (oi_real)OI_ATM_NB;
+    } else {
+        /* segment A: blend of the ray altitude and rho (bake/atm_table.py g_a),
+         * in x = (v - h_c) / H: tv = (x - x_lo) / (x_mid - x_lo) */
+        const oi_real x_mid = (ATM_R(OI_ATM_V_MID_KM) - ATM_HC) / ATM_HA;
+        oi_real tp_lo = rho_lo - rc - ATM_HC;
+        oi_real x_lo = solve_x(tp_lo, k, (oi_real)-60 / ATM_HA, (oi_real)0, (oi_real)0);
+        /* at x_lo, K exp(-x_lo) = H x_lo - tp_lo (its equation) */
+        oi_real x = solve_x(rho - rc - ATM_HC, k, x_lo, x_mid, ATM_HA * x_lo - tp_lo);
+        oi_real tv = (x - x_lo) / (x_mid - x_lo);
+        oi_real tr = (rho - rho_lo) / (rho_mid - rho_lo);
+        *it = (((oi_real)1 - ATM_R(OI_ATM_W_RHO)) * tv + ATM_R(OI_ATM_W_RHO) * tr) *
+              (oi_real)(OI_ATM_NA - 1);
+    }
+    *iu = OI_LOG(z / ATM_R(OI_ATM_Z_MIN_KM)) * ATM_C_IU;
+    return 0;
+}
+
+/*
+ * oi__atm_coords: the table's continuous indices for a point (internal, for
+ * tests: declared in tests/c/test_atmosphere.c).
+ *
+ * Given:
+ *   z      oi_real  distance behind the Earth's centre along the anti-Sun axis (km)
+ *   rho    oi_real  distance from that axis (km)
+ *   d      oi_real  Sun's distance (km), > 0
+ *   r_e    oi_real  Earth radius (km); r_s Sun radius (km)
+ * Returned:
+ *   iu, it oi_real* continuous row and column indices (set when the function
+ *                   returns 0, else 0)
+ * Returned (function value):
+ *   0 inside the window; -1 below it (fraction 0); +1 outside the
+ *   atmosphere's reach (z <= 0 or rho >= rho_hi: geometric fraction); +2
+ *   within the reach but z outside OI_ATM_Z_MIN_KM..OI_ATM_Z_MAX_KM.
+ */
+int oi__atm_coords(oi_real z, oi_real rho, oi_real d, oi_real r_e, oi_real r_s, oi_real *iu,
+                   oi_real *it);
+int oi__atm_coords(oi_real z, oi_real rho, oi_real d, oi_real r_e, oi_real r_s, oi_real *iu,
+                   oi_real *it)
+{
+    oi_real rc, a;
+    *iu = *it = (oi_real)0;
+    if (!(z > (oi_real)0 && d > (oi_real)0)) return 1;
+    rc = r_e * ((oi_real)1 + z / d);
+    a = z * r_s / d;
+    if (rho >= rc + a + ATM_R(OI_ATM_TOP_KM)) return 1;
+    if (z < ATM_R(OI_ATM_Z_MIN_KM) || z > ATM_R(OI_ATM_Z_MAX_KM)) return 2;
+    return table_index(z, rho, rc, a, iu, it);
+}
+
+/*
  * oi__atm_fraction: fraction of unobstructed sunlight reaching a point,
  * refraction and extinction by the atmosphere included (internal).
  *
@@ -70,10 +212,15 @@ static oi_real bilinear(const unsigned short *tab, int i, int j, oi_real fu, oi_
  * Returned:
  *   fraction_atm oi_real*  fraction of the unobstructed sunlight (V band)
  *                          reaching the point, [0, 1]
- *   dir       oi_real[3]  (may be NULL) unit vector from the point towards
- *                         where the light comes from on average: the Sun's
- *                         direction tilted by psi away from the Earth's
- *                         centre (the refracted limb)
+ * Given and returned:
+ *   dir       oi_real[3]  (may be NULL) on entry the unit vector from the
+ *                         point to the Sun (the caller sets it; see Note 5);
+ *                         where refracted light arrives (inside the table's
+ *                         window with fraction_atm > 0, off the axis)
+ *                         replaced by the unit vector towards where the light
+ *                         comes from on average: the Sun's direction tilted by
+ *                         psi away from the Earth's centre (the refracted
+ *                         limb); untouched elsewhere
  * Returned (function value):
  *   OI_OK                 table used, or the point outside the atmosphere's
  *                         reach (geometric fraction, exact there).
@@ -97,9 +244,18 @@ static oi_real bilinear(const unsigned short *tab, int i, int j, oi_real fu, oi_
  *     absolute error of the fraction against the deterministic reference
  *     bake/atm_rays.py at random off-grid points). The model atmosphere
  *     (1976 U.S. Standard, clouds opaque below 10 km, stated aerosol load)
- *     is itself uncertain by far more in a real eclipse season.
+ *     is itself uncertain by far more in a real eclipse season. The ray
+ *     altitude is found by Halley iteration instead of the baker's
+ *     bisection (solve_x): the indices agree to ~1e-12 cells (double).
  *  4. The table is baked for the default Earth and Sun radii; other model
  *     radii move the window with them (rc, a) but not the atmosphere.
+ *  5. Cost (docs/atmosphere.md, "Cost"): the day side (z <= 0) and points
+ *     beyond rho_hi cost two dot products, a cross product and one square
+ *     root; below the window (umbra) no transcendental; in the window one
+ *     log and one exp, plus two ray-altitude solves (a log and two or three
+ *     exps each) in the window's lower segment. dir is an in/out argument so
+ *     that the Sun's direction, which oi_illuminate forms anyway, is not
+ *     formed again.
  * References:
  *   Link, F. 1969, Eclipse Phenomena in Astronomy, Springer (refraction and
  *   extinction in the Earth's shadow).
@@ -108,88 +264,70 @@ static oi_real bilinear(const unsigned short *tab, int i, int j, oi_real fu, oi_
 int oi__atm_fraction(const oi_real sun_km[3], const oi_real point_km[3], const oi_model *m,
                      oi_real frac, oi_real frac_ld, oi_real *fraction_atm, oi_real dir[3])
 {
-    oi_real s_hat[3], cr[3], to_sun[3], perp[3];
-    oi_real d, z, rho, rc, a, rho_hi, rho_lo, rho_mid, v_lo, target, iu, it, fu, ft;
-    oi_real q, psi, f, choice;
-    int i, j, k, st = OI_OK;
-    int use_table = 0;
+    oi_real s_hat[3], cr[3];
+    oi_real d, z, rho2, rho, rc, a, rho_hi, iu, it, fu, ft, q, psi, f;
+    int i, j, k;
 
-    choice = m->limb_darkening == OI_LIMB_DARKENED ? frac_ld : frac;
-    f = choice;
-    psi = (oi_real)0;
-    d = oi__unit(sun_km, s_hat);
+    f = m->limb_darkening == OI_LIMB_DARKENED ? frac_ld : frac;
+    *fraction_atm = f;
+    /* the day side, known before normalising (an overflowing product is
+     * +-inf or NaN: only +inf, a point far sunward, returns here) */
+    if (oi__dot(point_km, sun_km) >= (oi_real)0) return OI_OK;
+    d = oi__dot(sun_km, sun_km);
+    if (OI_ISFINITE(d) && d > (oi_real)1) {
+        /* no overflow or underflow in the sum of squares: plain norm */
+        oi_real inv;
+        d = OI_SQRT(d);
+        inv = (oi_real)1 / d;
+        for (k = 0; k < 3; ++k) s_hat[k] = sun_km[k] * inv;
+    } else {
+        d = oi__unit(sun_km, s_hat);
+    }
     z = -oi__dot(point_km, s_hat);
+    if (!(z > (oi_real)0 && d > (oi_real)0)) return OI_OK;
+    rc = m->earth_radius_km * ((oi_real)1 + z / d);
+    a = z * m->sun_radius_km / d;
+    rho_hi = rc + a + ATM_R(OI_ATM_TOP_KM);
     oi__cross(point_km, s_hat, cr);
-    rho = oi__norm(cr);
-    for (k = 0; k < 3; ++k) perp[k] = point_km[k] + z * s_hat[k];
+    rho2 = oi__dot(cr, cr);
+    if (!(rho2 < rho_hi * rho_hi)) return OI_OK;
+    if (z < ATM_R(OI_ATM_Z_MIN_KM) || z > ATM_R(OI_ATM_Z_MAX_KM)) return OI_WARN_TABLE_RANGE;
+    rho = OI_SQRT(rho2);
 
-    if (z > (oi_real)0 && d > (oi_real)0) {
-        rc = m->earth_radius_km * ((oi_real)1 + z / d);
-        a = z * m->sun_radius_km / d;
-        rho_hi = rc + a + ATM_R(OI_ATM_TOP_KM);
-        if (rho < rho_hi) {
-            if (z < ATM_R(OI_ATM_Z_MIN_KM) || z > ATM_R(OI_ATM_Z_MAX_KM)) {
-                st = OI_WARN_TABLE_RANGE;
-            } else {
-                use_table = 1;
-            }
-        }
+    if (table_index(z, rho, rc, a, &iu, &it) < 0) {
+        *fraction_atm = (oi_real)0;
+        return OI_OK;
     }
-
-    if (use_table) {
-        target = image_radius(ATM_R(OI_ATM_H_C_KM), z, rc) - OI_R(1.2) * a;
-        if (target < (oi_real)0) target = (oi_real)0;
-        v_lo = solve_v(target, z, rc, ATM_R(OI_ATM_H_C_KM) - (oi_real)60, ATM_R(OI_ATM_H_C_KM));
-        rho_lo = image_radius(v_lo, z, rc);
-        if (rho < rho_lo) {
-            f = (oi_real)0;
-        } else {
-            rho_mid = image_radius(ATM_R(OI_ATM_V_MID_KM), z, rc);
-            if (rho >= rho_mid) {
-                it = (oi_real)(OI_ATM_NA - 1) +
-                     (rho - rho_mid) / (rho_hi - rho_mid) * (oi_real)OI_ATM_NB;
-            } else {
-                /* segment A: blend of the ray altitude v and rho (bake/atm_table.py g_a) */
-                oi_real v = solve_v(rho, z, rc, v_lo, ATM_R(OI_ATM_V_MID_KM));
-                oi_real tv = (v - v_lo) / (ATM_R(OI_ATM_V_MID_KM) - v_lo);
-                oi_real tr = (rho - rho_lo) / (rho_mid - rho_lo);
-                it = (((oi_real)1 - ATM_R(OI_ATM_W_RHO)) * tv + ATM_R(OI_ATM_W_RHO) * tr) *
-                     (oi_real)(OI_ATM_NA - 1);
-            }
-            iu = OI_LOG(z / ATM_R(OI_ATM_Z_MIN_KM)) /
-                 OI_LOG(ATM_R(OI_ATM_Z_MAX_KM) / ATM_R(OI_ATM_Z_MIN_KM)) *
-                 (oi_real)(OI_ATM_NZ - 1);
-            i = (int)OI_FLOOR(iu);
-            if (i < 0) i = 0;
-            if (i > OI_ATM_NZ - 2) i = OI_ATM_NZ - 2;
-            j = (int)OI_FLOOR(it);
-            if (j < 0) j = 0;
-            if (j > OI_ATM_NT - 2) j = OI_ATM_NT - 2;
-            fu = iu - (oi_real)i;
-            ft = it - (oi_real)j;
-            q = ATM_R(OI_ATM_Q_MIN) + ATM_R(OI_ATM_Q_SCALE) * bilinear(oi__atm_q, i, j, fu, ft);
-            psi = ATM_R(OI_ATM_PSI_MIN_RAD) +
-                  ATM_R(OI_ATM_PSI_SCALE_RAD) * bilinear(oi__atm_psi, i, j, fu, ft);
-            f = OI_EXP(q * ATM_R(2.302585092994045684)) - ATM_R(OI_ATM_F_FLOOR);
-            f = clamp01(f);
-            if (m->limb_darkening != OI_LIMB_DARKENED) f = clamp01(f + (frac - frac_ld));
-        }
-    }
+    i = (int)OI_FLOOR(iu);
+    if (i < 0) i = 0;
+    if (i > OI_ATM_NZ - 2) i = OI_ATM_NZ - 2;
+    j = (int)OI_FLOOR(it);
+    if (j < 0) j = 0;
+    if (j > OI_ATM_NT - 2) j = OI_ATM_NT - 2;
+    fu = iu - (oi_real)i;
+    ft = it - (oi_real)j;
+    q = ATM_R(OI_ATM_Q_MIN) + ATM_R(OI_ATM_Q_SCALE) * bilinear(oi__atm_q, i, j, fu, ft);
+    f = clamp01(OI_EXP(q * ATM_LN10) - ATM_R(OI_ATM_F_FLOOR));
+    if (m->limb_darkening != OI_LIMB_DARKENED) f = clamp01(f + (frac - frac_ld));
     *fraction_atm = f;
 
-    if (dir != NULL) {
-        oi_real e_out[3];
-        oi__sub(sun_km, point_km, to_sun);
-        oi__unit(to_sun, to_sun);
-        if (f > (oi_real)0 && oi__unit(perp, e_out) > (oi_real)0) {
-            oi_real c = OI_COS(psi), s = OI_SIN(psi);
-            for (k = 0; k < 3; ++k) dir[k] = c * to_sun[k] + s * e_out[k];
-            oi__unit(dir, dir);
-        } else {
-            for (k = 0; k < 3; ++k) dir[k] = to_sun[k];
-        }
+    if (dir != NULL && f > (oi_real)0 && rho > (oi_real)0) {
+        /* tilt by psi towards e_out = (point + z s) / rho, the outward
+         * normal of the axis: dir ~ dir_sun + tan(psi) e_out, normalised.
+         * |psi| <= 0.012 rad (the codes' range): the series of tan to psi^7
+         * is exact to rounding (next term 62/2835 psi^9 < 1e-18). */
+        oi_real t, p2, n;
+        psi = ATM_R(OI_ATM_PSI_MIN_RAD) +
+              ATM_R(OI_ATM_PSI_SCALE_RAD) * bilinear(oi__atm_psi, i, j, fu, ft);
+        p2 = psi * psi;
+        t = psi * ((oi_real)1 +
+                   p2 * (OI_R(1.0) / OI_R(3.0) +
+                         p2 * (OI_R(2.0) / OI_R(15.0) + p2 * (OI_R(17.0) / OI_R(315.0)))));
+        for (k = 0; k < 3; ++k) dir[k] += t * (point_km[k] + z * s_hat[k]) / rho;
+        n = OI_SQRT(oi__dot(dir, dir));
+        for (k = 0; k < 3; ++k) dir[k] /= n;
     }
-    return st;
+    return OI_OK;
 }
 
 #else

@@ -10,6 +10,14 @@
  * reference within the table's measured error (tables/oi_atm_table.json:
  * max |dF| 3.0e-3 at 300 random off-grid points); the tolerance below is that
  * bound rounded up, not tuned to pass.
+ *
+ * The runtime finds the table's ray-altitude coordinate by Halley iteration
+ * (src/atmosphere.c, solve_x); the baker by 48 bisection steps. ref_coords /
+ * ref_fraction below are the previous C lookup (bisection), copied and
+ * evaluated in double as the independent reference for the new solve.
+ *
+ * dir is an in/out argument of oi__atm_fraction: the caller presets the
+ * Sun's direction, replaced only where refracted light arrives.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -23,6 +31,11 @@
 
 #ifndef OI_NO_ATMOSPHERE
 #include "ref_atmosphere.h"
+#include "oi_atm_table.h"
+
+/* internal, src/atmosphere.c (for tests; not in oi_internal.h) */
+int oi__atm_coords(oi_real z, oi_real rho, oi_real d, oi_real r_e, oi_real r_s, oi_real *iu,
+                   oi_real *it);
 
 #ifndef TOL_MIRROR
 #ifdef OI_SINGLE_PRECISION
@@ -76,6 +89,8 @@ static void test_lookup_matches_mirror_and_reference(void **state)
         int st;
         load(c, sun, pt);
         assert_true(oi_sun_fraction(sun, pt, NULL, &sh) >= 0);
+        oi__sub(sun, pt, dir); /* the caller presets the Sun's direction */
+        oi__unit(dir, dir);
         st = oi__atm_fraction(sun, pt, &m, sh.fraction, sh.fraction_ld, &f, dir);
         assert_int_equal(st, OI_OK);
         if (!close_to(c->f_lut, (double)f, TOL_MIRROR, "mirror F", i)) bad++;
@@ -120,6 +135,8 @@ static void test_deep_umbra_is_dark(void **state)
     oi_real pt[3] = {(oi_real)-6000, (oi_real)3000, (oi_real)0};
     oi_real f = (oi_real)-1, dir[3];
     (void)state;
+    oi__sub(sun, pt, dir); /* the caller presets the Sun's direction */
+    oi__unit(dir, dir);
     assert_int_equal(oi__atm_fraction(sun, pt, &m, (oi_real)0, (oi_real)0, &f, dir), OI_OK);
     assert_true(f == (oi_real)0);
     assert_true(dir[0] > (oi_real)0.999);   /* Sun's direction when dark */
@@ -174,6 +191,308 @@ static void test_public_hook(void **state)
     assert_true(b.fraction_atm < b.fraction_ld);   /* extinction dims this penumbra point */
 }
 
+/* ---- the previous lookup (bisection), in double: the reference for the
+ * Halley solve. Copied from src/atmosphere.c before the change (image_radius,
+ * solve_v and the window), which repeats bake/atm_table.py step by step. */
+static double ref_image_radius(double v, double z, double rc)
+{
+    return rc + v - z * OI_ATM_ALPHA_C_RAD * exp(-(v - OI_ATM_H_C_KM) / OI_ATM_H_A_KM);
+}
+
+static double ref_solve_v(double target, double z, double rc, double lo, double hi)
+{
+    int i;
+    for (i = 0; i < OI_ATM_N_BISECT; ++i) {
+        double mid = 0.5 * (lo + hi);
+        if (ref_image_radius(mid, z, rc) < target)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+/* Region and continuous indices as oi__atm_coords returns them. */
+static int ref_coords(double z, double rho, double d, double r_e, double r_s, double *iu,
+                      double *it)
+{
+    double rc, a, rho_hi, target, v_lo, rho_lo, rho_mid;
+    *iu = *it = 0.0;
+    if (!(z > 0.0 && d > 0.0)) return 1;
+    rc = r_e * (1.0 + z / d);
+    a = z * r_s / d;
+    rho_hi = rc + a + OI_ATM_TOP_KM;
+    if (rho >= rho_hi) return 1;
+    if (z < OI_ATM_Z_MIN_KM || z > OI_ATM_Z_MAX_KM) return 2;
+    target = ref_image_radius(OI_ATM_H_C_KM, z, rc) - 1.2 * a;
+    if (target < 0.0) target = 0.0;
+    v_lo = ref_solve_v(target, z, rc, OI_ATM_H_C_KM - 60.0, OI_ATM_H_C_KM);
+    rho_lo = ref_image_radius(v_lo, z, rc);
+    if (rho < rho_lo) return -1;
+    rho_mid = ref_image_radius(OI_ATM_V_MID_KM, z, rc);
+    if (rho >= rho_mid) {
+        *it = (OI_ATM_NA - 1) + (rho - rho_mid) / (rho_hi - rho_mid) * OI_ATM_NB;
+    } else {
+        double v = ref_solve_v(rho, z, rc, v_lo, OI_ATM_V_MID_KM);
+        double tv = (v - v_lo) / (OI_ATM_V_MID_KM - v_lo);
+        double tr = (rho - rho_lo) / (rho_mid - rho_lo);
+        *it = ((1.0 - OI_ATM_W_RHO) * tv + OI_ATM_W_RHO * tr) * (OI_ATM_NA - 1);
+    }
+    *iu = log(z / OI_ATM_Z_MIN_KM) / log(OI_ATM_Z_MAX_KM / OI_ATM_Z_MIN_KM) * (OI_ATM_NZ - 1);
+    return 0;
+}
+
+static double ref_bilinear(const unsigned short *tab, int i, int j, double fu, double ft)
+{
+    const unsigned short *r0 = tab + i * OI_ATM_NT + j;
+    const unsigned short *r1 = r0 + OI_ATM_NT;
+    double a = (1.0 - ft) * r0[0] + ft * r0[1];
+    double b = (1.0 - ft) * r1[0] + ft * r1[1];
+    return (1.0 - fu) * a + fu * b;
+}
+
+static double ref_clamp01(double x)
+{
+    return x < 0.0 ? 0.0 : (x > 1.0 ? 1.0 : x);
+}
+
+/* The previous oi__atm_fraction (limb-darkened disc), with its dir:
+ * returns the fraction, sets dir (always) and *region (ref_coords). */
+static double ref_fraction(const double sun[3], const double pt[3], double frac_ld,
+                           double dir[3], int *region)
+{
+    double d, s[3], z, cr[3], rho, perp[3], iu, it, fu, ft, q, psi = 0.0, f = frac_ld;
+    double to_sun[3], n, e_out[3], ne;
+    int i, j, k;
+    d = sqrt(sun[0] * sun[0] + sun[1] * sun[1] + sun[2] * sun[2]);
+    for (k = 0; k < 3; ++k) s[k] = sun[k] / d;
+    z = -(pt[0] * s[0] + pt[1] * s[1] + pt[2] * s[2]);
+    cr[0] = pt[1] * s[2] - pt[2] * s[1];
+    cr[1] = pt[2] * s[0] - pt[0] * s[2];
+    cr[2] = pt[0] * s[1] - pt[1] * s[0];
+    rho = sqrt(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]);
+    for (k = 0; k < 3; ++k) perp[k] = pt[k] + z * s[k];
+    *region = ref_coords(z, rho, d, OI_ATM_EARTH_RADIUS_KM, OI_ATM_SUN_RADIUS_KM, &iu, &it);
+    if (*region < 0) {
+        f = 0.0;
+    } else if (*region == 0) {
+        i = (int)floor(iu);
+        if (i > OI_ATM_NZ - 2) i = OI_ATM_NZ - 2;
+        if (i < 0) i = 0;
+        j = (int)floor(it);
+        if (j > OI_ATM_NT - 2) j = OI_ATM_NT - 2;
+        if (j < 0) j = 0;
+        fu = iu - i;
+        ft = it - j;
+        q = OI_ATM_Q_MIN + OI_ATM_Q_SCALE * ref_bilinear(oi__atm_q, i, j, fu, ft);
+        psi = OI_ATM_PSI_MIN_RAD + OI_ATM_PSI_SCALE_RAD * ref_bilinear(oi__atm_psi, i, j, fu, ft);
+        f = ref_clamp01(exp(q * 2.302585092994045684) - OI_ATM_F_FLOOR);
+    }
+    for (k = 0; k < 3; ++k) to_sun[k] = sun[k] - pt[k];
+    n = sqrt(to_sun[0] * to_sun[0] + to_sun[1] * to_sun[1] + to_sun[2] * to_sun[2]);
+    ne = sqrt(perp[0] * perp[0] + perp[1] * perp[1] + perp[2] * perp[2]);
+    for (k = 0; k < 3; ++k) dir[k] = to_sun[k] / n;
+    if (f > 0.0 && ne > 0.0) {
+        double c = cos(psi), sn = sin(psi);
+        for (k = 0; k < 3; ++k) {
+            e_out[k] = perp[k] / ne;
+            dir[k] = c * dir[k] + sn * e_out[k];
+        }
+        n = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+        for (k = 0; k < 3; ++k) dir[k] /= n;
+    }
+    return f;
+}
+
+/* xorshift64* (Vigna 2016), fixed seed: deterministic random points */
+static uint64_t rng_state = 0x9E3779B97F4A7C15ULL;
+static double urand(void)
+{
+    rng_state ^= rng_state >> 12;
+    rng_state ^= rng_state << 25;
+    rng_state ^= rng_state >> 27;
+    return (double)((rng_state * 2685821657736338717ULL) >> 11) * (1.0 / 9007199254740992.0);
+}
+
+/* A random (z, rho, d) around the window: z log-uniform over the table, d
+ * over the year; rho either uniform from 5 % below the window to 5 % beyond
+ * it, or (half of them) at the image radius of a ray altitude uniform in the
+ * lower segment (where the solve matters and cells are narrow in rho). The
+ * values are rounded to oi_real first, so both sides see the same inputs. */
+static void random_point(double *z, double *rho, double *d)
+{
+    double rc, a, lo, hi;
+    *z = (double)(oi_real)(OI_ATM_Z_MIN_KM * pow(OI_ATM_Z_MAX_KM / OI_ATM_Z_MIN_KM, urand()));
+    *d = (double)(oi_real)(OI_ATM_AU_KM * (0.9832 + 0.0336 * urand()));
+    rc = OI_ATM_EARTH_RADIUS_KM * (1.0 + *z / *d);
+    a = *z * OI_ATM_SUN_RADIUS_KM / *d;
+    lo = ref_image_radius(OI_ATM_H_C_KM, *z, rc) - 1.2 * a;
+    hi = rc + a + OI_ATM_TOP_KM;
+    if (urand() < 0.5) {
+        *rho = lo + (hi - lo) * (1.1 * urand() - 0.05);
+    } else {
+        double v_lo = ref_solve_v(lo, *z, rc, OI_ATM_H_C_KM - 60.0, OI_ATM_H_C_KM);
+        *rho = ref_image_radius(v_lo + (OI_ATM_V_MID_KM - v_lo) * urand(), *z, rc);
+    }
+    *rho = (double)(oi_real)*rho;
+}
+
+#ifdef OI_SINGLE_PRECISION
+/* float: rc ~ 6.4e3 km carries ~5e-4 km of rounding, which moves rho - rc
+ * and the ray altitude by as much; a table cell is >= ~1 km in altitude
+ * (segment A) and >= ~3 km in rho (segment B): ~1e-3 cells, bound 1e-2.
+ * Between neighbouring nodes the stored fraction changes by at most 0.064
+ * and psi by at most 0.0118 rad (largest steps of tables/oi_atm_table.c):
+ * bounds 1e-2 x 0.064 plus the float exp of q ln 10 (|q ln 10| <= 18.4,
+ * ~2e-6 relative) -> 1e-3, and 1e-2 x 0.0118 plus rounding -> 2e-4. */
+#define TOL_CELLS 1e-2
+#define TOL_F_BISECT 1e-3
+#define TOL_DIR_BISECT 2e-4
+#else
+/* double: the brief's bounds (the bisection's own last bracket is 2^-48 of
+ * its interval: ~2e-13 km ~ 2e-13 cells) */
+#define TOL_CELLS 1e-9
+#define TOL_F_BISECT 1e-12
+#define TOL_DIR_BISECT 1e-12
+#endif
+
+#define N_COORD_POINTS 20000
+
+static void test_coords_match_bisection(void **state)
+{
+    int n, bad = 0, inside = 0, seg_a = 0;
+    double worst_u = 0.0, worst_t = 0.0;
+    (void)state;
+    for (n = 0; n < N_COORD_POINTS; ++n) {
+        double z, rho, d, iu_r, it_r;
+        oi_real iu = (oi_real)-1, it = (oi_real)-1;
+        int rr, rn;
+        random_point(&z, &rho, &d);
+        rr = ref_coords(z, rho, d, OI_ATM_EARTH_RADIUS_KM, OI_ATM_SUN_RADIUS_KM, &iu_r, &it_r);
+        rn = oi__atm_coords((oi_real)z, (oi_real)rho, (oi_real)d, (oi_real)OI_ATM_EARTH_RADIUS_KM,
+                            (oi_real)OI_ATM_SUN_RADIUS_KM, &iu, &it);
+        if (rr != rn) {
+            /* a region boundary may differ only by rounding: the point must
+             * then sit at the window's lower edge (it ~ 0, F ~ 0) */
+            if (!((rr == -1 && rn == 0 && (double)it <= TOL_CELLS) ||
+                  (rn == -1 && rr == 0 && it_r <= TOL_CELLS))) {
+                printf("point %d z %.17g rho %.17g: region want %d got %d\n", n, z, rho, rr, rn);
+                bad++;
+            }
+            continue;
+        }
+        if (rr != 0) continue;
+        inside++;
+        if (it_r < (double)(OI_ATM_NA - 1)) seg_a++;
+        if (fabs((double)iu - iu_r) > worst_u) worst_u = fabs((double)iu - iu_r);
+        if (fabs((double)it - it_r) > worst_t) worst_t = fabs((double)it - it_r);
+        if (!close_to(iu_r, (double)iu, TOL_CELLS, "iu", n)) bad++;
+        if (!close_to(it_r, (double)it, TOL_CELLS, "it", n)) bad++;
+    }
+    printf("coords vs bisection: %d points in the window (%d in segment A), max |d iu| %.3g "
+           "|d it| %.3g cells (bound %.1g)\n",
+           inside, seg_a, worst_u, worst_t, TOL_CELLS);
+    assert_true(inside > N_COORD_POINTS / 2);
+    assert_true(seg_a > N_COORD_POINTS / 3);
+    assert_int_equal(bad, 0);
+}
+
+#define N_FRACTION_POINTS 5000
+
+/* oi__atm_fraction on random vectors against the previous lookup: the
+ * fraction, the direction (preset to the Sun's, replaced only where light is
+ * refracted), and the direction left untouched outside the window. */
+static void test_fraction_matches_bisection(void **state)
+{
+    oi_model m = ld_model();
+    int n, k, bad = 0, lit_in_window = 0;
+    double worst_f = 0.0, worst_dir = 0.0;
+    (void)state;
+    for (n = 0; n < N_FRACTION_POINTS; ++n) {
+        double z, rho, d, u[3], w[3], nu, sd[3], pd[3], dir_r[3], f_r, frac_ld;
+        oi_real sun[3], pt[3], dir[3], f = (oi_real)-1;
+        int region, st;
+        random_point(&z, &rho, &d);
+        /* a random orientation: Sun along u, point at -z u + rho w (w _|_ u) */
+        for (k = 0; k < 3; ++k) u[k] = 2.0 * urand() - 1.0;
+        nu = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+        for (k = 0; k < 3; ++k) u[k] /= nu;
+        w[0] = u[1];
+        w[1] = -u[0];
+        w[2] = 0.0;
+        nu = sqrt(w[0] * w[0] + w[1] * w[1]);
+        for (k = 0; k < 3; ++k) w[k] /= nu;
+        for (k = 0; k < 3; ++k) {
+            sun[k] = (oi_real)(d * u[k]);
+            pt[k] = (oi_real)(-z * u[k] + rho * w[k]);
+            sd[k] = (double)sun[k];
+            pd[k] = (double)pt[k];
+        }
+        frac_ld = urand(); /* any value: used only outside the window */
+        f_r = ref_fraction(sd, pd, frac_ld, dir_r, &region);
+        /* preset as oi_illuminate does: the Sun's direction */
+        for (k = 0; k < 3; ++k) dir[k] = sun[k] - pt[k];
+        oi__unit(dir, dir);
+        {
+            oi_real before[3];
+            memcpy(before, dir, sizeof before);
+            st = oi__atm_fraction(sun, pt, &m, (oi_real)frac_ld, (oi_real)frac_ld, &f, dir);
+            if (region <= 0 && f_r == 0.0 && f == (oi_real)0 &&
+                memcmp(before, dir, sizeof before) != 0) {
+                printf("point %d: dir changed although no refracted light\n", n);
+                bad++;
+            }
+            if (region == 1 && memcmp(before, dir, sizeof before) != 0) {
+                printf("point %d: dir changed outside the window\n", n);
+                bad++;
+            }
+        }
+        assert_int_equal(st, region == 2 ? OI_WARN_TABLE_RANGE : OI_OK);
+        if (fabs((double)f - f_r) > worst_f) worst_f = fabs((double)f - f_r);
+        if (!close_to(f_r, (double)f, TOL_F_BISECT, "F vs bisection", n)) bad++;
+        if (region == 0 && f_r > 0.0) {
+            double dd = 0.0;
+            lit_in_window++;
+            for (k = 0; k < 3; ++k) {
+                double e = fabs((double)dir[k] - dir_r[k]);
+                if (e > dd) dd = e;
+            }
+            if (dd > worst_dir) worst_dir = dd;
+            if (!close_to(0.0, dd, TOL_DIR_BISECT, "dir vs bisection", n)) bad++;
+        }
+    }
+    printf("fraction vs bisection: %d lit points in the window, max |dF| %.3g (bound %.1g), "
+           "max |d dir| %.3g (bound %.1g)\n",
+           lit_in_window, worst_f, TOL_F_BISECT, worst_dir, TOL_DIR_BISECT);
+    assert_true(lit_in_window > N_FRACTION_POINTS / 4);
+    assert_int_equal(bad, 0);
+}
+
+/* The derived constants written out in src/atmosphere.c are checked through
+ * the coordinates they produce: segment B's lower edge rho_mid uses
+ * exp(-(V_MID - h_c)/H_A) and the row index ln(z / Z_MIN) (NZ - 1) /
+ * ln(Z_MAX / Z_MIN); at nodes of the table they must give integers. */
+static void test_derived_constants(void **state)
+{
+    int i;
+    (void)state;
+    for (i = 0; i < OI_ATM_NZ; i += 7) {
+        double z = OI_ATM_Z_MIN_KM * pow(OI_ATM_Z_MAX_KM / OI_ATM_Z_MIN_KM,
+                                         (double)i / (OI_ATM_NZ - 1));
+        double rc = OI_ATM_EARTH_RADIUS_KM * (1.0 + z / OI_ATM_AU_KM);
+        double rho_mid = rc + OI_ATM_V_MID_KM -
+                         z * OI_ATM_ALPHA_C_RAD *
+                             exp(-(OI_ATM_V_MID_KM - OI_ATM_H_C_KM) / OI_ATM_H_A_KM);
+        oi_real iu, it;
+        assert_int_equal(oi__atm_coords((oi_real)z, (oi_real)rho_mid, (oi_real)OI_ATM_AU_KM,
+                                        (oi_real)OI_ATM_EARTH_RADIUS_KM,
+                                        (oi_real)OI_ATM_SUN_RADIUS_KM, &iu, &it),
+                         0);
+        assert_true(close_to((double)i, (double)iu, TOL_CELLS, "row index at a node", i));
+        assert_true(close_to(OI_ATM_NA - 1, (double)it, TOL_CELLS, "rho_mid node", i));
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -183,6 +502,9 @@ int main(void)
         cmocka_unit_test(test_out_of_table_warns),
         cmocka_unit_test(test_uniform_disc_offset),
         cmocka_unit_test(test_public_hook),
+        cmocka_unit_test(test_coords_match_bisection),
+        cmocka_unit_test(test_fraction_matches_bisection),
+        cmocka_unit_test(test_derived_constants),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
