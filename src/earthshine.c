@@ -18,6 +18,16 @@
 #define EDGE_TOL_CELLS OI_R(1e-9)
 #endif
 
+/* The grid of one table in oi_real: converted once per call from the
+ * table's double fields, or compile-time constants for the default table (the
+ * single-precision build then does no double arithmetic in the lookup). */
+typedef struct es_grid {
+    const float *q, *psi;
+    int n_lit, n_term, n_alt;
+    int surf;                  /* w_min = 0: the first row is the surface */
+    oi_real w_min, w_max, k0, kp;
+} es_grid;
+
 /* Catmull-Rom (cubic convolution, a = -1/2) weights for fraction f in [0, 1]. */
 static void cr_weights(oi_real f, oi_real wt[4])
 {
@@ -29,58 +39,68 @@ static void cr_weights(oi_real f, oi_real wt[4])
     wt[3] = OI_R(0.5) * (f3 - f2);
 }
 
-/* Value at column c in [-1, n] of one segment row (n >= 2 values), ghost
- * columns by linear extrapolation. */
-static oi_real seg_value(const float *row, int n, int c)
+/* Catmull-Rom along theta in one segment row: p points at column i of the
+ * row; lo (i = 0) and hi (i = n - 2) replace the columns outside the segment
+ * by linear extrapolation, 2 v(0) - v(1) and 2 v(n-1) - v(n-2). */
+static oi_real seg_row(const float *p, int lo, int hi, const oi_real wa[4])
 {
-    if (c < 0) return OI_R(2.0) * (oi_real)row[0] - (oi_real)row[1];
-    if (c >= n) return OI_R(2.0) * (oi_real)row[n - 1] - (oi_real)row[n - 2];
-    return (oi_real)row[c];
+    const oi_real v1 = (oi_real)p[0];
+    const oi_real v2 = (oi_real)p[1];
+    const oi_real v0 = lo ? OI_R(2.0) * v1 - v2 : (oi_real)p[-1];
+    const oi_real v3 = hi ? OI_R(2.0) * v2 - v1 : (oi_real)p[2];
+    return wa[0] * v0 + wa[1] * v1 + wa[2] * v2 + wa[3] * v3;
 }
 
-/* Catmull-Rom along theta within one segment row, at cell i, weights wa. */
-static oi_real seg_row(const float *row, int n, int i, const oi_real wa[4])
-{
-    return wa[0] * seg_value(row, n, i - 1) + wa[1] * seg_value(row, n, i) +
-           wa[2] * seg_value(row, n, i + 1) + wa[3] * seg_value(row, n, i + 2);
-}
-
-/* Split a fractional index into cell (0..n-2) and fraction. */
+/* Split a fractional index into cell (0..n-2) and fraction (f is clamped
+ * to [0, n - 1] first, so truncation is floor). */
 static int cell_of(oi_real f, int n, oi_real *frac)
 {
     int i;
     if (f < (oi_real)0) f = (oi_real)0;
     if (f > (oi_real)(n - 1)) f = (oi_real)(n - 1);
-    i = (int)OI_FLOOR(f);
+    i = (int)f;
     if (i > n - 2) i = n - 2;
     *frac = f - (oi_real)i;
     return i;
 }
 
-/* Bicubic Catmull-Rom in one segment (columns off..off+n-1 of a table with
- * row stride ld) at fractional indices fv (theta) and fw (altitude);
- * surface: the first row is w = 0 (h = 0). */
-static oi_real seg_interp(const float *base, int ld, int off, int n, int n_alt,
-                          int surface, oi_real fv, oi_real fw)
+/* Ghost rows of one 4-row stencil (the theta spline is linear in the rows):
+ * quadratic below a surface row (w_min = 0, n_alt >= 3), else linear; then
+ * the Catmull-Rom sum in w. */
+static oi_real alt_sum(oi_real r[4], int j, int n_alt, int surf, const oi_real wb[4])
 {
-    oi_real wa[4], wb[4], r[4], fa, fb;
-    int i = cell_of(fv, n, &fa);
-    int j = cell_of(fw, n_alt, &fb);
-    int k;
-    cr_weights(fa, wa);
-    cr_weights(fb, wb);
-    for (k = 0; k < 4; k++) {
-        int jj = j - 1 + k;
-        if (jj >= 0 && jj < n_alt) r[k] = seg_row(base + (size_t)jj * (size_t)ld + (size_t)off, n, i, wa);
-    }
-    /* ghost rows by extrapolation (the theta spline is linear in the rows):
-     * quadratic below a surface row (w_min = 0, n_alt >= 3), else linear */
     if (j - 1 < 0) {
-        if (surface && n_alt >= 3) r[0] = OI_R(3.0) * (r[1] - r[2]) + r[3];
+        if (surf && n_alt >= 3) r[0] = OI_R(3.0) * (r[1] - r[2]) + r[3];
         else r[0] = OI_R(2.0) * r[1] - r[2];
     }
     if (j + 2 >= n_alt) r[3] = OI_R(2.0) * r[2] - r[1];
     return wb[0] * r[0] + wb[1] * r[1] + wb[2] * r[2] + wb[3] * r[3];
+}
+
+/* Bicubic Catmull-Rom of both quantities (q and psi) in one segment
+ * (columns off..off+n-1) at fractional indices fv (theta) and fw (altitude):
+ * one stencil (cells, weights, ghost flags) serves both tables. */
+static void seg_interp(const es_grid *g, int off, int n, oi_real fv, oi_real fw,
+                       oi_real *vq, oi_real *vp)
+{
+    oi_real wa[4], wb[4], rq[4], rp[4], fa, fb;
+    const int i = cell_of(fv, n, &fa);
+    const int j = cell_of(fw, g->n_alt, &fb);
+    const int lo = i == 0, hi = i + 2 >= n;
+    const size_t ld = (size_t)g->n_lit + (size_t)g->n_term;
+    int k;
+    cr_weights(fa, wa);
+    cr_weights(fb, wb);
+    for (k = 0; k < 4; k++) {
+        const int jj = j - 1 + k;
+        if (jj >= 0 && jj < g->n_alt) {
+            const size_t c = (size_t)jj * ld + (size_t)off + (size_t)i;
+            rq[k] = seg_row(g->q + c, lo, hi, wa);
+            rp[k] = seg_row(g->psi + c, lo, hi, wa);
+        }
+    }
+    *vq = alt_sum(rq, j, g->n_alt, g->surf, wb);
+    *vp = alt_sum(rp, j, g->n_alt, g->surf, wb);
 }
 
 /* asinh(z) without cancellation for small |z|: series z (1 - z^2/6 + 3 z^4/40
@@ -115,32 +135,107 @@ static oi_real sinh_r(oi_real k)
                     (OI_R(1.0) + k2 / OI_R(42.0) * (OI_R(1.0) + k2 / OI_R(72.0) *
                     (OI_R(1.0) + k2 / OI_R(110.0) * (OI_R(1.0) + k2 / OI_R(156.0)))))));
     }
-    return OI_R(0.5) * (OI_EXP(k) - OI_EXP(-k));
+    {
+        const oi_real e = OI_EXP(k); /* one exponential: e^-k = 1/e (k <= 20) */
+        return OI_R(0.5) * (e - OI_R(1.0) / e);
+    }
 }
 
 /* Position t in [-1, 1] of m = (theta - pi/2) / w on the terminator map
- * m = sinh(k t) / sinh(k), k = k0 x^kp (bake/grid.py term_t). */
-static oi_real term_t(oi_real m, oi_real x, const oi_earth_table *t)
+ * m = sinh(k t) / sinh(k), k = k0 x^kp (bake/grid.py term_t). x^8 (the
+ * default table's kp) by three squarings instead of pow. */
+static oi_real term_t(oi_real m, oi_real x, const es_grid *g)
 {
     oi_real k;
-    if (t->term_k0 <= 0.0) return m;
-    k = (oi_real)t->term_k0 * OI_POW(x, (oi_real)t->term_kp);
+    if (!(g->k0 > (oi_real)0)) return m;
+    if (g->kp == OI_R(8.0)) {
+        const oi_real x2 = x * x;
+        const oi_real x4 = x2 * x2;
+        k = g->k0 * (x4 * x4);
+    } else {
+        k = g->k0 * OI_POW(x, g->kp);
+    }
     if (k < OI_R(1e-4)) return m; /* the map deviates from m by ~k^2/6 */
     return asinh_r(m * sinh_r(k)) / k;
 }
 
+/* Validation of a caller's table without double arithmetic (the
+ * single-precision build must not pull in software double compares): the
+ * double fields are compared by their IEEE 754 binary64 bit patterns, which,
+ * read as unsigned integers, order like the values for non-negative doubles
+ * (+inf above every finite value, NaN above +inf). -0 is read as +0. The
+ * checks are those of the double comparisons they replace (w_min >= 0,
+ * w_max > w_min, w_max <= (pi/2)(1 + 1e-15), k0 in [0, 20], kp in [0, 100]). */
+typedef unsigned long long es_bits;
+typedef char es_bits_hold_a_double[sizeof(es_bits) == sizeof(double) ? 1 : -1];
+#define ES_SIGN_BIT 0x8000000000000000ULL
+#define ES_INF_BITS 0x7FF0000000000000ULL
+
+/* Bits of d with -0 as +0; values above ES_INF_BITS are NaN or negative. */
+static es_bits nonneg_bits(double d)
+{
+    es_bits u;
+    memcpy(&u, &d, sizeof u);
+    return u == ES_SIGN_BIT ? 0ULL : u;
+}
+
 static int table_valid(const oi_earth_table *t)
 {
-    const double half_pi = 0.5 * OI_PI;
+    const es_bits w_min = nonneg_bits(t->w_min), w_max = nonneg_bits(t->w_max);
+    const es_bits k0 = nonneg_bits(t->term_k0), kp = nonneg_bits(t->term_kp);
     if (t->format != OI_TABLE_FORMAT || t->n_lit < 2 || t->n_term < 2 || t->n_alt < 2) return 0;
     if (t->q == NULL || t->psi == NULL) return 0;
-    if (!(t->w_min >= 0.0) || !(t->w_max > t->w_min) || !(t->w_max <= half_pi * (1.0 + 1e-15)))
+    if (w_min > ES_INF_BITS || w_max > ES_INF_BITS || !(w_max > w_min) ||
+        w_max > nonneg_bits(0.5 * OI_PI * (1.0 + 1e-15)))
         return 0;
-    if (t->w_min == 0.0 && t->n_alt < 3) return 0; /* quadratic ghost row */
-    if (!(t->term_k0 >= 0.0 && t->term_k0 <= 20.0) || !(t->term_kp >= 0.0 && t->term_kp <= 100.0))
-        return 0;
+    if (w_min == 0ULL && t->n_alt < 3) return 0; /* quadratic ghost row */
+    if (k0 > nonneg_bits(20.0) || kp > nonneg_bits(100.0)) return 0;
     return 1;
 }
+
+/* The grid of a valid caller's table in oi_real; returns g. */
+static const es_grid *grid_of(const oi_earth_table *t, es_grid *g)
+{
+    g->q = t->q;
+    g->psi = t->psi;
+    g->n_lit = t->n_lit;
+    g->n_term = t->n_term;
+    g->n_alt = t->n_alt;
+    g->surf = nonneg_bits(t->w_min) == 0ULL;
+    g->w_min = (oi_real)t->w_min;
+    g->w_max = (oi_real)t->w_max;
+    g->k0 = (oi_real)t->term_k0;
+    g->kp = (oi_real)t->term_kp;
+    return g;
+}
+
+#ifndef OI_NO_EARTH_TABLE
+/* The grid of the default table oi_earth_diffuse (tables/oi_earth_diffuse.c)
+ * as compile-time constants: the const table is valid by construction, so it
+ * is neither validated nor converted per call. test_earthshine.c
+ * (test_default_grid_constants) checks these against the table's fields and
+ * the lookup through them against the same table passed as a caller's table;
+ * a re-bake with another grid must update them. */
+#define ES_DEF_W_MIN 0.0
+#define ES_DEF_W_MAX 1.5707963267948966
+#define ES_DEF_K0 2.0
+#define ES_DEF_KP 8.0
+
+static const es_grid *grid_default(es_grid *g)
+{
+    g->q = oi_earth_diffuse.q;
+    g->psi = oi_earth_diffuse.psi;
+    g->n_lit = OI_EARTH_DIFFUSE_N_LIT;
+    g->n_term = OI_EARTH_DIFFUSE_N_TERM;
+    g->n_alt = OI_EARTH_DIFFUSE_N_ALT;
+    g->surf = ES_DEF_W_MIN == 0.0;
+    g->w_min = (oi_real)ES_DEF_W_MIN;
+    g->w_max = (oi_real)ES_DEF_W_MAX;
+    g->k0 = (oi_real)ES_DEF_K0;
+    g->kp = (oi_real)ES_DEF_KP;
+    return g;
+}
+#endif
 
 /*
  * oi_earthshine: diffuse earthshine per unit albedo and unit solar
@@ -222,11 +317,12 @@ int oi_earthshine(oi_real theta, oi_real h_km, const oi_model *model,
 }
 
 /* oi_earthshine with a resolved model and non-NULL outputs (oi_internal.h). */
-int oi__earthshine(oi_real theta, oi_real h_km, const oi_model *model, oi_real *phi,
+int oi__earthshine(oi_real theta, oi_real h_km, const oi_model *resolved, oi_real *phi,
                    oi_real *psi)
 {
-    const oi_model *m = model;
-    const oi_earth_table *t = NULL;
+    const oi_model *m = resolved;
+    es_grid g;
+    const es_grid *grid = NULL; /* NULL: no table, the Lambert far field */
     oi_real R, x, w, s, tb;
 
     *phi = (oi_real)0;
@@ -237,48 +333,57 @@ int oi__earthshine(oi_real theta, oi_real h_km, const oi_model *model, oi_real *
     if (theta < (oi_real)0) theta = (oi_real)0;
     if (theta > OI_PI_R) theta = OI_PI_R;
 
+    if (m->earth_model == OI_EARTH_TABLE) {
+        const oi_earth_table *t = m->earth_table;
+        if (t != NULL
+#ifndef OI_NO_EARTH_TABLE
+            && t != &oi_earth_diffuse
+#endif
+        ) {
+            if (!table_valid(t)) return OI_ERR_MODEL;
+            grid = grid_of(t, &g);
+        }
+#ifndef OI_NO_EARTH_TABLE
+        else {
+            grid = grid_default(&g);
+        }
+#endif
+    }
+
     R = m->earth_radius_km;
     x = R / (R + h_km);
     s = OI_SQRT(h_km) * OI_SQRT(OI_R(2.0) * R + h_km); /* no overflow for huge h */
-    w = OI_ATAN2(s, R);
+    /* w = acos(x) = atan2(s, R) = atan(s / R) (R > 0; s / R may overflow to
+     * +inf, atan(inf) = pi/2): one rounding more than atan2, a quarter to a
+     * half of its cost */
+    w = OI_ATAN(s / R);
 
-    if (m->earth_model == OI_EARTH_TABLE) {
-        t = m->earth_table;
-#ifndef OI_NO_EARTH_TABLE
-        if (t == NULL) t = &oi_earth_diffuse;
-#endif
-        if (t != NULL && !table_valid(t)) return OI_ERR_MODEL;
-    }
-
-    if (t != NULL) {
-        const oi_real w_min = (oi_real)t->w_min;
-        const oi_real w_max = (oi_real)t->w_max;
-        const oi_real cells = (oi_real)(t->n_alt - 1);
-        const oi_real fw = (w - w_min) / (w_max - w_min) * cells;
+    if (grid != NULL) {
+        const oi_real cells = (oi_real)(grid->n_alt - 1);
+        const oi_real fw = (w - grid->w_min) / (grid->w_max - grid->w_min) * cells;
         if (fw >= -EDGE_TOL_CELLS && fw <= cells + EDGE_TOL_CELLS) {
-            const int ld = t->n_lit + t->n_term;
-            const int surf = t->w_min == 0.0;
             oi_real q, p, fv;
             if (theta >= HALF_PI_R + w) return OI_OK; /* nothing lit is visible */
             tb = HALF_PI_R - w;
             if (theta <= tb && tb > (oi_real)0) {
                 /* cap wholly lit: phi = cos(theta) phi(0, x), tan psi =
                  * tan(theta) G(x) exactly; stored q0 = phi(0, x) / x^2, G / w */
-                const int n = t->n_lit;
                 const oi_real ct = OI_COS(theta);
-                fv = theta / tb * (oi_real)(n - 1);
-                q = seg_interp(t->q, ld, 0, n, t->n_alt, surf, fv, fw) * ct;
-                p = seg_interp(t->psi, ld, 0, n, t->n_alt, surf, fv, fw) * w;
-                p = OI_ATAN2(p * OI_SIN(theta), ct);
+                const oi_real st = OI_SIN(theta);
+                fv = theta / tb * (oi_real)(grid->n_lit - 1);
+                seg_interp(grid, 0, grid->n_lit, fv, fw, &q, &p);
+                q *= ct;
+                /* psi = atan2(G sin, cos) = atan(G tan) for cos > 0; cos <= 0
+                 * (float theta rounded up to pi/2) gives q <= 0: phi = psi = 0 */
+                p = ct > (oi_real)0 ? OI_ATAN(p * w * st / ct) : (oi_real)0;
             } else {
                 /* terminator segment: stored q / w and psi */
-                const int n = t->n_term;
                 oi_real mm = (theta - HALF_PI_R) / w;
                 if (mm > OI_R(1.0)) mm = OI_R(1.0);
                 if (mm < OI_R(-1.0)) mm = OI_R(-1.0);
-                fv = OI_R(0.5) * (term_t(mm, x, t) + OI_R(1.0)) * (oi_real)(n - 1);
-                q = seg_interp(t->q, ld, t->n_lit, n, t->n_alt, surf, fv, fw) * w;
-                p = seg_interp(t->psi, ld, t->n_lit, n, t->n_alt, surf, fv, fw);
+                fv = OI_R(0.5) * (term_t(mm, x, grid) + OI_R(1.0)) * (oi_real)(grid->n_term - 1);
+                seg_interp(grid, grid->n_lit, grid->n_term, fv, fw, &q, &p);
+                q *= w;
             }
             if (q < (oi_real)0) q = (oi_real)0;
             if (p < (oi_real)0) p = (oi_real)0;

@@ -473,6 +473,373 @@ static void test_huge_altitude(void **state)
     assert_true(phi >= 0 && (double)phi < 1e-20 && psi == 0);
 }
 
+/* ---- Agreement with the previous implementation (before the issue-6 speed-up).
+ * old_* is a verbatim copy of the lookup of src/earthshine.c at commit
+ * d4f6768 (separate q and psi interpolations, atan2 for w and psi, pow for the
+ * terminator map, sinh by two exponentials), a different code path from the
+ * shared-stencil lookup: the new code must agree to within rounding. */
+#include "oi_port.h"
+#include "oi_earth_diffuse.h"
+
+#ifdef OI_SINGLE_PRECISION
+#define OLD_EDGE_TOL OI_R(1e-3)
+#define OLD_ASINH_SERIES OI_R(0.125)
+#define ULP_EPS 1.1920928955078125e-07
+#else
+#define OLD_EDGE_TOL OI_R(1e-9)
+#define OLD_ASINH_SERIES OI_R(0.01)
+#define ULP_EPS 2.220446049250313e-16
+#endif
+
+static void old_cr_weights(oi_real f, oi_real wt[4])
+{
+    const oi_real f2 = f * f;
+    const oi_real f3 = f2 * f;
+    wt[0] = OI_R(0.5) * (-f3 + OI_R(2.0) * f2 - f);
+    wt[1] = OI_R(0.5) * (OI_R(3.0) * f3 - OI_R(5.0) * f2 + OI_R(2.0));
+    wt[2] = OI_R(0.5) * (OI_R(-3.0) * f3 + OI_R(4.0) * f2 + f);
+    wt[3] = OI_R(0.5) * (f3 - f2);
+}
+
+static oi_real old_seg_value(const float *row, int n, int c)
+{
+    if (c < 0) return OI_R(2.0) * (oi_real)row[0] - (oi_real)row[1];
+    if (c >= n) return OI_R(2.0) * (oi_real)row[n - 1] - (oi_real)row[n - 2];
+    return (oi_real)row[c];
+}
+
+static oi_real old_seg_row(const float *row, int n, int i, const oi_real wa[4])
+{
+    return wa[0] * old_seg_value(row, n, i - 1) + wa[1] * old_seg_value(row, n, i) +
+           wa[2] * old_seg_value(row, n, i + 1) + wa[3] * old_seg_value(row, n, i + 2);
+}
+
+static int old_cell_of(oi_real f, int n, oi_real *frac)
+{
+    int i;
+    if (f < (oi_real)0) f = (oi_real)0;
+    if (f > (oi_real)(n - 1)) f = (oi_real)(n - 1);
+    i = (int)OI_FLOOR(f);
+    if (i > n - 2) i = n - 2;
+    *frac = f - (oi_real)i;
+    return i;
+}
+
+static oi_real old_seg_interp(const float *base, int ld, int off, int n, int n_alt,
+                              int surface, oi_real fv, oi_real fw)
+{
+    oi_real wa[4], wb[4], r[4] = {0, 0, 0, 0}, fa, fb;
+    int i = old_cell_of(fv, n, &fa);
+    int j = old_cell_of(fw, n_alt, &fb);
+    int k;
+    old_cr_weights(fa, wa);
+    old_cr_weights(fb, wb);
+    for (k = 0; k < 4; k++) {
+        int jj = j - 1 + k;
+        if (jj >= 0 && jj < n_alt) r[k] = old_seg_row(base + (size_t)jj * (size_t)ld + (size_t)off, n, i, wa);
+    }
+    if (j - 1 < 0) {
+        if (surface && n_alt >= 3) r[0] = OI_R(3.0) * (r[1] - r[2]) + r[3];
+        else r[0] = OI_R(2.0) * r[1] - r[2];
+    }
+    if (j + 2 >= n_alt) r[3] = OI_R(2.0) * r[2] - r[1];
+    return wb[0] * r[0] + wb[1] * r[1] + wb[2] * r[2] + wb[3] * r[3];
+}
+
+static oi_real old_asinh(oi_real z)
+{
+    const oi_real a = OI_FABS(z);
+    oi_real r;
+    if (a < OLD_ASINH_SERIES) {
+        const oi_real z2 = z * z;
+        return z * (OI_R(1.0) + z2 * (OI_R(-1.0) / OI_R(6.0) +
+                    z2 * (OI_R(3.0) / OI_R(40.0) +
+                    z2 * (OI_R(-15.0) / OI_R(336.0) + z2 * (OI_R(105.0) / OI_R(3456.0))))));
+    }
+    r = OI_LOG(a + OI_SQRT(a * a + OI_R(1.0)));
+    return z < (oi_real)0 ? -r : r;
+}
+
+static oi_real old_sinh(oi_real k)
+{
+    if (k < OI_R(0.5)) {
+        const oi_real k2 = k * k;
+        return k * (OI_R(1.0) + k2 / OI_R(6.0) * (OI_R(1.0) + k2 / OI_R(20.0) *
+                    (OI_R(1.0) + k2 / OI_R(42.0) * (OI_R(1.0) + k2 / OI_R(72.0) *
+                    (OI_R(1.0) + k2 / OI_R(110.0) * (OI_R(1.0) + k2 / OI_R(156.0)))))));
+    }
+    return OI_R(0.5) * (OI_EXP(k) - OI_EXP(-k));
+}
+
+/* *noise (not in the old code): the rounding noise of t in units of epsilon.
+ * asinh(z) = log(a + sqrt(a^2 + 1)) (a = |z| >= the series limit) rounds
+ * its argument v ~ 1 + a to ~2 epsilon absolute: 2 / asinh(a) relative, so
+ * one ulp of z (here from the new code's x^8 by squaring) can move t by that
+ * much: up to ~200 ulp at a = 0.01. */
+static oi_real old_term_t(oi_real m, oi_real x, const oi_earth_table *t, double *noise)
+{
+    oi_real k, z;
+    *noise = 0;
+    if (t->term_k0 <= 0.0) return m;
+    k = (oi_real)t->term_k0 * OI_POW(x, (oi_real)t->term_kp);
+    if (k < OI_R(1e-4)) return m;
+    z = m * old_sinh(k);
+    if (OI_FABS(z) >= OLD_ASINH_SERIES) *noise = 2.0 / fabs((double)old_asinh(z));
+    return old_asinh(z) / k;
+}
+
+/* The old lookup for a valid table t, radius R, h > 0 (OI_OK cases only;
+ * returns 0 outside the table's range). dw and dt (in units of the
+ * precision's epsilon, 0 for the verbatim old code) perturb its coordinates
+ * w and t relatively: they measure how sensitive its result is to rounding
+ * in them. */
+static int old_lookup(oi_real theta, oi_real h_km, oi_real R, const oi_earth_table *t,
+                      double dw, double dt, oi_real *phi, oi_real *psi, double *t_noise)
+{
+    const oi_real half_pi = (oi_real)(0.5 * OI_PI);
+    oi_real x, w, s, tb;
+    *phi = 0;
+    *psi = 0;
+    *t_noise = 0;
+    if (theta < (oi_real)0) theta = (oi_real)0;
+    if (theta > OI_PI_R) theta = OI_PI_R;
+    x = R / (R + h_km);
+    s = OI_SQRT(h_km) * OI_SQRT(OI_R(2.0) * R + h_km);
+    w = OI_ATAN2(s, R);
+    w *= (oi_real)(1.0 + dw * ULP_EPS);
+    {
+        const oi_real w_min = (oi_real)t->w_min;
+        const oi_real w_max = (oi_real)t->w_max;
+        const oi_real cells = (oi_real)(t->n_alt - 1);
+        const oi_real fw = (w - w_min) / (w_max - w_min) * cells;
+        if (fw >= -OLD_EDGE_TOL && fw <= cells + OLD_EDGE_TOL) {
+            const int ld = t->n_lit + t->n_term;
+            const int surf = t->w_min == 0.0;
+            oi_real q, p, fv;
+            if (theta >= half_pi + w) return 1;
+            tb = half_pi - w;
+            if (theta <= tb && tb > (oi_real)0) {
+                const int n = t->n_lit;
+                const oi_real ct = OI_COS(theta);
+                fv = theta / tb * (oi_real)(n - 1);
+                q = old_seg_interp(t->q, ld, 0, n, t->n_alt, surf, fv, fw) * ct;
+                p = old_seg_interp(t->psi, ld, 0, n, t->n_alt, surf, fv, fw) * w;
+                p = OI_ATAN2(p * OI_SIN(theta), ct);
+            } else {
+                const int n = t->n_term;
+                oi_real mm = (theta - half_pi) / w;
+                if (mm > OI_R(1.0)) mm = OI_R(1.0);
+                if (mm < OI_R(-1.0)) mm = OI_R(-1.0);
+                fv = OI_R(0.5) * (old_term_t(mm, x, t, t_noise) * (oi_real)(1.0 + dt * ULP_EPS) + OI_R(1.0)) *
+                     (oi_real)(n - 1);
+                q = old_seg_interp(t->q, ld, t->n_lit, n, t->n_alt, surf, fv, fw) * w;
+                p = old_seg_interp(t->psi, ld, t->n_lit, n, t->n_alt, surf, fv, fw);
+            }
+            if (q < (oi_real)0) q = (oi_real)0;
+            if (p < (oi_real)0) p = (oi_real)0;
+            if (p > tb) p = tb;
+            *phi = q * x * x;
+            *psi = *phi > (oi_real)0 ? p : (oi_real)0;
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* deterministic uniform [0, 1) (64-bit LCG, Knuth MMIX constants) */
+static double lcg01(uint64_t *st)
+{
+    *st = *st * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (double)(*st >> 11) * (1.0 / 9007199254740992.0);
+}
+
+/* Tolerance of the agreement: 8 ulp of the old value, plus the old code's
+ * own spread when its coordinates w and t move by the rounding the new
+ * code's cheaper forms may add (atan(s / R) for atan2(s, R): 2 ulp of w; x^8
+ * by squaring, one exponential: 8 ulp of t, plus the old asinh's own noise,
+ * see old_term_t). The spread matters where the result is ill-conditioned in
+ * its coordinates: at the dark edge of the terminator (phi ~ 1e-9 phi0,
+ * summed from node values ~1e5 times larger) and near w = pi/2 (x = cos w:
+ * one ulp of w moves psi ~ x by tan(w) ulp). */
+static double agree_tol(oi_real th, oi_real h, oi_real R, const oi_earth_table *t, int which,
+                        double old, double t_noise)
+{
+    const double dws[2] = {2.0, -2.0}, dts[2] = {8.0 + 2.0 * t_noise, -8.0 - 2.0 * t_noise};
+    double tol = 8.0 * ULP_EPS * fabs(old);
+    int k;
+    for (k = 0; k < 4; k++) {
+        oi_real p, s;
+        double v, tn;
+        (void)old_lookup(th, h, R, t, k < 2 ? dws[k] : 0.0, k < 2 ? 0.0 : dts[k - 2], &p, &s, &tn);
+        v = which == 0 ? (double)p : (double)s;
+        tol += fabs(v - old);
+    }
+    return tol;
+}
+
+/* New lookup (oi_earthshine with model m) against the old one over npts
+ * random points, h log-uniform in [hlo, hhi] km, theta uniform in [0, pi]
+ * or, for a third of them, in the terminator band pi/2 +- w; returns the
+ * number of disagreements (printed); *worst = max |new - old| / tol. */
+static int agreement(const oi_earth_table *t, const oi_model *m, oi_real R, double hlo,
+                     double hhi, int npts, double *worst)
+{
+    uint64_t st = 20261122u;
+    int k, bad = 0;
+    *worst = 0;
+    for (k = 0; k < npts; k++) {
+        const double hd = hlo * pow(hhi / hlo, lcg01(&st));
+        const double wd = acos((double)R / ((double)R + hd));
+        const double u = lcg01(&st);
+        const oi_real h = (oi_real)hd;
+        const oi_real th = (oi_real)(k % 3 == 2 ? PI / 2 + wd * (2 * u - 1) : PI * u);
+        oi_real p0, s0, p1, s1;
+        double tn;
+        int q;
+        if (!old_lookup(th, h, R, t, 0.0, 0.0, &p0, &s0, &tn)) continue;
+        assert_int_equal(oi_earthshine(th, h, m, &p1, &s1), OI_OK);
+        for (q = 0; q < 2; q++) {
+            const double want = q == 0 ? (double)p0 : (double)s0;
+            const double got = q == 0 ? (double)p1 : (double)s1;
+            const double d = fabs(got - want);
+            double tol;
+            if (d == 0) continue;
+            tol = agree_tol(th, h, R, t, q, want, tn);
+            if (d / tol > *worst) *worst = d / tol;
+            if (!(d <= tol)) {
+                if (bad < 10)
+                    print_error("%s theta=%.17g h=%.17g: want %.17g got %.17g (tol %.3g)\n",
+                                q == 0 ? "phi" : "psi", (double)th, (double)h, want, got, tol);
+                bad++;
+            }
+        }
+    }
+    return bad;
+}
+
+/* The shared-stencil lookup agrees with the previous implementation to
+ * rounding: default table (its compile-time grid), the same table passed as
+ * a caller's table (the validated, converted path), the LEO scene table
+ * (another grid, w_min > 0) and a model radius other than the default. */
+static void test_agrees_with_previous(void **state)
+{
+    oi_earth_table copy = oi_earth_diffuse;
+    oi_model m;
+    double worst;
+    (void)state;
+    assert_int_equal(agreement(&oi_earth_diffuse, NULL, (oi_real)RE, 1e-3, 1e7, 150000, &worst), 0);
+    memset(&m, 0, sizeof m);
+    m.earth_table = &copy;
+    assert_int_equal(agreement(&copy, &m, (oi_real)RE, 1e-3, 1e7, 30000, &worst), 0);
+    m.earth_table = &oi_earth_leo;
+    assert_int_equal(agreement(&oi_earth_leo, &m, (oi_real)RE, 150.0, 2500.0, 60000, &worst), 0);
+    memset(&m, 0, sizeof m);
+    m.earth_radius_km = OI_R(1737.4);
+    assert_int_equal(agreement(&oi_earth_diffuse, &m, OI_R(1737.4), 1e-3, 1e6, 30000, &worst), 0);
+}
+
+/* The default table's grid is compiled into src/earthshine.c (it skips
+ * validation and double conversion per call): the table must still hold that
+ * grid, and the lookup through it must equal, bit for bit, the lookup of the
+ * same table passed as a caller's table (validated, fields converted). */
+static void test_default_grid_constants(void **state)
+{
+    oi_earth_table copy = oi_earth_diffuse;
+    oi_model m;
+    uint64_t st = 7u;
+    int k;
+    (void)state;
+    assert_true(oi_earth_diffuse.w_min == 0.0 && oi_earth_diffuse.w_max == 1.5707963267948966);
+    assert_true(oi_earth_diffuse.term_k0 == 2.0 && oi_earth_diffuse.term_kp == 8.0);
+    memset(&m, 0, sizeof m);
+    m.earth_table = &copy;
+    for (k = 0; k < 50000; k++) {
+        const oi_real h = (oi_real)(1e-3 * pow(1e10, lcg01(&st)));
+        const oi_real th = (oi_real)(PI * lcg01(&st));
+        oi_real p0, s0, p1, s1;
+        assert_int_equal(oi_earthshine(th, h, NULL, &p0, &s0), OI_OK);
+        assert_int_equal(oi_earthshine(th, h, &m, &p1, &s1), OI_OK);
+        if (p0 != p1 || s0 != s1) {
+            print_error("theta=%.17g h=%.17g: want %.17g %.17g got %.17g %.17g\n", (double)th,
+                        (double)h, (double)p1, (double)s1, (double)p0, (double)s0);
+            fail();
+        }
+    }
+}
+
+/* A caller's table is validated field by field (src/earthshine.c compares the
+ * double fields by their bit patterns): boundaries of every check. */
+static void test_table_validation(void **state)
+{
+    oi_earth_table t;
+    oi_model m;
+    oi_real phi, psi;
+    const double lim = 0.5 * 3.14159265358979323846 * (1.0 + 1e-15);
+    (void)state;
+    memset(&m, 0, sizeof m);
+    m.earth_table = &t;
+#define VALID(expect)                                                                          \
+    do {                                                                                       \
+        phi = psi = 7;                                                                         \
+        assert_int_equal(oi_earthshine(OI_R(1.0), OI_R(500.0), &m, &phi, &psi), (expect));     \
+        if ((expect) < 0) assert_true(phi == 0 && psi == 0);                                   \
+    } while (0)
+    t = oi_earth_leo;
+    VALID(OI_OK);
+    t.w_min = -0.0; /* -0 >= 0 */
+    VALID(OI_OK);
+    t.w_min = -1e-300;
+    VALID(OI_ERR_MODEL);
+    t.w_min = NAN;
+    VALID(OI_ERR_MODEL);
+    t = oi_earth_leo;
+    t.w_max = t.w_min; /* w_max > w_min */
+    VALID(OI_ERR_MODEL);
+    t.w_max = NAN;
+    VALID(OI_ERR_MODEL);
+    t.w_max = INFINITY;
+    VALID(OI_ERR_MODEL);
+    t.w_max = -0.5;
+    VALID(OI_ERR_MODEL);
+    t.w_max = lim; /* <= (pi/2)(1 + 1e-15) */
+    VALID(OI_OK);
+    t.w_max = nextafter(lim, 2.0);
+    VALID(OI_ERR_MODEL);
+    t = oi_earth_leo;
+    t.w_min = INFINITY;
+    VALID(OI_ERR_MODEL);
+    t = oi_earth_leo;
+    t.term_k0 = 20.0;
+    VALID(OI_OK);
+    t.term_k0 = nextafter(20.0, 21.0);
+    VALID(OI_ERR_MODEL);
+    t.term_k0 = -0.0;
+    VALID(OI_OK);
+    t.term_k0 = -1e-300;
+    VALID(OI_ERR_MODEL);
+    t.term_k0 = NAN;
+    VALID(OI_ERR_MODEL);
+    t = oi_earth_leo;
+    t.term_kp = 100.0;
+    VALID(OI_OK);
+    t.term_kp = nextafter(100.0, 101.0);
+    VALID(OI_ERR_MODEL);
+    t.term_kp = -2.0;
+    VALID(OI_ERR_MODEL);
+    t.term_kp = INFINITY;
+    VALID(OI_ERR_MODEL);
+    t = oi_earth_leo;
+    t.w_min = 0.0; /* a surface row needs n_alt >= 3 */
+    t.n_alt = 2;
+    VALID(OI_ERR_MODEL);
+    t.n_alt = 3;
+    VALID(OI_OK);
+    t = oi_earth_leo;
+    t.format = OI_TABLE_FORMAT + 1;
+    VALID(OI_ERR_MODEL);
+#undef VALID
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -490,6 +857,9 @@ int main(void)
         cmocka_unit_test(test_scene_table_leo),
         cmocka_unit_test(test_errors),
         cmocka_unit_test(test_huge_altitude),
+        cmocka_unit_test(test_agrees_with_previous),
+        cmocka_unit_test(test_default_grid_constants),
+        cmocka_unit_test(test_table_validation),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
