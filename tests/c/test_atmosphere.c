@@ -364,13 +364,21 @@ static void test_coords_match_bisection(void **state)
     double worst_u = 0.0, worst_t = 0.0;
     (void)state;
     for (n = 0; n < N_COORD_POINTS; ++n) {
-        double z, rho, d, iu_r, it_r;
+        double z, rho, d, iu_r, it_r, r_e = OI_ATM_EARTH_RADIUS_KM, r_s = OI_ATM_SUN_RADIUS_KM;
         oi_real iu = (oi_real)-1, it = (oi_real)-1;
         int rr, rn;
         random_point(&z, &rho, &d);
-        rr = ref_coords(z, rho, d, OI_ATM_EARTH_RADIUS_KM, OI_ATM_SUN_RADIUS_KM, &iu_r, &it_r);
-        rn = oi__atm_coords((oi_real)z, (oi_real)rho, (oi_real)d, (oi_real)OI_ATM_EARTH_RADIUS_KM,
-                            (oi_real)OI_ATM_SUN_RADIUS_KM, &iu, &it);
+        if (n % 10 == 9) {
+            /* other model radii move the window (rc, a): the solve must
+             * follow; rho is kept relative to the default window's place */
+            r_e = (double)(oi_real)(6000.0 + 1000.0 * urand());
+            r_s = (double)(oi_real)(3e5 + 9e5 * urand());
+            rho = (double)(oi_real)(rho + (r_e - OI_ATM_EARTH_RADIUS_KM) * (1.0 + z / d) +
+                                    z * (r_s - OI_ATM_SUN_RADIUS_KM) / d * (urand() - 0.5));
+        }
+        rr = ref_coords(z, rho, d, r_e, r_s, &iu_r, &it_r);
+        rn = oi__atm_coords((oi_real)z, (oi_real)rho, (oi_real)d, (oi_real)r_e, (oi_real)r_s, &iu,
+                            &it);
         if (rr != rn) {
             /* a region boundary may differ only by rounding: the point must
              * then sit at the window's lower edge (it ~ 0, F ~ 0) */
