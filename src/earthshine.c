@@ -14,8 +14,10 @@
  * rounding puts just outside: they are clamped onto the end node. */
 #ifdef OI_SINGLE_PRECISION
 #define EDGE_TOL_CELLS OI_R(1e-3)
+#define BOUND_MARGIN OI_R(1.9073486328125e-06) /* 16 FLT_EPSILON */
 #else
 #define EDGE_TOL_CELLS OI_R(1e-9)
+#define BOUND_MARGIN OI_R(3.5527136788005009e-15) /* 16 DBL_EPSILON */
 #endif
 
 /* The grid of one table in oi_real: converted once per call from the
@@ -25,6 +27,7 @@ typedef struct es_grid {
     const float *q, *psi;
     int n_lit, n_term, n_alt;
     int surf;                  /* w_min = 0: the first row is the surface */
+    int full;                  /* w_min = 0 and w_max = pi/2: every h > 0 is inside */
     oi_real w_min, w_max, k0, kp;
 } es_grid;
 
@@ -206,6 +209,7 @@ static const es_grid *grid_of(const oi_earth_table *t, es_grid *g)
     g->w_max = (oi_real)t->w_max;
     g->k0 = (oi_real)t->term_k0;
     g->kp = (oi_real)t->term_kp;
+    g->full = g->surf && g->w_max >= HALF_PI_R;
     return g;
 }
 
@@ -233,6 +237,7 @@ static const es_grid *grid_default(es_grid *g)
     g->w_max = (oi_real)ES_DEF_W_MAX;
     g->k0 = (oi_real)ES_DEF_K0;
     g->kp = (oi_real)ES_DEF_KP;
+    g->full = g->surf && g->w_max >= HALF_PI_R;
     return g;
 }
 #endif
@@ -323,7 +328,7 @@ int oi__earthshine(oi_real theta, oi_real h_km, const oi_model *resolved, oi_rea
     const oi_model *m = resolved;
     es_grid g;
     const es_grid *grid = NULL; /* NULL: no table, the Lambert far field */
-    oi_real R, x, w, s, tb;
+    oi_real R, x, w, s, z, tb;
 
     *phi = (oi_real)0;
     *psi = (oi_real)0;
@@ -353,10 +358,31 @@ int oi__earthshine(oi_real theta, oi_real h_km, const oi_model *resolved, oi_rea
     R = m->earth_radius_km;
     x = R / (R + h_km);
     s = OI_SQRT(h_km) * OI_SQRT(OI_R(2.0) * R + h_km); /* no overflow for huge h */
-    /* w = acos(x) = atan2(s, R) = atan(s / R) (R > 0; s / R may overflow to
-     * +inf, atan(inf) = pi/2): one rounding more than atan2, a quarter to a
-     * half of its cost */
-    w = OI_ATAN(s / R);
+    z = s / R; /* tan(w); may overflow to +inf (atan(inf) = pi/2) */
+
+    if (grid != NULL && grid->full && theta > HALF_PI_R) {
+        /* Beyond the cap's far edge (theta >= pi/2 + w: nothing lit is
+         * visible) decided without the arctangent, from an upper bound of
+         * w = atan(z) (alternating series, z <= 1: z - z^3/3 + z^5/5; z > 1:
+         * pi/2 - 1/z + 1/(3 z^3)) with a margin of 16 epsilon for rounding.
+         * Only for a table covering every altitude (else the point may lie
+         * outside its range: the far field). Points the bound leaves take
+         * the exact test below. */
+        const oi_real d = theta - HALF_PI_R;
+        oi_real ub;
+        if (z <= OI_R(1.0)) {
+            const oi_real z2 = z * z;
+            ub = z * (OI_R(1.0) - z2 * (OI_R(1.0) / OI_R(3.0) - z2 / OI_R(5.0)));
+        } else {
+            const oi_real u = OI_R(1.0) / z;
+            ub = HALF_PI_R - u * (OI_R(1.0) - u * u / OI_R(3.0));
+        }
+        if (d >= ub * (OI_R(1.0) + BOUND_MARGIN) + BOUND_MARGIN) return OI_OK;
+    }
+
+    /* w = acos(x) = atan2(s, R) = atan(s / R) (R > 0): one rounding more
+     * than atan2, a quarter to a half of its cost */
+    w = OI_ATAN(z);
 
     if (grid != NULL) {
         const oi_real cells = (oi_real)(grid->n_alt - 1);
