@@ -40,6 +40,41 @@
                          OI_FLAG_PENUMBRA | OI_FLAG_OCCULTED | OI_FLAG_RESOLVED)
 #define FLAGS_ALL (FLAGS_GEOMETRIC | OI_FLAG_TOO_FAINT | OI_FLAG_SATURATED)
 
+/* Brightest accepted target flux (W/m^2): magnitude OI_MAG_MIN at the
+ * nominal TSI, OI_TSI_W_M2 * 10^(-0.4 (OI_MAG_MIN - OI_SUN_MAG_V)) =
+ * 1361 * 10^1.304 = 27406.787040627104 W/m^2 exactly. The literals are the
+ * values the library computed per call before (pow of the exponent rounded
+ * to oi_real, times the TSI), kept bit for bit so that the accepted range
+ * does not move: in double 0x1.ac3b25edfa68fp+14, which is also what
+ * oi_flux_from_magnitude(OI_MAG_MIN) returns (13 ulp above the exact value:
+ * the exponent -0.4 * -3.26 rounds to 1.3040000000000007); in single
+ * precision 0x1.ac3b28p+14 (powf(10, 1.304f) * 1361). tests/c/test_exposure.c
+ * checks both against pow. */
+#ifdef OI_SINGLE_PRECISION
+#define FLUX_MAX_W_M2 OI_R(27406.7890625)
+#else
+#define FLUX_MAX_W_M2 OI_R(27406.78704062715)
+#endif
+
+/* The search of oi_expose (docs/camera.md, "Cost of the search") takes the
+ * SNR at the longest time j that reaches the goal as the best of its gain
+ * when times_s[j] >= times_s[j-1] * TIME_SPACING: the computed SNR at j is
+ * then above the computed SNR at every shorter time (proof in
+ * docs/camera.md: SNR / sqrt(t) does not decrease with t, and each computed
+ * SNR is within 4.5 u of the exact one, u the unit roundoff), provided that
+ * no product is subnormal: the shortest time is at least TIME_FAST_MIN_S and
+ * the signal at the shortest time at least SIGNAL_FAST_MIN_E (the smallest
+ * SNR is then above 1e-35, as no pixel can hold more than 1e34 electrons).
+ * Otherwise the times that reach the goal are scanned. TIME_SPACING is
+ * 1 + 256 u, exactly representable: 1 + 2^-16 (float), 1 + 2^-45 (double). */
+#ifdef OI_SINGLE_PRECISION
+#define TIME_SPACING OI_R(1.0000152587890625)
+#else
+#define TIME_SPACING OI_R(1.0000000000000284)
+#endif
+#define TIME_FAST_MIN_S   OI_R(1e-30)
+#define SIGNAL_FAST_MIN_E OI_R(1e-18)
+
 /* lo < x <= hi (false for NaN). */
 static int open_closed(oi_real x, oi_real lo, oi_real hi)
 {
@@ -52,10 +87,15 @@ static int closed(oi_real x, oi_real lo, oi_real hi)
     return x >= lo && x <= hi;
 }
 
-/* Nonzero when every field of the camera is in range (docs/camera.md). */
+/* Nonzero when every field of the camera is in range (oi_expose Note 4).
+ * One pass over the times and one over the gains: "strictly ascending from
+ * 0" is the lower bound of every element and the upper bound is tested on
+ * the last one only (the same conditions as element by element; NaN fails
+ * every comparison). */
 static int camera_valid(const oi_camera *c)
 {
-    int i;
+    int i, n;
+    oi_real prev, x;
     const oi_real one = OI_R(1.0);
     if (!open_closed(c->aperture_m, 0, CAM_APERTURE_MAX_M) ||
         !closed(c->focal_length_m, CAM_FOCAL_MIN_M, CAM_FOCAL_MAX_M) ||
@@ -73,16 +113,22 @@ static int camera_valid(const oi_camera *c)
         c->n_gains < 1 || c->n_gains > OI_CAMERA_MAX_GAINS) {
         return 0;
     }
-    for (i = 0; i < c->n_times; i++) {
-        if (!open_closed(c->times_s[i], 0, CAM_TIME_MAX_S)) return 0;
-        if (i > 0 && !(c->times_s[i] > c->times_s[i - 1])) return 0;
+    n = c->n_times;
+    prev = 0;
+    for (i = 0; i < n; i++) {
+        x = c->times_s[i];
+        if (!(x > prev)) return 0;
+        prev = x;
     }
-    for (i = 0; i < c->n_gains; i++) {
-        if (!open_closed(c->gains[i], 0, CAM_GAIN_MAX)) return 0;
-        if (i > 0 && !(c->gains[i] > c->gains[i - 1])) return 0;
-        if (!closed(c->read_noise_e[i], 0, CAM_READ_NOISE_MAX_E)) return 0;
+    if (!(prev <= CAM_TIME_MAX_S)) return 0;
+    n = c->n_gains;
+    prev = 0;
+    for (i = 0; i < n; i++) {
+        x = c->gains[i];
+        if (!(x > prev) || !closed(c->read_noise_e[i], 0, CAM_READ_NOISE_MAX_E)) return 0;
+        prev = x;
     }
-    return 1;
+    return prev <= CAM_GAIN_MAX;
 }
 
 /* Goal with defaults filled in; 0 when a field is out of range. */
@@ -108,6 +154,24 @@ static oi_real snr_of(oi_real s, oi_real b, oi_real rn)
 {
     oi_real var = s + b + rn * rn;
     return var > 0 ? s / OI_SQRT(var) : OI_R(0.0);
+}
+
+/* Fill of time t at saturation sat, by the same operations as evaluate()
+ * (separate statements: nothing can be contracted differently). */
+static oi_real fill_of(oi_real rate_s, oi_real rate_b, oi_real t, oi_real sat)
+{
+    oi_real s = rate_s * t;
+    oi_real b = rate_b * t;
+    oi_real peak = s + b;
+    return peak / sat;
+}
+
+/* SNR of time t with read noise rn, by the same operations as evaluate(). */
+static oi_real snr_at(oi_real rate_s, oi_real rate_b, oi_real t, oi_real rn)
+{
+    oi_real s = rate_s * t;
+    oi_real b = rate_b * t;
+    return snr_of(s, b, rn);
 }
 
 /* Fill *out for time index ti and gain index gi. */
@@ -152,6 +216,124 @@ const char *oi_flag_name(unsigned flag_bit)
     case OI_FLAG_RESOLVED: return "resolved";
     default: return NULL;
     }
+}
+
+/*
+ * The choice of oi_expose for a valid camera; out already zeroed, and left
+ * so on error.
+ *
+ * The rule (Note 2) is a search over every (time, gain) pair, gains
+ * ascending outside and times ascending inside, with strict comparisons so
+ * that the first of equals wins. The same choice is made here from a few
+ * pairs (docs/camera.md, "Cost of the search") because the computed values
+ * are monotone (IEEE operations are correctly rounded, hence monotone in
+ * each operand):
+ *   1. fill = ((S t) + (B t)) / (full_well / g) does not decrease with t nor
+ *      with g, so the settings that reach the goal (fill < 1 and
+ *      fill <= goal) at gain g are the times [0, k_g), k_0 >= k_1 >= ...:
+ *      k_0 by bisection, the next ones by stepping down.
+ *   2. k_0 = 0: nothing reaches the goal, and the lowest fill is that of
+ *      (time 0, gain 0), the first setting: it is the choice, with
+ *      OI_FLAG_SATURATED when its fill is not below 1.
+ *   3. S = 0: every SNR is 0, the first setting (0, 0) is the choice.
+ *   4. The SNR does not increase with the read noise. A gain whose read
+ *      noise is not below that of the best gain so far cannot beat it (its
+ *      times are a subset of the best gain's, each with an SNR no higher):
+ *      it is skipped.
+ *   5. The best of gain g is time k_g - 1 when that time is spaced from the
+ *      one before (TIME_SPACING); otherwise times [0, k_g) are scanned.
+ */
+static int expose_valid(const oi_camera *camera, const oi_expose_in *in,
+                        const oi_expose_goal *goal, oi_exposure *out)
+{
+    const oi_real one = OI_R(1.0);
+    const oi_real *times = camera->times_s;
+    oi_real goal_fill, snr_min, area, k, rate_s, rate_b, ifov, sat, f, snr, x, rn;
+    oi_real best_snr = 0;
+    int n_t = camera->n_times, n_g = camera->n_gains;
+    int lo, hi, mid, kk, gi, ti, j, best_t = 0, best_g = 0, fast;
+    unsigned flags;
+
+    if (!goal_resolve(goal, &goal_fill, &snr_min)) return OI_ERR_CAMERA;
+    if (!OI_ISFINITE(in->flux_w_m2) || !OI_ISFINITE(in->background_w_m2_sr)) {
+        return OI_ERR_NONFINITE;
+    }
+    if (!closed(in->flux_w_m2, 0, FLUX_MAX_W_M2) ||
+        !closed(in->background_w_m2_sr, 0, IN_RADIANCE_MAX)) {
+        return OI_ERR_MAGNITUDE;
+    }
+    if ((in->flags & ~(unsigned)FLAGS_ALL) != 0u) return OI_ERR_TERMS;
+
+    area = OI_PI_R * OI_R(0.25) * camera->aperture_m * camera->aperture_m;
+    k = camera->transmission * camera->band_fraction * camera->quantum_efficiency /
+        camera->photon_energy_j;
+    ifov = camera->pixel_pitch_m / camera->focal_length_m;
+    rate_s = in->flux_w_m2 * (area * k * camera->psf_peak_fraction); /* no underflow of flux * area */
+    rate_b = in->background_w_m2_sr * area * (ifov * ifov) * k + camera->dark_current_e_s;
+
+    /* 1. k_0: the first time at gain 0 that does not reach the goal. */
+    sat = camera->full_well_e / camera->gains[0];
+    lo = 0;
+    hi = n_t;
+    while (lo < hi) {
+        mid = (int)((unsigned)(lo + hi) >> 1); /* both >= 0 */
+        f = fill_of(rate_s, rate_b, times[mid], sat);
+        if (f < one && f <= goal_fill) {
+            lo = mid + 1;
+        } else {
+            hi = mid;
+        }
+    }
+    kk = lo;
+
+    flags = in->flags & (unsigned)FLAGS_GEOMETRIC;
+    if (kk == 0) {
+        /* 2. */
+        evaluate(camera, rate_s, rate_b, 0, 0, out);
+        if (!(out->fill < one)) flags |= OI_FLAG_SATURATED;
+    } else {
+        fast = rate_s * times[0] >= SIGNAL_FAST_MIN_E && times[0] >= TIME_FAST_MIN_S;
+        for (gi = 0; gi < n_g && rate_s > 0; gi++) { /* 3: S = 0 keeps (0, 0) */
+            rn = camera->read_noise_e[gi];
+            if (gi > 0) {
+                if (!(rn < camera->read_noise_e[best_g])) continue; /* 4 */
+                sat = camera->full_well_e / camera->gains[gi];
+                while (kk > 0) {
+                    f = fill_of(rate_s, rate_b, times[kk - 1], sat);
+                    if (f < one && f <= goal_fill) break;
+                    kk--;
+                }
+                if (kk == 0) break;
+            }
+            /* 5. */
+            j = kk - 1;
+            if (j == 0 || (fast && times[j] >= times[j - 1] * TIME_SPACING)) {
+                snr = snr_at(rate_s, rate_b, times[j], rn);
+            } else {
+                j = 0;
+                snr = snr_at(rate_s, rate_b, times[0], rn);
+                for (ti = 1; ti < kk; ti++) {
+                    x = snr_at(rate_s, rate_b, times[ti], rn);
+                    if (x > snr) {
+                        snr = x;
+                        j = ti;
+                    }
+                }
+            }
+            if (gi == 0 || snr > best_snr) {
+                best_snr = snr;
+                best_t = j;
+                best_g = gi;
+            }
+        }
+        evaluate(camera, rate_s, rate_b, best_t, best_g, out);
+    }
+    if (snr_at(rate_s, rate_b, times[n_t - 1], camera->read_noise_e[n_g - 1]) < snr_min) {
+        flags |= OI_FLAG_TOO_FAINT;
+    }
+    out->flags = flags;
+    out->sun_angle_rad = 0;
+    return OI_OK;
 }
 
 /*
@@ -215,69 +397,11 @@ const char *oi_flag_name(unsigned flag_bit)
 int oi_expose(const oi_camera *camera, const oi_expose_in *in,
               const oi_expose_goal *goal, oi_exposure *out)
 {
-    oi_real goal_fill, snr_min, area, k, rate_s, rate_b, ifov, flux_max;
-    oi_exposure trial, best_goal, best_low;
-    int have_goal = 0, have_low = 0, ti, gi;
-    unsigned flags;
-
     if (out == NULL) return OI_ERR_NULL;
     memset(out, 0, sizeof *out);
     if (camera == NULL || in == NULL) return OI_ERR_NULL;
-    if (!camera_valid(camera) || !goal_resolve(goal, &goal_fill, &snr_min)) return OI_ERR_CAMERA;
-    if (!OI_ISFINITE(in->flux_w_m2) || !OI_ISFINITE(in->background_w_m2_sr)) {
-        return OI_ERR_NONFINITE;
-    }
-    /* Brightest accepted flux: magnitude OI_MAG_MIN at the nominal TSI. */
-    flux_max = (oi_real)OI_TSI_W_M2 *
-               OI_POW(OI_R(10.0), (oi_real)(-0.4 * (OI_MAG_MIN - OI_SUN_MAG_V)));
-    if (!closed(in->flux_w_m2, 0, flux_max) ||
-        !closed(in->background_w_m2_sr, 0, IN_RADIANCE_MAX)) {
-        return OI_ERR_MAGNITUDE;
-    }
-    if ((in->flags & ~(unsigned)FLAGS_ALL) != 0u) return OI_ERR_TERMS;
-
-    area = OI_PI_R * OI_R(0.25) * camera->aperture_m * camera->aperture_m;
-    k = camera->transmission * camera->band_fraction * camera->quantum_efficiency /
-        camera->photon_energy_j;
-    ifov = camera->pixel_pitch_m / camera->focal_length_m;
-    rate_s = in->flux_w_m2 * (area * k * camera->psf_peak_fraction); /* no underflow of flux * area */
-    rate_b = in->background_w_m2_sr * area * (ifov * ifov) * k + camera->dark_current_e_s;
-
-    memset(&trial, 0, sizeof trial);
-    best_goal = trial;
-    best_low = trial;
-    /* Gains ascending outside, times ascending inside: with strict
-     * comparisons the first of equals wins (lower gain, then shorter time). */
-    for (gi = 0; gi < camera->n_gains; gi++) {
-        for (ti = 0; ti < camera->n_times; ti++) {
-            evaluate(camera, rate_s, rate_b, ti, gi, &trial);
-            if (!(trial.fill < OI_R(1.0))) continue;
-            if (trial.fill <= goal_fill) {
-                if (!have_goal || trial.snr > best_goal.snr) {
-                    best_goal = trial;
-                    have_goal = 1;
-                }
-            } else if (!have_low || trial.fill < best_low.fill) {
-                best_low = trial;
-                have_low = 1;
-            }
-        }
-    }
-
-    flags = in->flags & (unsigned)FLAGS_GEOMETRIC;
-    if (have_goal) {
-        *out = best_goal;
-    } else if (have_low) {
-        *out = best_low;
-    } else {
-        evaluate(camera, rate_s, rate_b, 0, 0, out);
-        flags |= OI_FLAG_SATURATED;
-    }
-    evaluate(camera, rate_s, rate_b, camera->n_times - 1, camera->n_gains - 1, &trial);
-    if (trial.snr < snr_min) flags |= OI_FLAG_TOO_FAINT;
-    out->flags = flags;
-    out->sun_angle_rad = 0;
-    return OI_OK;
+    if (!camera_valid(camera)) return OI_ERR_CAMERA;
+    return expose_valid(camera, in, goal, out);
 }
 
 /*
@@ -347,8 +471,10 @@ int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
 {
     oi_model m;
     oi_expose_in in;
-    oi_real b[3], bh[3], neg_obs[3], sun_rel[3], hit[3], sun_hit[3], nh[3], sh[3];
-    oi_real r_obs, r_tgt, range, re, sun_angle, gamma, rho, c, sc, ob, s_hit, cos_i, e0, au_d;
+    const oi_real one = OI_R(1.0);
+    oi_real b[3], bh[3], uo[3], us[3], cr[3], sun_rel[3], hit[3], sun_hit[3], nh[3], sh[3];
+    oi_real r_obs, r_tgt, range, re, sun_angle, c, sc, ob, s_hit, cos_i, e0, au_d;
+    oi_real sin_rho, cos_rho, sin_h, cos_h, sin_th, cos_th, cos_g, sin_g, half_fov;
     oi_real ifov, cap;
     int st;
 
@@ -377,7 +503,9 @@ int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
     re = m.earth_radius_km;
     r_obs = oi__norm(scene->observer_km);
     r_tgt = oi__norm(scene->target_km);
-    if (r_obs == 0 || oi__norm(scene->sun_km) == 0) return OI_ERR_ZERO_VECTOR;
+    if (r_obs == 0 || (scene->sun_km[0] == 0 && scene->sun_km[1] == 0 && scene->sun_km[2] == 0)) {
+        return OI_ERR_ZERO_VECTOR;
+    }
     if (!(r_obs > re) || !(r_tgt > re)) return OI_ERR_BELOW_SURFACE;
     oi__sub(scene->target_km, scene->observer_km, b);
     range = oi__unit(b, bh);
@@ -387,21 +515,46 @@ int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
     in.background_w_m2_sr = 0;
     in.flags = 0;
 
-    /* Sun exclusion. */
+    /* Sun exclusion: the angle is an output, so it is the atan2 form, by
+     * the same operations as oi_angle(sun - observer, b) (bh is its unit
+     * vector of b); 0, as there, when a difference overflows or the
+     * observer is at the Sun. */
     oi__sub(scene->sun_km, scene->observer_km, sun_rel);
-    sun_angle = oi_angle(sun_rel, b);
+    sun_angle = 0;
+    if (oi__finite3(b) && oi__finite3(sun_rel) && oi__unit(sun_rel, us) > 0) {
+        oi__cross(us, bh, cr);
+        sun_angle = OI_ATAN2(oi__norm(cr), oi__dot(us, bh));
+    }
     if (sun_angle < camera->sun_exclusion_rad) in.flags |= OI_FLAG_SUN_EXCLUSION;
 
-    /* Earth's disc against the field: gamma = boresight to Earth centre,
-     * rho = asin(R/r) as atan2(R, sqrt((r-R)(r+R))) (no cancellation). */
-    neg_obs[0] = -scene->observer_km[0];
-    neg_obs[1] = -scene->observer_km[1];
-    neg_obs[2] = -scene->observer_km[2];
-    gamma = oi_angle(neg_obs, b);
+    /* Earth's disc against the field (Note 2): the flag is the decision
+     * gamma - rho < h, gamma the angle from the boresight to the Earth's
+     * centre, rho = asin(R/r) the disc's radius, h = fov/2. With
+     * theta = rho + h in (0, pi) and gamma in [0, pi], gamma < theta exactly
+     * when sin(theta - gamma) = sin(theta) cos(gamma) - cos(theta) sin(gamma)
+     * is positive; that sign is computed from unit vectors (cos and sin of
+     * gamma as dot and cross products) and the sum formulas, with no atan2
+     * or asin (docs/camera.md, "Cost of the search": it decides as the angle
+     * comparison except within a few ulp of the boundary). */
+    half_fov = OI_R(0.5) * camera->fov_rad;
+    sin_rho = re / r_obs;
+    cos_rho = OI_SQRT((one - sin_rho) * (one + sin_rho));
+    sin_h = OI_SIN(half_fov);
+    cos_h = OI_COS(half_fov);
+    sin_th = sin_rho * cos_h + cos_rho * sin_h;
+    cos_th = cos_rho * cos_h - sin_rho * sin_h;
+    uo[0] = scene->observer_km[0] / r_obs;
+    uo[1] = scene->observer_km[1] / r_obs;
+    uo[2] = scene->observer_km[2] / r_obs;
+    cos_g = -oi__dot(uo, bh);
+    oi__cross(uo, bh, cr);
+    sin_g = OI_SQRT(oi__dot(cr, cr)); /* unit vectors: no overflow */
+    /* b overflowed (positions near the largest oi_real): gamma was taken as
+     * 0 before (oi_angle of a non-finite vector), so the flag is raised */
+    if (sin_th * cos_g - cos_th * sin_g > 0 || !oi__finite3(b)) in.flags |= OI_FLAG_EARTH_IN_FOV;
+
     c = (r_obs - re) * (r_obs + re); /* |o|^2 - R^2 > 0 */
     sc = OI_SQRT(c);
-    rho = OI_ATAN2(re, sc);
-    if (gamma - rho < OI_R(0.5) * camera->fov_rad) in.flags |= OI_FLAG_EARTH_IN_FOV;
 
     /* Boresight ray o + s bh against the sphere |x| = R: s^2 + 2 ob s + c = 0.
      * It hits when ob < 0 and ob^2 >= c; the near root c / (-ob + sqrt(ob^2 - c))
@@ -442,7 +595,7 @@ int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
         in.flags |= OI_FLAG_PENUMBRA;
     }
 
-    st = oi_expose(camera, &in, goal, out);
+    st = expose_valid(camera, &in, goal, out);
     if (st < 0) return st;
     out->sun_angle_rad = sun_angle;
     return st;

@@ -723,6 +723,518 @@ static void test_scene_errors(void **state)
     expect_scene_status(OI_ERR_CAMERA, &c, &base, &il, NULL, "camera");
 }
 
+
+/* ------------------------------------------------- the search, brute force */
+
+/* The reference: the brute-force search that oi_expose used before its
+ * search was made cheap (kept here, not in the library): every (time, gain)
+ * pair evaluated, gains ascending outside, times ascending inside, strict
+ * comparisons (the first of equals wins). The photometry is written out
+ * again from oi_expose's Note 1 in oi_real, in the same order of operations,
+ * so that the two must agree to the bit where the search is right. */
+#ifdef OI_SINGLE_PRECISION
+#define REF_SQRT sqrtf
+#else
+#define REF_SQRT sqrt
+#endif
+
+static void ref_evaluate(const oi_camera *c, oi_real rate_s, oi_real rate_b, int ti, int gi,
+                         oi_exposure *out)
+{
+    oi_real t = c->times_s[ti], var, rn = c->read_noise_e[gi];
+    out->exposure_s = t;
+    out->gain = c->gains[gi];
+    out->time_index = ti;
+    out->gain_index = gi;
+    out->signal_e = rate_s * t;
+    out->background_e = rate_b * t;
+    out->peak_e = out->signal_e + out->background_e;
+    out->saturation_e = c->full_well_e / c->gains[gi];
+    out->fill = out->peak_e / out->saturation_e;
+    var = out->signal_e + out->background_e + rn * rn;
+    out->snr = var > 0 ? out->signal_e / REF_SQRT(var) : (oi_real)0;
+}
+
+/* Valid inputs only (the random cases below are all valid). */
+static void reference_expose_bruteforce(const oi_camera *c, const oi_expose_in *in,
+                                        const oi_expose_goal *goal, oi_exposure *out)
+{
+    oi_real goal_fill = (oi_real)0.5, snr_min = (oi_real)5.0, area, k, ifov, rate_s, rate_b;
+    oi_exposure trial, best_goal, best_low;
+    int have_goal = 0, have_low = 0, ti, gi;
+    unsigned flags;
+    if (goal != NULL && goal->fill != 0) goal_fill = goal->fill;
+    if (goal != NULL && goal->snr_min != 0) snr_min = goal->snr_min;
+    area = (oi_real)OI_PI * (oi_real)0.25 * c->aperture_m * c->aperture_m;
+    k = c->transmission * c->band_fraction * c->quantum_efficiency / c->photon_energy_j;
+    ifov = c->pixel_pitch_m / c->focal_length_m;
+    rate_s = in->flux_w_m2 * (area * k * c->psf_peak_fraction);
+    rate_b = in->background_w_m2_sr * area * (ifov * ifov) * k + c->dark_current_e_s;
+    memset(&trial, 0, sizeof trial);
+    best_goal = trial;
+    best_low = trial;
+    for (gi = 0; gi < c->n_gains; gi++) {
+        for (ti = 0; ti < c->n_times; ti++) {
+            ref_evaluate(c, rate_s, rate_b, ti, gi, &trial);
+            if (!(trial.fill < 1)) continue;
+            if (trial.fill <= goal_fill) {
+                if (!have_goal || trial.snr > best_goal.snr) {
+                    best_goal = trial;
+                    have_goal = 1;
+                }
+            } else if (!have_low || trial.fill < best_low.fill) {
+                best_low = trial;
+                have_low = 1;
+            }
+        }
+    }
+    flags = in->flags & ~(unsigned)(OI_FLAG_TOO_FAINT | OI_FLAG_SATURATED);
+    if (have_goal) {
+        *out = best_goal;
+    } else if (have_low) {
+        *out = best_low;
+    } else {
+        ref_evaluate(c, rate_s, rate_b, 0, 0, out);
+        flags |= OI_FLAG_SATURATED;
+    }
+    ref_evaluate(c, rate_s, rate_b, c->n_times - 1, c->n_gains - 1, &trial);
+    if (trial.snr < snr_min) flags |= OI_FLAG_TOO_FAINT;
+    out->flags = flags;
+    out->sun_angle_rad = 0;
+}
+
+/* Fixed-seed generator (64-bit LCG, Knuth's MMIX constants; top 53 bits). */
+static uint64_t lcg_state;
+static double urand(void)
+{
+    lcg_state = lcg_state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (double)(lcg_state >> 11) * (1.0 / 9007199254740992.0);
+}
+static double log_uniform(double lo, double hi)
+{
+    return lo * pow(hi / lo, urand());
+}
+static int irand(int lo, int hi) /* lo..hi inclusive */
+{
+    int v = lo + (int)(urand() * (double)(hi - lo + 1));
+    return v > hi ? hi : v;
+}
+
+/* Distance in units in the last place between two non-negative finite values. */
+static long ulp_dist(oi_real a, oi_real b)
+{
+#ifdef OI_SINGLE_PRECISION
+    int32_t ia, ib;
+#else
+    int64_t ia, ib;
+#endif
+    memcpy(&ia, &a, sizeof ia);
+    memcpy(&ib, &b, sizeof ib);
+    return (long)(ia > ib ? ia - ib : ib - ia);
+}
+
+static oi_real nextafter_real(oi_real x)
+{
+#ifdef OI_SINGLE_PRECISION
+    return nextafterf(x, INFINITY);
+#else
+    return nextafter(x, INFINITY);
+#endif
+}
+/* n strictly ascending values in (0, 1e4]: log-uniform, sometimes with
+ * neighbours a few ulp apart (the search then scans) or tiny values. */
+static void random_ascending(oi_real *v, int n, double lo, double hi, int close)
+{
+    int i, j;
+    double x[OI_CAMERA_MAX_TIMES];
+    for (i = 0; i < n; i++) x[i] = log_uniform(lo, hi);
+    for (i = 1; i < n; i++) /* insertion sort */
+        for (j = i; j > 0 && x[j] < x[j - 1]; j--) {
+            double t = x[j];
+            x[j] = x[j - 1];
+            x[j - 1] = t;
+        }
+    for (i = 0; i < n; i++) {
+        oi_real r = (oi_real)x[i];
+        if (i > 0 && close && urand() < 0.5) {
+            r = urand() < 0.5 ? nextafter_real(v[i - 1]) : v[i - 1] * (oi_real)(1.0 + 3e-7 * urand());
+        }
+        if (i > 0 && !(r > v[i - 1])) r = v[i - 1] + v[i - 1] * (oi_real)1e-6;
+        if (i > 0 && !(r > v[i - 1])) r = nextafter_real(v[i - 1]);
+        v[i] = r;
+    }
+}
+
+static oi_camera random_camera(void)
+{
+    oi_camera c;
+    int i, rn_mode = irand(0, 4);
+    double rn0;
+    memset(&c, 0, sizeof c);
+    c.name = "random";
+    c.aperture_m = (oi_real)log_uniform(1e-3, 10.0);
+    c.focal_length_m = (oi_real)log_uniform(1e-3, 1e3);
+    c.pixel_pitch_m = (oi_real)log_uniform(1e-7, 1e-3);
+    c.transmission = (oi_real)(0.05 + 0.95 * urand());
+    c.quantum_efficiency = (oi_real)(0.05 + 0.95 * urand());
+    c.band_fraction = (oi_real)(0.05 + 0.95 * urand());
+    c.photon_energy_j = (oi_real)log_uniform(1e-20, 1e-17);
+    c.full_well_e = (oi_real)log_uniform(1.0, 1e9);
+    c.dark_current_e_s = urand() < 0.3 ? 0 : (oi_real)log_uniform(1e-3, 1e6);
+    c.psf_peak_fraction = (oi_real)(0.01 + 0.99 * urand());
+    c.fov_rad = (oi_real)(0.001 + 3.0 * urand());
+    c.sun_exclusion_rad = (oi_real)(3.0 * urand());
+    c.n_times = irand(1, OI_CAMERA_MAX_TIMES);
+    random_ascending(c.times_s, c.n_times, urand() < 0.1 ? 1e-35 : 1e-6, 1e4, urand() < 0.15);
+    c.n_gains = irand(1, OI_CAMERA_MAX_GAINS);
+    random_ascending(c.gains, c.n_gains, 1e-3, 1e3, urand() < 0.1);
+    rn0 = urand() < 0.1 ? 0.0 : log_uniform(0.1, 100.0);
+    for (i = 0; i < c.n_gains; i++) {
+        switch (rn_mode) {
+        case 0: c.read_noise_e[i] = (oi_real)rn0; break;                       /* equal */
+        case 1: c.read_noise_e[i] = (oi_real)(rn0 / (1.0 + i)); break;         /* falling */
+        case 2: c.read_noise_e[i] = (oi_real)(rn0 * (1.0 + i)); break;         /* rising */
+        case 3: c.read_noise_e[i] = (oi_real)(urand() < 0.3 ? 0.0 : 100.0 * urand()); break;
+        default: c.read_noise_e[i] = (oi_real)(i % 2 ? rn0 : 2.0 * rn0); break; /* zig-zag */
+        }
+    }
+    return c;
+}
+
+/* The time to fill the pixel to the goal, for a flux chosen around it: the
+ * flux that would fill full_well at gain 1 in time t is
+ * full_well / (t * area * k * psf). */
+static double flux_around(const oi_camera *c)
+{
+    double area = PI * 0.25 * (double)c->aperture_m * (double)c->aperture_m;
+    double k = (double)c->transmission * (double)c->band_fraction *
+               (double)c->quantum_efficiency / (double)c->photon_energy_j;
+    double t = (double)c->times_s[irand(0, c->n_times - 1)];
+    double f = (double)c->full_well_e / (t * area * k * (double)c->psf_peak_fraction);
+    /* 20 magnitudes around it (factor 1e4 either way) */
+    return f * pow(10.0, -0.4 * (20.0 * urand() - 10.0));
+}
+
+/* Rates of the reference (as in reference_expose_bruteforce). */
+static void ref_rates(const oi_camera *c, const oi_expose_in *in, oi_real *rate_s, oi_real *rate_b)
+{
+    oi_real area = (oi_real)OI_PI * (oi_real)0.25 * c->aperture_m * c->aperture_m;
+    oi_real k = c->transmission * c->band_fraction * c->quantum_efficiency / c->photon_energy_j;
+    oi_real ifov = c->pixel_pitch_m / c->focal_length_m;
+    *rate_s = in->flux_w_m2 * (area * k * c->psf_peak_fraction);
+    *rate_b = in->background_w_m2_sr * area * (ifov * ifov) * k + c->dark_current_e_s;
+}
+
+/* Put the fill of setting (ti, gi) exactly on target (1: the saturation
+ * boundary; the goal: the goal boundary) by stepping the flux an ulp at a
+ * time from the scaled guess; 1 when it got there. */
+static int tune_flux_to_fill(const oi_camera *c, oi_expose_in *in, int ti, int gi, oi_real target)
+{
+    oi_exposure e;
+    oi_real rs, rb, flux0 = in->flux_w_m2;
+    double guess;
+    int step;
+    ref_rates(c, in, &rs, &rb);
+    ref_evaluate(c, rs, rb, ti, gi, &e);
+    /* rate_s that puts the fill on target: target * saturation / t - rate_b */
+    guess = (double)target * (double)e.saturation_e / (double)e.exposure_s - (double)rb;
+    if (!(rs > 0) || !(guess > 0)) return 0;
+    in->flux_w_m2 = (oi_real)((double)in->flux_w_m2 * guess / (double)rs);
+    for (step = 0; step < 64; step++) {
+        if (!(in->flux_w_m2 > 0) || !(in->flux_w_m2 < (oi_real)2.74e4)) break;
+        ref_rates(c, in, &rs, &rb);
+        ref_evaluate(c, rs, rb, ti, gi, &e);
+        if (e.fill == target) return 1;
+        in->flux_w_m2 = e.fill < target ? nextafter_real(in->flux_w_m2)
+#ifdef OI_SINGLE_PRECISION
+                                        : nextafterf(in->flux_w_m2, 0);
+#else
+                                        : nextafter(in->flux_w_m2, 0);
+#endif
+    }
+    in->flux_w_m2 = flux0;
+    return 0;
+}
+
+static void test_search_matches_bruteforce(void **state)
+{
+    int n, fails = 0;
+    long worst_fill = 0, worst_snr = 0;
+    int n_goal = 0, n_low = 0, n_sat = 0, n_faint = 0, n_dark = 0, n_scan_times = 0;
+    int n_exact_one = 0, n_exact_goal = 0;
+    (void)state;
+    lcg_state = 20261122ULL;
+    for (n = 0; n < 40000; n++) {
+        oi_camera c = random_camera();
+        oi_expose_in in;
+        oi_expose_goal goal, *gp = NULL;
+        oi_exposure got, want;
+        double flux, u = urand();
+        int st, i;
+        memset(&in, 0, sizeof in);
+        if (u < 0.03) {
+            flux = 0;
+        } else if (u < 0.05) {
+#ifdef OI_SINGLE_PRECISION
+            flux = 1e-42;   /* subnormal flux: the signal is tiny, the search scans */
+#else
+            flux = 1e-310;
+#endif
+        } else if (u < 0.06) {
+            flux = 2.74e4;
+        } else {
+            flux = flux_around(&c);
+            if (flux > 2.74e4) flux = 2.74e4;
+        }
+        in.flux_w_m2 = (oi_real)flux;
+        in.background_w_m2_sr = urand() < 0.4 ? 0 : (oi_real)log_uniform(1e-12, 1e6);
+        in.flags = (unsigned)irand(0, 255);
+        u = urand();
+        if (u < 0.4) {
+            gp = NULL;
+        } else {
+            goal.fill = u < 0.5 ? 0 : (u < 0.55 ? 1 : (oi_real)(0.01 + 0.99 * urand()));
+            goal.snr_min = urand() < 0.3 ? 0 : (oi_real)log_uniform(0.1, 1e4);
+            gp = &goal;
+        }
+        /* one case in five: a setting's fill exactly at 1 or at the goal
+         * (up to 4 settings tried: an ulp of flux may step over the target) */
+        u = urand();
+        if (u < 0.2 && in.flux_w_m2 > 0) {
+            oi_real target = u < 0.1 ? 1 : (gp != NULL && gp->fill != 0 ? gp->fill : (oi_real)0.5);
+            for (i = 0; i < 4; i++) {
+                if (tune_flux_to_fill(&c, &in, irand(0, c.n_times - 1), irand(0, c.n_gains - 1), target)) {
+                    if (u < 0.1) n_exact_one++; else n_exact_goal++;
+                    break;
+                }
+            }
+        }
+        for (i = 1; i < c.n_times; i++)
+            if (!((double)c.times_s[i] >= (double)c.times_s[i - 1] * (1.0 + 1e-5))) n_scan_times++;
+        st = oi_expose(&c, &in, gp, &got);
+        if (st != OI_OK) {
+            print_error("case %d: status %d\n", n, st);
+            fails++;
+            continue;
+        }
+        reference_expose_bruteforce(&c, &in, gp, &want);
+        if (got.time_index != want.time_index || got.gain_index != want.gain_index ||
+            got.flags != want.flags || got.exposure_s != want.exposure_s || got.gain != want.gain ||
+            ulp_dist(got.fill, want.fill) > 4 || ulp_dist(got.snr, want.snr) > 4) {
+            if (fails < 10) {
+                print_error("case %d: want t%d g%d flags %u fill %.17g snr %.17g got t%d g%d flags %u "
+                            "fill %.17g snr %.17g\n",
+                            n, want.time_index, want.gain_index, want.flags, (double)want.fill,
+                            (double)want.snr, got.time_index, got.gain_index, got.flags,
+                            (double)got.fill, (double)got.snr);
+            }
+            fails++;
+        }
+        if (ulp_dist(got.fill, want.fill) > worst_fill) worst_fill = ulp_dist(got.fill, want.fill);
+        if (ulp_dist(got.snr, want.snr) > worst_snr) worst_snr = ulp_dist(got.snr, want.snr);
+        if (want.flags & OI_FLAG_SATURATED) n_sat++;
+        else if (want.fill <= (gp && gp->fill != 0 ? gp->fill : (oi_real)0.5)) n_goal++;
+        else n_low++;
+        if (want.flags & OI_FLAG_TOO_FAINT) n_faint++;
+        if (want.signal_e == 0) n_dark++;
+    }
+    if (fails) {
+        print_error("%d of 40000 random cases differ from the brute-force search\n", fails);
+        fail();
+    }
+    /* every branch of the rule was exercised */
+    if (n_goal < 10000 || n_low < 400 || n_sat < 400 || n_faint < 1000 || n_dark < 1000 ||
+        n_scan_times < 1000 || n_exact_one < 2000 || n_exact_goal < 2000 || worst_fill > 0 ||
+        worst_snr > 0) {
+        print_error("coverage: goal %d low %d saturated %d too_faint %d dark %d close times %d "
+                    "fill exactly 1 %d, exactly the goal %d; worst ulp fill %ld snr %ld\n",
+                    n_goal, n_low, n_sat, n_faint, n_dark, n_scan_times, n_exact_one, n_exact_goal,
+                    worst_fill, worst_snr);
+        fail();
+    }
+}
+
+/* A positive target rate whose signal rounds to 0 at every time: every SNR
+ * is exactly 0 at every gain although the read noise falls with gain; the
+ * first setting (shortest time, lowest gain) wins the tie, as in the full
+ * search. Synthetic camera: S = flux * 1e19 e-/s, times 1e-30 .. 1e-24 s. */
+static void test_search_zero_signal_ties(void **state)
+{
+    oi_camera c = synth();
+    oi_expose_in in;
+    oi_exposure got, want;
+    (void)state;
+#ifdef OI_SINGLE_PRECISION
+    in = input(1e-44, 0);  /* S ~ 1e-25 e-/s: S t underflows to 0 */
+#else
+    in = input(1e-320, 0); /* S ~ 1e-301 e-/s */
+#endif
+    c.times_s[0] = (oi_real)1e-30;
+    c.times_s[1] = (oi_real)1e-28;
+    c.times_s[2] = (oi_real)1e-26;
+    c.times_s[3] = (oi_real)1e-24;
+    check_int(OI_OK, oi_expose(&c, &in, NULL, &got), "status");
+    reference_expose_bruteforce(&c, &in, NULL, &want);
+    check_int(0, want.time_index, "reference time index");
+    check_int(0, want.gain_index, "reference gain index");
+    check_int(0, got.time_index, "time index");
+    check_int(0, got.gain_index, "gain index");
+    check_rel(0.0, got.snr, 0, "snr");
+    check_int(OI_FLAG_TOO_FAINT, (long)got.flags, "flags");
+}
+
+/* The brightest accepted flux is magnitude OI_MAG_MIN = -30 at the nominal
+ * TSI: 1361 * 10^(0.4 * 3.26) = 27406.787 W/m^2, computed here with pow. */
+static void test_flux_limit(void **state)
+{
+    oi_camera c = synth();
+    oi_expose_in in = input(0, 0);
+    oi_exposure out;
+    double lim = 1361.0 * pow(10.0, 0.4 * (-26.74 - OI_MAG_MIN));
+#ifdef OI_SINGLE_PRECISION
+    const double rel = 1e-6;
+#else
+    const double rel = 1e-13;
+#endif
+    (void)state;
+    in.flux_w_m2 = (oi_real)(lim * (1 - rel));
+    check_int(OI_OK, oi_expose(&c, &in, NULL, &out), "just fainter than magnitude -30");
+    in.flux_w_m2 = (oi_real)(lim * (1 + rel));
+    check_int(OI_ERR_MAGNITUDE, oi_expose(&c, &in, NULL, &out), "just brighter than magnitude -30");
+#ifndef OI_SINGLE_PRECISION
+    /* the library's own flux of magnitude -30 is accepted */
+    check_int(OI_OK, oi_flux_from_magnitude((oi_real)OI_MAG_MIN, NULL, &in.flux_w_m2), "flux of -30");
+    check_int(OI_OK, oi_expose(&c, &in, NULL, &out), "oi_flux_from_magnitude(OI_MAG_MIN)");
+#endif
+}
+
+/* Earth in the field: the flag against gamma - rho < fov/2 in long double
+ * from the same (rounded) inputs, for random observers and boresights and
+ * for boresights placed just inside and just outside the boundary. Only
+ * cases within TOL of the boundary may go either way. */
+#ifdef OI_SINGLE_PRECISION
+#define FOV_TOL 2e-6L
+#else
+#define FOV_TOL 1e-13L
+#endif
+static long double angle_ld(const long double a[3], const long double b[3])
+{
+    long double c[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+                        a[0] * b[1] - a[1] * b[0]};
+    return atan2l(sqrtl(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]),
+                  a[0] * b[0] + a[1] * b[1] + a[2] * b[2]);
+}
+
+static void test_scene_earth_in_fov_boundary(void **state)
+{
+    oi_camera c = synth();
+    oi_scene s;
+    oi_illum il = lit_illum(1e-15);
+    oi_exposure out;
+    int n, k, fails = 0, n_in = 0, n_out = 0, n_near = 0;
+    (void)state;
+    lcg_state = 7ULL;
+    oi_scene_defaults(&s);
+    s.has_observer = 1;
+    set3(s.sun_km, 0, 0, AU);
+    for (n = 0; n < 20000; n++) {
+        double r = RE * log_uniform(1.01, 100.0), d, gam, dir[3], e1[3], e2[3], ob[3], nrm;
+        long double o[3], t[3], bl[3], no[3], g, rho, h, margin;
+        int want, got;
+        /* observer at a random direction, distance r */
+        for (k = 0; k < 3; k++) ob[k] = urand() - 0.5;
+        nrm = sqrt(ob[0] * ob[0] + ob[1] * ob[1] + ob[2] * ob[2]);
+        for (k = 0; k < 3; k++) ob[k] *= r / nrm;
+        c.fov_rad = (oi_real)(urand() < 0.5 ? log_uniform(1e-3, 0.5) : 0.001 + 3.0 * urand());
+        /* boresight at angle gam from the direction to the Earth's centre:
+         * random, or at the boundary asin(R/r) + fov/2 +- a small margin */
+        if (n % 2 == 0) {
+            gam = PI * urand();
+        } else {
+            gam = asin(RE / r) + 0.5 * (double)c.fov_rad +
+                  (urand() < 0.5 ? -1.0 : 1.0) * (double)FOV_TOL * log_uniform(2.0, 1e4);
+            if (gam > PI) gam = PI;
+        }
+        /* e1 = unit towards the Earth's centre, e2 perpendicular */
+        for (k = 0; k < 3; k++) e1[k] = -ob[k] / r;
+        e2[0] = e1[1];
+        e2[1] = -e1[0];
+        e2[2] = 0;
+        nrm = sqrt(e2[0] * e2[0] + e2[1] * e2[1]);
+        if (nrm < 1e-6) {
+            e2[0] = 1;
+            e2[1] = 0;
+            nrm = 1;
+        }
+        for (k = 0; k < 3; k++) e2[k] /= nrm;
+        d = 50.0 + 1000.0 * urand();
+        for (k = 0; k < 3; k++) dir[k] = cos(gam) * e1[k] + sin(gam) * e2[k];
+        set3(s.observer_km, ob[0], ob[1], ob[2]);
+        set3(s.target_km, ob[0] + d * dir[0], ob[1] + d * dir[1], ob[2] + d * dir[2]);
+        if (oi_expose_scene(&c, &s, &il, NULL, NULL, &out) == OI_ERR_BELOW_SURFACE) continue;
+        /* reference from the rounded inputs */
+        for (k = 0; k < 3; k++) {
+            o[k] = (long double)s.observer_km[k];
+            t[k] = (long double)s.target_km[k];
+            bl[k] = t[k] - o[k];
+            no[k] = -o[k];
+        }
+        g = angle_ld(no, bl);
+        rho = asinl((long double)RE / sqrtl(o[0] * o[0] + o[1] * o[1] + o[2] * o[2]));
+        h = 0.5L * (long double)c.fov_rad;
+        margin = g - rho - h;
+        want = margin < 0;
+        got = (out.flags & OI_FLAG_EARTH_IN_FOV) != 0;
+        if (fabsl(margin) < FOV_TOL) {
+            n_near++;
+            continue;
+        }
+        if (want) n_in++; else n_out++;
+        if (want != got) {
+            if (fails < 10)
+                print_error("case %d: gamma - rho - fov/2 = %.3Lg: want %d got %d\n", n, margin, want, got);
+            fails++;
+        }
+    }
+    if (fails || n_in < 3000 || n_out < 3000) {
+        print_error("earth_in_fov: %d wrong, %d inside, %d outside, %d within %.1Lg of the boundary\n",
+                    fails, n_in, n_out, n_near, FOV_TOL);
+        fail();
+    }
+}
+
+/* sun_angle_rad is oi_angle(sun - observer, target - observer), bit for bit. */
+static void test_scene_sun_angle_is_oi_angle(void **state)
+{
+    oi_camera c = synth();
+    oi_scene s;
+    oi_illum il = lit_illum(1e-15);
+    oi_exposure out;
+    oi_real rel[3], b[3];
+    int n, k;
+    (void)state;
+    lcg_state = 99ULL;
+    oi_scene_defaults(&s);
+    s.has_observer = 1;
+    for (n = 0; n < 2000; n++) {
+        for (k = 0; k < 3; k++) {
+            s.sun_km[k] = (oi_real)(AU * (urand() - 0.5));
+            s.observer_km[k] = (oi_real)(3.0 * RE * (urand() - 0.5));
+            s.target_km[k] = (oi_real)(s.observer_km[k] + 2000.0 * (urand() - 0.5));
+        }
+        if (oi_expose_scene(&c, &s, &il, NULL, NULL, &out) != OI_OK) continue;
+        for (k = 0; k < 3; k++) {
+            rel[k] = s.sun_km[k] - s.observer_km[k];
+            b[k] = s.target_km[k] - s.observer_km[k];
+        }
+        if (out.sun_angle_rad != oi_angle(rel, b)) {
+            print_error("case %d: want %.17g got %.17g\n", n, (double)oi_angle(rel, b),
+                        (double)out.sun_angle_rad);
+            fail();
+        }
+    }
+}
+
 #endif /* OI_NO_EXPOSURE */
 
 int main(void)
@@ -748,6 +1260,11 @@ int main(void)
         cmocka_unit_test(test_scene_resolved_target),
         cmocka_unit_test(test_scene_shadow_flags),
         cmocka_unit_test(test_scene_errors),
+        cmocka_unit_test(test_search_matches_bruteforce),
+        cmocka_unit_test(test_search_zero_signal_ties),
+        cmocka_unit_test(test_flux_limit),
+        cmocka_unit_test(test_scene_earth_in_fov_boundary),
+        cmocka_unit_test(test_scene_sun_angle_is_oi_angle),
 #endif
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
