@@ -535,23 +535,34 @@ int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
      * is positive; that sign is computed from unit vectors (cos and sin of
      * gamma as dot and cross products) and the sum formulas, with no atan2
      * or asin (docs/camera.md, "Cost of the search": it decides as the angle
-     * comparison except within a few ulp of the boundary). */
-    half_fov = OI_R(0.5) * camera->fov_rad;
+     * comparison except within a few ulp of the boundary). Two tests that
+     * do not need h come first (h = 0 and h = pi/2 in the same formula). */
     sin_rho = re / r_obs;
     cos_rho = OI_SQRT((one - sin_rho) * (one + sin_rho));
-    sin_h = OI_SIN(half_fov);
-    cos_h = OI_COS(half_fov);
-    sin_th = sin_rho * cos_h + cos_rho * sin_h;
-    cos_th = cos_rho * cos_h - sin_rho * sin_h;
     uo[0] = scene->observer_km[0] / r_obs;
     uo[1] = scene->observer_km[1] / r_obs;
     uo[2] = scene->observer_km[2] / r_obs;
     cos_g = -oi__dot(uo, bh);
     oi__cross(uo, bh, cr);
     sin_g = OI_SQRT(oi__dot(cr, cr)); /* unit vectors: no overflow */
-    /* b overflowed (positions near the largest oi_real): gamma was taken as
-     * 0 before (oi_angle of a non-finite vector), so the flag is raised */
-    if (sin_th * cos_g - cos_th * sin_g > 0 || !oi__finite3(b)) in.flags |= OI_FLAG_EARTH_IN_FOV;
+    if (!oi__finite3(b)) {
+        /* b overflowed (positions near the largest oi_real): gamma was
+         * taken as 0 before (oi_angle of a non-finite vector): flag */
+        in.flags |= OI_FLAG_EARTH_IN_FOV;
+    } else if (sin_rho * cos_g - cos_rho * sin_g > 0) {
+        /* sin(rho - gamma) > 0: the boresight is on the disc, any h */
+        in.flags |= OI_FLAG_EARTH_IN_FOV;
+    } else if (cos_rho * cos_g + sin_rho * sin_g > 0) {
+        /* cos(gamma - rho) > 0: gamma - rho < pi/2, so h (<= pi/2) decides;
+         * otherwise the disc is at least pi/2 >= h away: no flag, and no
+         * sine or cosine of h is needed */
+        half_fov = OI_R(0.5) * camera->fov_rad;
+        sin_h = OI_SIN(half_fov);
+        cos_h = OI_COS(half_fov);
+        sin_th = sin_rho * cos_h + cos_rho * sin_h;
+        cos_th = cos_rho * cos_h - sin_rho * sin_h;
+        if (sin_th * cos_g - cos_th * sin_g > 0) in.flags |= OI_FLAG_EARTH_IN_FOV;
+    }
 
     c = (r_obs - re) * (r_obs + re); /* |o|^2 - R^2 > 0 */
     sc = OI_SQRT(c);
