@@ -80,9 +80,18 @@ static oi_real alt_sum(oi_real r[4], int j, int n_alt, int surf, const oi_real w
     return wb[0] * r[0] + wb[1] * r[1] + wb[2] * r[2] + wb[3] * r[3];
 }
 
+/* Catmull-Rom along theta at an interior cell (no ghost column): p points
+ * at column i, 1 <= i <= n - 3. The same sums as seg_row. */
+static oi_real row_interior(const float *p, const oi_real wa[4])
+{
+    return wa[0] * (oi_real)p[-1] + wa[1] * (oi_real)p[0] + wa[2] * (oi_real)p[1] +
+           wa[3] * (oi_real)p[2];
+}
+
 /* Bicubic Catmull-Rom of both quantities (q and psi) in one segment
  * (columns off..off+n-1) at fractional indices fv (theta) and fw (altitude):
- * one stencil (cells, weights, ghost flags) serves both tables. */
+ * one stencil (cells, weights, ghost flags, rows inside the table) serves
+ * both tables. */
 static void seg_interp(const es_grid *g, int off, int n, oi_real fv, oi_real fw,
                        oi_real *vq, oi_real *vp)
 {
@@ -91,13 +100,33 @@ static void seg_interp(const es_grid *g, int off, int n, oi_real fv, oi_real fw,
     const int j = cell_of(fw, g->n_alt, &fb);
     const int lo = i == 0, hi = i + 2 >= n;
     const size_t ld = (size_t)g->n_lit + (size_t)g->n_term;
+    /* rows j - 1 + k for k in [k_lo, k_hi): those inside the table */
+    const int k_lo = j == 0 ? 1 : 0, k_hi = j + 2 >= g->n_alt ? 3 : 4;
     int k;
-    cr_weights(fa, wa);
     cr_weights(fb, wb);
-    for (k = 0; k < 4; k++) {
-        const int jj = j - 1 + k;
-        if (jj >= 0 && jj < g->n_alt) {
-            const size_t c = (size_t)jj * ld + (size_t)off + (size_t)i;
+    if (n == 2) {
+        /* two columns, both ghosts linear: the theta spline is the straight
+         * line through them (the lit segment: n_lit = 2) */
+        for (k = k_lo; k < k_hi; k++) {
+            const size_t c = (size_t)(j - 1 + k) * ld + (size_t)off;
+            const oi_real q0 = (oi_real)g->q[c], p0 = (oi_real)g->psi[c];
+            rq[k] = q0 + fa * ((oi_real)g->q[c + 1] - q0);
+            rp[k] = p0 + fa * ((oi_real)g->psi[c + 1] - p0);
+        }
+        *vq = alt_sum(rq, j, g->n_alt, g->surf, wb);
+        *vp = alt_sum(rp, j, g->n_alt, g->surf, wb);
+        return;
+    }
+    cr_weights(fa, wa);
+    if (!lo && !hi) {
+        for (k = k_lo; k < k_hi; k++) {
+            const size_t c = (size_t)(j - 1 + k) * ld + (size_t)off + (size_t)i;
+            rq[k] = row_interior(g->q + c, wa);
+            rp[k] = row_interior(g->psi + c, wa);
+        }
+    } else {
+        for (k = k_lo; k < k_hi; k++) {
+            const size_t c = (size_t)(j - 1 + k) * ld + (size_t)off + (size_t)i;
             rq[k] = seg_row(g->q + c, lo, hi, wa);
             rp[k] = seg_row(g->psi + c, lo, hi, wa);
         }
