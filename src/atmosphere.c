@@ -300,10 +300,12 @@ int oi__atm_fraction(const oi_real sun_km[3], const oi_real point_km[3], const o
         *fraction_atm = (oi_real)0;
         return OI_OK;
     }
-    i = (int)OI_FLOOR(iu);
+    /* iu, it >= 0 up to rounding (z >= Z_MIN, rho >= rho_lo): truncation is
+     * the floor wherever it matters, and the clamps catch the rest */
+    i = (int)iu;
     if (i < 0) i = 0;
     if (i > OI_ATM_NZ - 2) i = OI_ATM_NZ - 2;
-    j = (int)OI_FLOOR(it);
+    j = (int)it;
     if (j < 0) j = 0;
     if (j > OI_ATM_NT - 2) j = OI_ATM_NT - 2;
     fu = iu - (oi_real)i;
@@ -318,16 +320,17 @@ int oi__atm_fraction(const oi_real sun_km[3], const oi_real point_km[3], const o
          * normal of the axis: dir ~ dir_sun + tan(psi) e_out, normalised.
          * |psi| <= 0.012 rad (the codes' range): the series of tan to psi^7
          * is exact to rounding (next term 62/2835 psi^9 < 1e-18). */
-        oi_real t, p2, n;
+        oi_real t, p2, n, u;
         psi = ATM_R(OI_ATM_PSI_MIN_RAD) +
               ATM_R(OI_ATM_PSI_SCALE_RAD) * bilinear(oi__atm_psi, i, j, fu, ft);
         p2 = psi * psi;
         t = psi * ((oi_real)1 +
                    p2 * (OI_R(1.0) / OI_R(3.0) +
                          p2 * (OI_R(2.0) / OI_R(15.0) + p2 * (OI_R(17.0) / OI_R(315.0)))));
-        for (k = 0; k < 3; ++k) dir[k] += t * (point_km[k] + z * s_hat[k]) / rho;
-        n = OI_SQRT(oi__dot(dir, dir));
-        for (k = 0; k < 3; ++k) dir[k] /= n;
+        u = t / rho;
+        for (k = 0; k < 3; ++k) dir[k] += u * (point_km[k] + z * s_hat[k]);
+        n = (oi_real)1 / OI_SQRT(oi__dot(dir, dir));
+        for (k = 0; k < 3; ++k) dir[k] *= n;
     }
     return OI_OK;
 }
