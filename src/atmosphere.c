@@ -18,8 +18,8 @@
 #define ATM_HA ATM_R(OI_ATM_H_A_KM)
 
 /* Derived constants of the table's coordinates, written out because C has no
- * constant exp/log (tests/c/test_atmosphere.c recomputes each from the
- * table's macros and fails if the table moves them):
+ * constant exp/log (tests/c/test_atmosphere.c, test_derived_constants, checks
+ * the first two against the table's macros and fails if a re-bake moves them):
  *   ATM_E_MID = exp(-(OI_ATM_V_MID_KM - OI_ATM_H_C_KM) / OI_ATM_H_A_KM)
  *   ATM_C_IU  = (OI_ATM_NZ - 1) / ln(OI_ATM_Z_MAX_KM / OI_ATM_Z_MIN_KM)
  *   ATM_LN10  = ln 10 */
@@ -251,13 +251,13 @@ int oi__atm_coords(oi_real z, oi_real rho, oi_real d, oi_real r_e, oi_real r_s, 
  *     bisection (solve_x): the indices agree to ~1e-12 cells (double).
  *  4. The table is baked for the default Earth and Sun radii; other model
  *     radii move the window with them (rc, a) but not the atmosphere.
- *  5. Cost (docs/atmosphere.md, "Cost"): the day side (z <= 0) and points
- *     beyond rho_hi cost two dot products, a cross product and one square
- *     root; below the window (umbra) no transcendental; in the window one
- *     log and one exp, plus two ray-altitude solves (a log and two or three
- *     exps each) in the window's lower segment. dir is an in/out argument so
- *     that the Sun's direction, which oi_illuminate forms anyway, is not
- *     formed again.
+ *  5. Cost (docs/atmosphere.md, "Cost"): the day side (point . sun >= 0)
+ *     costs one dot product; points beyond rho_hi a normalisation, a dot
+ *     and a cross product; below the window (umbra) a few multiplications
+ *     more, no transcendental; in the window one log and one exp, plus in
+ *     its lower segment two ray-altitude solves (together ~1.6 logs and
+ *     ~2.7 exps). dir is an in/out argument so that the Sun's direction,
+ *     which oi_illuminate forms anyway, is not formed again.
  * References:
  *   Link, F. 1969, Eclipse Phenomena in Astronomy, Springer (refraction and
  *   extinction in the Earth's shadow).
