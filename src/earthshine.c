@@ -409,9 +409,7 @@ int oi__earthshine(oi_real theta, oi_real h_km, const oi_model *resolved, oi_rea
         if (d >= ub * (OI_R(1.0) + BOUND_MARGIN) + BOUND_MARGIN) return OI_OK;
     }
 
-    /* w = acos(x) = atan2(s, R) = atan(s / R) (R > 0): one rounding more
-     * than atan2, a quarter to a half of its cost */
-    w = OI_ATAN(z);
+    w = OI_ATAN2(s, R); /* = acos(x), no cancellation at low altitude */
 
     if (grid != NULL) {
         const oi_real cells = (oi_real)(grid->n_alt - 1);
@@ -428,9 +426,7 @@ int oi__earthshine(oi_real theta, oi_real h_km, const oi_model *resolved, oi_rea
                 fv = theta / tb * (oi_real)(grid->n_lit - 1);
                 seg_interp(grid, 0, grid->n_lit, fv, fw, &q, &p);
                 q *= ct;
-                /* psi = atan2(G sin, cos) = atan(G tan) for cos > 0; cos <= 0
-                 * (float theta rounded up to pi/2) gives q <= 0: phi = psi = 0 */
-                p = ct > (oi_real)0 ? OI_ATAN(p * w * st / ct) : (oi_real)0;
+                p = OI_ATAN2(p * w * st, ct);
             } else {
                 /* terminator segment: stored q / w and psi */
                 oi_real mm = (theta - HALF_PI_R) / w;
