@@ -117,8 +117,9 @@ int oi__model_resolve(const oi_model *in, oi_model *out);
  * validated again. When light_dir is not NULL and the atmosphere is compiled
  * in and enabled, it also returns the unit vector from the point towards
  * where the sunlight comes from on average (refracted light in the shadow;
- * the Sun's direction elsewhere). light_dir is left untouched otherwise, so
- * the caller sets it to the Sun's direction first.
+ * the Sun's direction elsewhere). light_dir is left untouched wherever the
+ * light comes straight from the Sun, and when the atmosphere is compiled out
+ * or disabled, so the caller sets it to the Sun's direction first.
  */
 int oi__sun_shadow(const oi_real sun_km[3], const oi_real point_km[3], const oi_model *resolved,
                    oi_shadow *out, oi_real light_dir[3]);
@@ -145,9 +146,11 @@ oi_real oi__magnitude_v(oi_real flux_w_m2, oi_real tsi_w_m2);
  * Fraction of unobstructed sunlight reaching point_km with the atmosphere's
  * refraction and extinction (src/atmosphere.c, baked table), given the
  * geometric fractions frac (uniform disc) and frac_ld (limb-darkened) of the
- * same geometry and a resolved model. dir (may be NULL): unit vector towards
- * where the light comes from. Returns OI_OK or OI_WARN_TABLE_RANGE (geometric
- * fraction returned).
+ * same geometry and a resolved model. dir (may be NULL, in/out): on entry the
+ * unit vector from the point to the Sun; replaced by the unit vector towards
+ * where the light comes from only where refracted light arrives (inside the
+ * table's window with a nonzero fraction), untouched elsewhere. Returns OI_OK
+ * or OI_WARN_TABLE_RANGE (geometric fraction returned).
  */
 int oi__atm_fraction(const oi_real sun_km[3], const oi_real point_km[3], const oi_model *m,
                      oi_real frac, oi_real frac_ld, oi_real *fraction_atm, oi_real dir[3]);
