@@ -53,44 +53,43 @@ static oi_real sin_0_pi(oi_real x)
 }
 
 /*
- * Angle of a spherical triangle with sides a, b, c (radians, triangle
- * inequalities assumed; rounding beyond them is clamped) opposite the side a,
- * by the half-angle formula (l'Huilier's family):
- *   tan(A/2) = sqrt( sin(s-b) sin(s-c) / (sin s sin(s-a)) ),  s = (a+b+c)/2.
- * With comp != 0 it returns pi - A instead, from the reciprocal ratio, so
- * that neither A nor pi - A is formed by a cancelling subtraction.
+ * The sines of the spherical triangle with sides a, b, c (radians, triangle
+ * inequalities assumed; rounding beyond them is clamped) used by the
+ * half-angle formulas (l'Huilier's family), s = (a + b + c)/2:
+ *   hs[0] = sin s, hs[1] = sin(s - a), hs[2] = sin(s - b), hs[3] = sin(s - c),
+ * the differences formed in Kahan's order (no cancellation).
  */
-static void tri_angle2(oi_real a, oi_real b, oi_real c, oi_real *ang, oi_real *comp);
-
-static oi_real tri_angle(oi_real a, oi_real b, oi_real c, int comp)
+static void half_sines(oi_real a, oi_real b, oi_real c, oi_real hs[4])
 {
-    oi_real x, y;
-    tri_angle2(a, b, c, &x, &y);
-    return comp ? y : x;
+    int i;
+    hs[0] = sin_0_pi(OI_R(0.5) * (a + (b + c)));
+    hs[1] = OI_SIN(OI_R(0.5) * side_excess(a, b, c));
+    hs[2] = OI_SIN(OI_R(0.5) * side_excess(b, a, c));
+    hs[3] = OI_SIN(OI_R(0.5) * side_excess(c, a, b));
+    for (i = 0; i < 4; ++i) hs[i] = hs[i] > (oi_real)0 ? hs[i] : (oi_real)0;
 }
 
-/* Both A and pi - A (see tri_angle) from one set of sines. */
-static void tri_angle2(oi_real a, oi_real b, oi_real c, oi_real *ang, oi_real *comp)
+/*
+ * The angle opposite the side of index i (1: a, 2: b, 3: c) from
+ *   tan(A/2) = sqrt( sin(s-b) sin(s-c) / (sin s sin(s-a)) ),
+ * or with comp != 0 pi - A from the reciprocal ratio, so that neither A nor
+ * pi - A is formed by a cancelling subtraction. A point-like triangle gives
+ * A = 0.
+ */
+static oi_real half_angle(const oi_real hs[4], int i, int comp)
 {
-    oi_real ss = sin_0_pi(OI_R(0.5) * (a + (b + c)));
-    oi_real sa = OI_SIN(OI_R(0.5) * side_excess(a, b, c));
-    oi_real sb = OI_SIN(OI_R(0.5) * side_excess(b, a, c));
-    oi_real sc = OI_SIN(OI_R(0.5) * side_excess(c, a, b));
-    oi_real num, den;
-    ss = ss > (oi_real)0 ? ss : (oi_real)0;
-    sa = sa > (oi_real)0 ? sa : (oi_real)0;
-    sb = sb > (oi_real)0 ? sb : (oi_real)0;
-    sc = sc > (oi_real)0 ? sc : (oi_real)0;
-    num = OI_SQRT(sb) * OI_SQRT(sc);
-    den = OI_SQRT(ss) * OI_SQRT(sa);
-    if (num == (oi_real)0 && den == (oi_real)0) {
-        /* degenerate (a point-like triangle): A = 0 */
-        *ang = (oi_real)0;
-        *comp = OI_PI_R;
-        return;
-    }
-    *ang = (oi_real)2 * OI_ATAN2(num, den);
-    *comp = (oi_real)2 * OI_ATAN2(den, num);
+    oi_real num = OI_SQRT(hs[i == 1 ? 2 : 1]) * OI_SQRT(hs[i == 3 ? 2 : 3]);
+    oi_real den = OI_SQRT(hs[0]) * OI_SQRT(hs[i]);
+    if (num == (oi_real)0 && den == (oi_real)0) return comp ? OI_PI_R : (oi_real)0;
+    return (oi_real)2 * (comp ? OI_ATAN2(den, num) : OI_ATAN2(num, den));
+}
+
+/* The angle opposite a (comp != 0: pi minus it); see half_angle. */
+static oi_real tri_angle(oi_real a, oi_real b, oi_real c, int comp)
+{
+    oi_real hs[4];
+    half_sines(a, b, c, hs);
+    return half_angle(hs, 1, comp);
 }
 
 /*
@@ -130,7 +129,7 @@ static oi_real cap_segment(oi_real r, oi_real alpha)
 /* Overlap of two caps with r1, r2 in [0, pi/2] and d in [0, pi]. */
 static oi_real overlap_small(oi_real r1, oi_real r2, oi_real d)
 {
-    oi_real a1, a2, lens, amin;
+    oi_real a1, a2, lens, amin, hs[4];
     oi_real rbig = r1 > r2 ? r1 : r2, rsmall = r1 > r2 ? r2 : r1;
     amin = (oi_real)4 * OI_PI_R * sin_half_sq(rsmall);
     /* classification by differences, exact near the tangencies (Sterbenz),
@@ -139,8 +138,9 @@ static oi_real overlap_small(oi_real r1, oi_real r2, oi_real d)
     if (rbig - d >= rsmall) return amin;                     /* nested */
     /* triangle (C1, C2, P), P a crossing point of the two boundaries:
      * sides C1P = r1, C2P = r2, C1C2 = d; alpha1 at C1 is opposite r2. */
-    a1 = tri_angle(r2, r1, d, 0);
-    a2 = tri_angle(r1, r2, d, 0);
+    half_sines(r2, r1, d, hs);
+    a1 = half_angle(hs, 1, 0);
+    a2 = half_angle(hs, 2, 0);
     if (rsmall >= (oi_real)1) {
         /* two large caps: Gauss-Bonnet on the lens (two arcs of geodesic
          * curvature cot r and length 2 alpha sin r, two corners of exterior
@@ -149,7 +149,7 @@ static oi_real overlap_small(oi_real r1, oi_real r2, oi_real d)
          * Used here because the chord decomposition degenerates when both
          * boundaries approach great circles (P and Q nearly antipodal); the
          * terms cancel at most to a few epsilon times the caps' area. */
-        oi_real pg = tri_angle(d, r1, r2, 1); /* pi - gamma */
+        oi_real pg = half_angle(hs, 3, 1); /* pi - gamma */
         lens = (oi_real)2 * (pg - a1 * OI_COS(r1) - a2 * OI_COS(r2));
     } else {
         lens = cap_segment(r1, a1) + cap_segment(r2, a2);
@@ -244,24 +244,7 @@ oi_real oi_cap_overlap(oi_real r1, oi_real r2, oi_real d)
     return clamp(a, (oi_real)0, amin);
 }
 
-/* ---------------------------------------------------------------- limb darkening */
-
-/*
- * Solar limb darkening I(mu)/I(1) = sum_k A_k mu^k, the fifth-degree
- * polynomial of Neckel & Labs (1994, Sol. Phys. 153, 91; their coefficient table) at their
- * continuum wavelength 559.95 nm, the one nearest the V band's 550 nm. The
- * coefficients sum to 1 (I(1) = 1); I(0) = 0.269.
- */
-static oi_real limb_intensity(oi_real mu)
-{
-    oi_real p = OI_R(0.37295);
-    p = p * mu - OI_R(1.31350);
-    p = p * mu + OI_R(1.91271);
-    p = p * mu - OI_R(1.58427);
-    p = p * mu + OI_R(1.34319);
-    p = p * mu + OI_R(0.26892);
-    return p;
-}
+/* ---------------------------------------------------------------- quadrature */
 
 /* 16-point Gauss-Legendre rule on [0, 1]: the nodes x below and 1 - x
  * share the weights (computed with mpmath at 40 digits by Newton iteration
@@ -276,16 +259,6 @@ static const oi_real gl_node[GL_HALF][2] = {
     {OI_R(0.270991611171386306829), OI_R(0.0845782596975012690947)},
     {OI_R(0.359198224610370543385), OI_R(0.0913017075224617944334)},
     {OI_R(0.452493745081181279907), OI_R(0.0947253052275342481427)},
-};
-
-/* 8-point Gauss-Legendre rule on [0, 1], same layout (--gauss 8): for the
- * limb-darkened rings. */
-#define GL8_HALF 4
-static const oi_real gl8_node[GL8_HALF][2] = {
-    {OI_R(0.0198550717512318841582), OI_R(0.0506142681451881295763)},
-    {OI_R(0.101666761293186630204), OI_R(0.111190517226687235272)},
-    {OI_R(0.237233795041835507091), OI_R(0.156853322938943643669)},
-    {OI_R(0.40828267875217509753), OI_R(0.181341891689180991483)},
 };
 
 /* J(alpha) = int_0^alpha sin^2 u / (1 - k2 sin^2 u) du, k2 = sin^2 r <= 1,
@@ -305,177 +278,236 @@ static oi_real gauss_j(oi_real alpha, oi_real k2)
     return alpha * sum;
 }
 
+#ifndef OI_NO_LIMB_DARKENING
+/* ---------------------------------------------------------------- limb darkening */
+
 /*
- * Flux of the disc between mu_a and mu_b (mu_a < mu_b), in units of
- * sin^2(r_s): with x = sin(rho)/sin(r_s) the normalised radius, mu =
- * sqrt(1 - x^2) and sin(rho) drho = sin^2(r_s) mu dmu / sqrt(cos^2 r_s +
- * sin^2 r_s mu^2): a smooth integrand in mu, so Gauss-Legendre converges
- * fast (the limb's square root is absorbed by the change of variable).
+ * Solar limb darkening I(mu)/I(1) = sum_i A_i mu^i, the fifth-degree
+ * polynomial of Neckel & Labs (1994, Sol. Phys. 153, 91; their coefficient
+ * table) at their continuum wavelength 559.95 nm, the one nearest the V
+ * band's 550 nm: A = 0.26892, 1.34319, -1.58427, 1.91271, -1.31350, 0.37295
+ * (sum 1, I(0) = 0.269).
+ *
+ * The flux of the disc within the angular radius rho of its centre is, with
+ * mu(rho) = sqrt(1 - sin^2 rho / sin^2 r_s) and k = tan^2 r_s,
+ *   F(rho) = int_0^rho I(mu(r)) sin r dr
+ *          = (sin^2 r_s / cos r_s) int_mu^1 I(m) m (1 + k m^2)^(-1/2) dm
+ *          = (sin^2 r_s / cos r_s) (P(1) - P(mu)),
+ *   P(m) = m^2 sum_j (k m^2)^j sum_i c_j A_i m^i / (i + 2j + 2),
+ * c_j = binomial(-1/2, j), the binomial series of (1 + k m^2)^(-1/2). The
+ * table holds c_j A_i / (i + 2j + 2) (exact rationals, 21 digits).
  */
-static oi_real ring_flux(oi_real mu_a, oi_real mu_b, oi_real c2, oi_real s2)
+#define LD_JMAX 5
+static const oi_real ld_coef[LD_JMAX + 1][6] = {
+    {OI_R(0.13446), OI_R(0.44773), OI_R(-0.3960675), OI_R(0.382542),
+     OI_R(-0.218916666666666666667), OI_R(0.0532785714285714285714)},
+    {OI_R(-0.033615), OI_R(-0.134319), OI_R(0.1320225), OI_R(-0.136622142857142857143),
+     OI_R(0.08209375), OI_R(-0.0207194444444444444444)},
+    {OI_R(0.0168075), OI_R(0.0719566071428571428571), OI_R(-0.07426265625), OI_R(0.07969625),
+     OI_R(-0.04925625), OI_R(0.0127142045454545454545)},
+    {OI_R(-0.0105046875), OI_R(-0.0466385416666666666667), OI_R(0.0495084375),
+     OI_R(-0.0543383522727272727273), OI_R(0.0342057291666666666667),
+     OI_R(-0.00896514423076923076923)},
+    {OI_R(0.00735328125), OI_R(0.0333889559659090909091), OI_R(-0.03609990234375),
+     OI_R(0.0402312800480769230769), OI_R(-0.025654296875), OI_R(0.00679856770833333333333)},
+    {OI_R(-0.0055149609375), OI_R(-0.0254269741586538461538), OI_R(0.02784849609375),
+     OI_R(-0.0313803984375), OI_R(0.0202027587890625), OI_R(-0.00539886259191176470588)},
+};
+
+/* 12-point Gauss-Legendre rule on [0, 1] (nodes x < 1/2; 1 - x shares the
+ * weight), with sin(pi x / 2) and cos(pi x / 2) for the undivided panel
+ * [0, pi/2] (mpmath, 40 digits, Newton iteration on P_12). */
+#define LD_HALF 6
+static const oi_real ld_node[LD_HALF][4] = {
+    {OI_R(0.00921968287664037465473), OI_R(0.0235876681932559135973),
+     OI_R(0.0144817377622976506668), OI_R(0.999895134137267437794)},
+    {OI_R(0.0479413718147625716608), OI_R(0.0534696629976592154801),
+     OI_R(0.0752349739158396925686), OI_R(0.997165833098929899891)},
+    {OI_R(0.115048662902847656482), OI_R(0.0800391642716731131673),
+     OI_R(0.179735943801670273069), OI_R(0.983714892896169802289)},
+    {OI_R(0.206341022856691276352), OI_R(0.101583713361532960875),
+     OI_R(0.318474464998523324309), OI_R(0.947931440107302455328)},
+    {OI_R(0.316084250500909903124), OI_R(0.11674626826917740438),
+     OI_R(0.476354568549496667639), OI_R(0.879253276946991469236)},
+    {OI_R(0.437383295744265542264), OI_R(0.1245735229067013925),
+     OI_R(0.634251566298178229689), OI_R(0.773126736472298974688)},
+};
+
+#ifdef OI_SINGLE_PRECISION
+#define LD_EPS OI_R(6e-8)
+#else
+#define LD_EPS OI_R(1.1e-16)
+#endif
+/* limb darkening computed for 1e-15 < r_s <= LD_RS_MAX (docs/shadow.md) */
+#define LD_RS_MAX OI_R(0.5)
+#define LD_RS_MIN OI_R(1e-15)
+
+/* P(m) from m and m2 = m^2 (formed without the rounding of m), nj + 1
+ * terms of the series. */
+static oi_real ld_poly(oi_real m, oi_real m2, oi_real k, int nj)
 {
-    oi_real h = mu_b - mu_a, sum = (oi_real)0;
+    oi_real acc = (oi_real)0, x = k * m2;
     int i, j;
-    if (!(h > (oi_real)0)) return (oi_real)0;
-    /* a degree-6 polynomial times (c2 + s2 mu^2)^(-1/2), s2 / c2 < 1e-3 in
-     * practice: the 8-point rule (exact to degree 15) suffices */
-    for (i = 0; i < GL8_HALF; ++i) {
+    for (j = nj; j >= 0; --j) {
+        oi_real t = ld_coef[j][5];
+        for (i = 4; i >= 0; --i) t = t * m + ld_coef[j][i];
+        acc = acc * x + t;
+    }
+    return acc * m2;
+}
+
+/* The geometry of the Earth's limb arc inside the Sun's disc (see
+ * fraction_limb_darkened), fixed for one call. */
+typedef struct {
+    oi_real hb;    /* sin^2(b/2), b = sep - r_e: hav of the arc's nearest distance */
+    oi_real hrs1;  /* 1 - sin^2(r_s/2) */
+    oi_real c4;    /* 4 / sin^2 r_s */
+    oi_real k;     /* tan^2 r_s */
+    oi_real q;     /* sigma^2 sin sep sin r_e (sigma = sin(psi0/2)) */
+    oi_real e;     /* annular: hav(r_s) - hav(sep + r_e) > 0; else 0 */
+    oi_real oms;   /* 1 - sigma^2 = cos^2(psi0/2); 0 when annular */
+    oi_real n0;    /* 2 sigma n / sin^2 r_s = n0 - n1 sin^2(theta) */
+    oi_real n1;
+    oi_real p1;    /* P(1) in the centre form, 0 in the deficit form */
+    int nj;        /* series terms beyond the first */
+} ld_geom;
+
+/*
+ * The integrand at theta = pi/2 - phi, given sph = sin phi = cos theta and
+ * cph = cos phi = sin theta (so that the end theta = pi/2, where the arc
+ * meets the Sun's limb, is resolved without cancellation):
+ *   [P(1) - P(mu)] or P(mu), times sin^2 r_s / sin^2 rho, times
+ *   n / sin^2 r_s (n = dt/dpsi sin^2 rho), times dpsi/dtheta.
+ * sin^2(psi/2) = sigma^2 sin^2 theta; the haversine formula gives
+ * hav(rho) = hav(b) + sin sep sin r_e sin^2(psi/2), and
+ * hav(r_s) - hav(rho) = q cos^2 theta + e without cancellation, whence
+ * mu^2 = 4 (hav(r_s) - hav(rho)) (1 - hav(r_s) - hav(rho)) / sin^2 r_s and
+ * 1 - mu^2 = sin^2 rho / sin^2 r_s = 4 hav(rho) (1 - hav(rho)) / sin^2 r_s.
+ */
+static oi_real ld_node_value(const ld_geom *g, oi_real sph, oi_real cph)
+{
+    oi_real st2 = cph * cph, ct2 = sph * sph;
+    oi_real hr = g->hb + g->q * st2;
+    oi_real m2 = clamp(g->c4 * (g->q * ct2 + g->e) * (g->hrs1 - hr), (oi_real)0, (oi_real)1);
+    oi_real den = g->c4 * hr * ((oi_real)1 - hr) * OI_SQRT(ct2 + g->oms * st2);
+    oi_real p = ld_poly(OI_SQRT(m2), m2, g->k, g->nj);
+    if (g->p1 > (oi_real)0) p = g->p1 - p;
+    if (!(den > (oi_real)0)) return (oi_real)0;
+    return p * (g->n0 - g->n1 * st2) * sph / den;
+}
+
+/* The 12-point rule on phi in [lo, hi] (a graded panel). */
+static oi_real ld_panel(const ld_geom *g, oi_real lo, oi_real hi)
+{
+    oi_real h = hi - lo, sum = (oi_real)0;
+    int i, j;
+    for (i = 0; i < LD_HALF; ++i) {
         for (j = 0; j < 2; ++j) {
-            oi_real x = j ? (oi_real)1 - gl8_node[i][0] : gl8_node[i][0];
-            oi_real mu = mu_a + h * x;
-            sum += gl8_node[i][1] * limb_intensity(mu) * mu / OI_SQRT(c2 + s2 * mu * mu);
+            oi_real ph = lo + h * (j ? (oi_real)1 - ld_node[i][0] : ld_node[i][0]);
+            sum += ld_node[i][1] * ld_node_value(g, OI_SIN(ph), OI_COS(ph));
         }
     }
-    return h * sum;
-}
-
-/* mu at the angular distance rho <= r_s from the disc centre:
- * sqrt(1 - sin^2 rho / sin^2 r_s), formed from sin r_s - sin rho =
- * 2 cos((r_s + rho)/2) sin((r_s - rho)/2) (no cancellation at the limb). */
-static oi_real mu_at(oi_real rho, oi_real rs, oi_real sin_rs)
-{
-    oi_real dm = (oi_real)2 * OI_COS(OI_R(0.5) * (rs + rho)) * OI_SIN(OI_R(0.5) * (rs - rho));
-    oi_real dp = sin_rs + OI_SIN(rho);
-    oi_real q = dm * dp;
-    if (!(q > (oi_real)0)) return (oi_real)0;
-    q = OI_SQRT(q) / sin_rs;
-    return q < (oi_real)1 ? q : (oi_real)1;
+    return sum * h;
 }
 
 /*
- * Visible and hidden flux of the rings rho in [b1, be] of the limb-darkened
- * solar disc (radius rs), each ring of radius rho being hidden over the arc
- * 2 phi0 where phi0 is the angle at the Sun's centre S in the triangle
- * (S, Earth centre E, boundary point X) with sides SX = rho, SE = sep,
- * EX = re. The change of variable rho = b1 + (be - b1) sin^2(theta) makes the
- * square-root behaviour at both ends (partial rings start and stop; the
- * limb) smooth in theta. This adds the panel theta in [ta, tb] (8 nodes).
- * Units as ring_flux.
+ * Visible fraction of the limb-darkened solar disc (radius rs) when the
+ * Earth's disc (radius re) is sep away: in the penumbra, tri = the sines of
+ * the triangle (rs, re, sep) from half_sines and pa_s = pi - a_s, a_s the
+ * angle at the Sun's centre between the Earth's centre and a crossing point
+ * of the limbs; annular (the Earth's disc inside the Sun's), tri = NULL.
+ *
+ * Green's theorem in polar coordinates (rho, t) about the Sun's centre: the
+ * flux over a region is the line integral of F(rho) dt around it. The
+ * hidden region is bounded by the Sun's limb inside the Earth's disc (F(r_s)
+ * times its angle 2 a_s) and the Earth's limb inside the Sun's disc,
+ * parametrised by the angle psi at the Earth's centre, |psi| <= psi0, with
+ *   dt/dpsi = sin r_e (sin(sep - r_e) - 2 sin sep cos r_e sin^2(psi/2)) / sin^2 rho
+ * (differentiating tan t = N/D, N^2 + D^2 = sin^2 rho). Hence, by symmetry,
+ *   visible = 2 (pi - a_s) F(r_s) + 2 K1,  K1 = int_0^psi0 F(rho) dt/dpsi dpsi
+ * ("centre" form: F / sin^2 rho is smooth even where the arc passes the
+ * Sun's centre), or, with K2 = int_0^psi0 (F(r_s) - F(rho)) dt/dpsi dpsi,
+ *   hidden = 2 K2 (sep > r_e),  visible = -2 K2 (sep < r_e)
+ * ("deficit" form: the small part directly, no cancellation near the
+ * tangencies; used when |sep - r_e| >= 7/8 r_s, where 1/sin^2 rho has no
+ * nearby pole). The substitution sin(psi/2) = sigma sin(theta),
+ * sigma = sin(psi0/2), maps psi0 to theta = pi/2 and turns the square root
+ * of the limb, mu ~ sqrt(psi0 - psi), and its mirror at -psi0 into a
+ * smooth cos(theta): one 12-point panel. The Jacobian
+ * 2 sigma cos(theta) / sqrt(1 - sigma^2 sin^2 theta) has a branch point at a
+ * distance atanh(cos(psi0/2)) from theta = pi/2, close when the Earth's
+ * disc is nearly internally tangent to the Sun's (beyond the umbra's tip);
+ * there panels are graded geometrically towards pi/2 until the last is
+ * narrower than half that distance. Annular: psi0 = pi, sigma = 1, the
+ * Jacobian is 2, and the singularity of mu sits at a distance
+ * asinh(sqrt(e / (sin sep sin r_e))) beyond pi/2, graded the same way.
  */
-static void partial_panel(oi_real ta, oi_real tb, oi_real b1, oi_real w, int be_is_limb,
-                          oi_real rs, oi_real re, oi_real sep, oi_real sin_rs, oi_real *vis,
-                          oi_real *hid)
+static oi_real fraction_limb_darkened(oi_real rs, oi_real re, oi_real sep, oi_real pa_s,
+                                      const oi_real *tri)
 {
-    oi_real sv = (oi_real)0, sh = (oi_real)0, s2 = sqr(sin_rs), h = tb - ta;
-    const oi_real(*node)[2] = gl8_node;
-    int i, j;
-    for (i = 0; i < GL8_HALF; ++i) {
-        for (j = 0; j < 2; ++j) {
-            oi_real x = j ? (oi_real)1 - node[i][0] : node[i][0];
-            oi_real th = ta + h * x;
-            oi_real sn = OI_SIN(th), cs = OI_COS(th);
-            oi_real rho = b1 + w * sn * sn;
-            oi_real mu, base, phi0, pphi0;
-            if (be_is_limb) {
-                /* rs - rho = w cos^2(theta) exactly as a product */
-                oi_real gap = w * cs * cs;
-                oi_real dm = (oi_real)2 * OI_COS(OI_R(0.5) * (rs + rho)) * OI_SIN(OI_R(0.5) * gap);
-                oi_real q = dm * (sin_rs + OI_SIN(rho));
-                mu = q > (oi_real)0 ? OI_SQRT(q) / sin_rs : (oi_real)0;
-                if (mu > (oi_real)1) mu = (oi_real)1;
-            } else {
-                mu = mu_at(rho, rs, sin_rs);
-            }
-            /* ring weight I(mu) sin(rho) drho / sin^2 r_s, drho = w sin 2theta dtheta */
-            base = node[i][1] * limb_intensity(mu) * OI_SIN(rho) * (oi_real)2 * sn * cs / s2;
-            tri_angle2(re, rho, sep, &phi0, &pphi0);  /* phi0, pi - phi0 */
-            sh += base * phi0;
-            sv += base * pphi0;
+    ld_geom g;
+    oi_real hrs = sin_half_sq(rs), s2 = (oi_real)4 * hrs * ((oi_real)1 - hrs);
+    oi_real sse = OI_SIN(sep), sre = OI_SIN(re), b = sep - re, sg = (oi_real)1;
+    oi_real sum = (oi_real)0, t, lim, res;
+    int i, grade;
+
+    g.hrs1 = (oi_real)1 - hrs;
+    g.c4 = (oi_real)4 / s2;
+    g.k = s2 / sqr((oi_real)1 - (oi_real)2 * hrs);
+    g.hb = sin_half_sq(b);
+    if (tri == NULL) {
+        /* annular: e = -sin((sep + r_e + r_s)/2) sin((sep + r_e - r_s)/2) */
+        g.q = sse * sre;
+        g.e = -sin_0_pi(OI_R(0.5) * (sep + (re + rs))) *
+              OI_SIN(OI_R(0.5) * side_excess(rs, sep, re));
+        g.oms = (oi_real)0;
+        /* the limb singularity at asinh(w) >= w / (1 + w), w^2 = e / q */
+        grade = g.e < (oi_real)4 * g.q;
+        t = grade ? OI_SQRT(g.e / g.q) : (oi_real)2;
+        lim = OI_R(0.5) * t / ((oi_real)1 + t);
+    } else {
+        /* the half-angle formulas at the Earth's centre (tri from
+         * half_sines(rs, re, sep)): sigma^2 = sin(s - re) sin(s - sep) /
+         * (sin sep sin re), 1 - sigma^2 = sin s sin(s - rs) / (sin sep sin re);
+         * each ratio is at most ~1 (no overflow or underflow) */
+        g.q = tri[2] * tri[3];
+        g.e = (oi_real)0;
+        sg = OI_SQRT(clamp((tri[2] / sse) * (tri[3] / sre), (oi_real)0, (oi_real)1));
+        g.oms = clamp((tri[0] / sse) * (tri[1] / sre), (oi_real)0, (oi_real)1);
+        /* the Jacobian's branch point at atanh(w) >= w, w = cos(psi0/2) */
+        t = OI_SQRT(g.oms);
+        grade = t < OI_R(0.9);
+        lim = OI_R(0.5) * t;
+    }
+    g.n0 = (oi_real)2 * sg * sre * OI_SIN(b) / s2;
+    g.n1 = (oi_real)4 * sg * OI_COS(re) * g.q / s2;
+    /* series terms: stop when k^(nj+1) <= eps */
+    g.nj = 0;
+    for (t = g.k; g.nj < LD_JMAX && t > LD_EPS; t *= g.k) ++g.nj;
+    res = ld_poly((oi_real)1, (oi_real)1, g.k, g.nj); /* P(1) > 0 */
+    g.p1 = OI_FABS(b) < OI_R(0.875) * rs ? res : (oi_real)0;
+
+    if (!grade) {
+        /* the undivided panel [0, pi/2], nodes and their sines tabulated */
+        for (i = 0; i < LD_HALF; ++i)
+            sum += ld_node[i][1] * (ld_node_value(&g, ld_node[i][2], ld_node[i][3]) +
+                                    ld_node_value(&g, ld_node[i][3], ld_node[i][2]));
+        sum *= HALF_PI_R;
+    } else {
+        oi_real q = HALF_PI_R;
+        for (i = 0; i < 40 && q > lim; ++i) {
+            sum += ld_panel(&g, OI_R(0.5) * q, q);
+            q *= OI_R(0.5);
         }
+        sum += ld_panel(&g, (oi_real)0, q);
     }
-    *vis += sv * w * h / OI_PI_R;
-    *hid += sh * w * h / OI_PI_R;
+    sum /= OI_PI_R * res;
+    if (g.p1 > (oi_real)0) res = pa_s / OI_PI_R + sum;
+    else if (b > (oi_real)0) res = (oi_real)1 - sum;
+    else res = -sum;
+    return clamp(res, (oi_real)0, (oi_real)1);
 }
-
-/*
- * The partial rings [b1, be]. Another square-root point may lie a small
- * distance beyond either end: beyond be, the limb (when be = b2) or b2 (when
- * be is the limb), when the Earth's disc is nearly internally tangent to the
- * Sun's; before b1, the mirror point -b1 of the partial rings' start when b1
- * is small (the Earth's limb close to the Sun's centre). A point at distance
- * `near` beyond an end sits at theta = end +- i sqrt(near / w): each half of
- * [0, pi/2] is then cut into panels graded geometrically towards that end
- * until the last is narrower than half that distance, so every panel sees
- * the singularity at least about its own width away (Gauss-Legendre then
- * converges geometrically). All panels use the 8-point rule (measured: the
- * same 4e-14 against mpmath as 16-point panels). At most 4 + 2 x 40
- * panels; four when nothing is near.
- */
-static void partial_half(oi_real t_far, oi_real t_end, oi_real near, oi_real b1, oi_real w,
-                         int be_is_limb, oi_real rs, oi_real re, oi_real sep, oi_real sin_rs,
-                         oi_real *vis, oi_real *hid)
-{
-    /* t_end is the end the singularity is near; t_far the middle */
-    oi_real q = t_end - t_far, lim;
-    int k;
-    if (!(near > (oi_real)0) || !(near < OI_R(0.25) * w)) {
-        partial_panel(t_far < t_end ? t_far : t_end, t_far < t_end ? t_end : t_far, b1, w,
-                      be_is_limb, rs, re, sep, sin_rs, vis, hid);
-        return;
-    }
-    lim = OI_R(0.5) * OI_SQRT(near / w);
-    for (k = 0; k < 40 && OI_FABS(q) > lim; ++k) {
-        oi_real a = t_end - q, b = t_end - OI_R(0.5) * q;
-        partial_panel(a < b ? a : b, a < b ? b : a, b1, w, be_is_limb, rs, re, sep, sin_rs, vis,
-                      hid);
-        q *= OI_R(0.5);
-    }
-    {
-        oi_real a = t_end - q;
-        partial_panel(a < t_end ? a : t_end, a < t_end ? t_end : a, b1, w, be_is_limb, rs, re,
-                      sep, sin_rs, vis, hid);
-    }
-}
-
-static void partial_flux(oi_real b1, oi_real be, int be_is_limb, oi_real near_end, oi_real rs,
-                         oi_real re, oi_real sep, oi_real sin_rs, oi_real *vis, oi_real *hid)
-{
-    oi_real w = be - b1, mid = OI_R(0.25) * OI_PI_R;
-    *vis = *hid = (oi_real)0;
-    if (!(w > (oi_real)0)) return;
-    /* four base panels of 8 points: [0, pi/8] (graded towards 0 when b1 is
-     * small), [pi/8, pi/4], [pi/4, 3pi/8], [3pi/8, pi/2] (graded towards pi/2
-     * when an internal tangency is near). Three panels of 16 points give the
-     * same accuracy (4e-14) at 1.5 times the cost; three of 8 leave 1.3e-10. */
-    partial_half(mid, OI_R(0.125) * OI_PI_R, (oi_real)0, b1, w, be_is_limb, rs, re, sep, sin_rs,
-                 vis, hid);
-    partial_half(OI_R(0.125) * OI_PI_R, (oi_real)0, (oi_real)2 * b1, b1, w, be_is_limb, rs, re,
-                 sep, sin_rs, vis, hid);
-    partial_half(mid, OI_R(0.375) * OI_PI_R, (oi_real)0, b1, w, be_is_limb, rs, re, sep, sin_rs,
-                 vis, hid);
-    partial_half(OI_R(0.375) * OI_PI_R, HALF_PI_R, near_end, b1, w, be_is_limb, rs, re, sep,
-                 sin_rs, vis, hid);
-}
-
-/* Visible fraction of the limb-darkened solar disc (radius rs) when the
- * Earth's disc (radius re) is sep away; only called when the discs'
- * boundaries cross or the Earth's disc lies inside the Sun's. */
-static oi_real fraction_limb_darkened(oi_real rs, oi_real re, oi_real sep)
-{
-    oi_real sin_rs = OI_SIN(rs), cos_rs = OI_COS(rs);
-    oi_real c2 = sqr(cos_rs), s2 = sqr(sin_rs);
-    oi_real b1 = OI_FABS(sep - re);   /* rings inside b1: all hidden or all visible */
-    oi_real b2 = sep + re;            /* rings beyond b2: all visible */
-    oi_real vis = (oi_real)0, hid = (oi_real)0, pv, ph, inner, total;
-    int limb = !(b2 < rs);
-    oi_real be = limb ? rs : b2;
-    if (b1 > rs) b1 = rs;
-    /* rings rho < b1, i.e. mu in [mu(b1), 1] */
-    inner = ring_flux(mu_at(b1, rs, sin_rs), (oi_real)1, c2, s2);
-    if (sep < re) hid += inner; else vis += inner;
-    /* rings b2 < rho < rs, i.e. mu in [0, mu(b2)] */
-    if (!limb) vis += ring_flux((oi_real)0, mu_at(b2, rs, sin_rs), c2, s2);
-    /* the other square-root point near be: b2 just beyond the limb, or the
-     * limb just beyond b2 (the Earth's disc internally tangent to the Sun's,
-     * beyond the umbra's tip) */
-    partial_flux(b1, be, limb, OI_FABS(b2 - rs), rs, re, sep, sin_rs, &pv, &ph);
-    vis += pv;
-    hid += ph;
-    total = vis + hid;
-    if (!(total > (oi_real)0)) return (oi_real)0;
-    return clamp(vis / total, (oi_real)0, (oi_real)1);
-}
-
+#endif /* OI_NO_LIMB_DARKENING */
 /* ---------------------------------------------------------------- sun fraction */
 
 /*
@@ -674,6 +706,9 @@ int oi__sun_shadow(const oi_real sun_km[3], const oi_real point_km[3], const oi_
         frac = frac_ld = (oi_real)0;
     } else {
         oi_real ssun = sin_half_sq(rs);
+        oi_real pa_s = OI_PI_R; /* pi - alpha_s; pi when annular */
+        oi_real hs[4];          /* the triangle's sines (penumbra, rs < 1) */
+        const oi_real *tri = NULL;
         if (sep <= rs - re) {
             /* 1 - sin^2(re/2)/sin^2(rs/2), the difference of squares
              * factored: sin((rs - re)/2) sin((rs + re)/2) */
@@ -685,9 +720,12 @@ int oi__sun_shadow(const oi_real sun_km[3], const oi_real point_km[3], const oi_
              * Earth's segment (no 1 - overlap/area: keeps the relative
              * accuracy of a thin crescent next to the umbra); the angle at
              * the Sun's centre enters as pi - alpha_s from tri_angle */
-            oi_real a_e = tri_angle(rs, re, sep, 0);
-            oi_real pa_s = tri_angle(re, rs, sep, 1);
+            oi_real a_e;
+            half_sines(rs, re, sep, hs);
+            a_e = half_angle(hs, 1, 0);
+            pa_s = half_angle(hs, 2, 1);
             region = OI_SHADOW_PENUMBRA;
+            tri = hs;
             frac = (cap_segment(rs, pa_s) - cap_segment(re, a_e)) /
                    ((oi_real)4 * OI_PI_R * ssun);
         } else {
@@ -695,7 +733,17 @@ int oi__sun_shadow(const oi_real sun_km[3], const oi_real point_km[3], const oi_
             frac = (oi_real)1 - oi_cap_overlap(re, rs, sep) / ((oi_real)4 * OI_PI_R * ssun);
         }
         frac = clamp(frac, (oi_real)0, (oi_real)1);
-        frac_ld = fraction_limb_darkened(rs, re, sep);
+#ifdef OI_NO_LIMB_DARKENING
+        (void)pa_s;
+        (void)tri;
+        frac_ld = frac; /* the limb-darkened disc is compiled out */
+#else
+        /* beyond LD_RS_MAX (an observer within ~2 solar radii of the Sun's
+         * surface) or below 1e-15 rad the uniform disc stands in */
+        frac_ld = rs <= LD_RS_MAX && rs > LD_RS_MIN
+                      ? fraction_limb_darkened(rs, re, sep, pa_s, tri)
+                      : frac;
+#endif
     }
 
     out->fraction = frac;
