@@ -469,21 +469,28 @@ int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
                     const oi_illum *illum, const oi_model *model,
                     const oi_expose_goal *goal, oi_exposure *out)
 {
-    oi_model m;
     oi_expose_in in;
     const oi_real one = OI_R(1.0);
-    oi_real b[3], bh[3], uo[3], us[3], cr[3], sun_rel[3], hit[3], sun_hit[3], nh[3], sh[3];
+    /* Vectors of the three steps below live in their own blocks, so that
+     * they can share stack space (stack goal of issue 6: 512 bytes). */
+    oi_real b[3], bh[3];
     oi_real r_obs, r_tgt, range, re, sun_angle, c, sc, ob, s_hit, cos_i, e0, au_d;
     oi_real sin_rho, cos_rho, sin_h, cos_h, sin_th, cos_th, cos_g, sin_g, half_fov;
-    oi_real ifov, cap;
+    oi_real ifov, cap, au, tsi;
     int st;
 
     if (out == NULL) return OI_ERR_NULL;
     memset(out, 0, sizeof *out);
     if (camera == NULL || scene == NULL || illum == NULL) return OI_ERR_NULL;
     if (!scene->has_observer) return OI_ERR_NULL;
-    st = oi__model_resolve(model, &m);
-    if (st != OI_OK) return st;
+    {
+        oi_model m; /* in a block: its stack is reused below */
+        st = oi__model_resolve(model, &m);
+        if (st != OI_OK) return st;
+        re = m.earth_radius_km;
+        au = m.au_km;
+        tsi = m.tsi_w_m2;
+    }
     if (!oi__finite3(scene->sun_km) || !oi__finite3(scene->target_km) ||
         !oi__finite3(scene->observer_km)) {
         return OI_ERR_NONFINITE;
@@ -500,7 +507,6 @@ int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
         return OI_ERR_MAGNITUDE;
     }
     if (!camera_valid(camera)) return OI_ERR_CAMERA;
-    re = m.earth_radius_km;
     r_obs = oi__norm(scene->observer_km);
     r_tgt = oi__norm(scene->target_km);
     if (r_obs == 0 || (scene->sun_km[0] == 0 && scene->sun_km[1] == 0 && scene->sun_km[2] == 0)) {
@@ -519,11 +525,14 @@ int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
      * the same operations as oi_angle(sun - observer, b) (bh is its unit
      * vector of b); 0, as there, when a difference overflows or the
      * observer is at the Sun. */
-    oi__sub(scene->sun_km, scene->observer_km, sun_rel);
     sun_angle = 0;
-    if (oi__finite3(b) && oi__finite3(sun_rel) && oi__unit(sun_rel, us) > 0) {
-        oi__cross(us, bh, cr);
-        sun_angle = OI_ATAN2(oi__norm(cr), oi__dot(us, bh));
+    {
+        oi_real sun_rel[3], us[3], cr[3];
+        oi__sub(scene->sun_km, scene->observer_km, sun_rel);
+        if (oi__finite3(b) && oi__finite3(sun_rel) && oi__unit(sun_rel, us) > 0) {
+            oi__cross(us, bh, cr);
+            sun_angle = OI_ATAN2(oi__norm(cr), oi__dot(us, bh));
+        }
     }
     if (sun_angle < camera->sun_exclusion_rad) in.flags |= OI_FLAG_SUN_EXCLUSION;
 
@@ -539,12 +548,15 @@ int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
      * do not need h come first (h = 0 and h = pi/2 in the same formula). */
     sin_rho = re / r_obs;
     cos_rho = OI_SQRT((one - sin_rho) * (one + sin_rho));
-    uo[0] = scene->observer_km[0] / r_obs;
-    uo[1] = scene->observer_km[1] / r_obs;
-    uo[2] = scene->observer_km[2] / r_obs;
-    cos_g = -oi__dot(uo, bh);
-    oi__cross(uo, bh, cr);
-    sin_g = OI_SQRT(oi__dot(cr, cr)); /* unit vectors: no overflow */
+    {
+        oi_real uo[3], cr[3];
+        uo[0] = scene->observer_km[0] / r_obs;
+        uo[1] = scene->observer_km[1] / r_obs;
+        uo[2] = scene->observer_km[2] / r_obs;
+        cos_g = -oi__dot(uo, bh);
+        oi__cross(uo, bh, cr);
+        sin_g = OI_SQRT(oi__dot(cr, cr)); /* unit vectors: no overflow */
+    }
     if (!oi__finite3(b)) {
         /* b overflowed (positions near the largest oi_real): gamma was
          * taken as 0 before (oi_angle of a non-finite vector): flag */
@@ -572,6 +584,7 @@ int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
      * avoids cancellation, and ob^2 - c = (-ob - sc)(-ob + sc). */
     ob = oi__dot(scene->observer_km, bh);
     if (ob < 0 && -ob >= sc) {
+        oi_real hit[3], sun_hit[3], nh[3], sh[3];
         s_hit = c / (-ob + OI_SQRT((-ob - sc) * (-ob + sc)));
         hit[0] = scene->observer_km[0] + s_hit * bh[0];
         hit[1] = scene->observer_km[1] + s_hit * bh[1];
@@ -582,8 +595,8 @@ int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
         (void)oi__unit(sun_hit, sh);
         cos_i = oi__dot(nh, sh);
         if (cos_i > 0) {
-            au_d = m.au_km / oi__norm(scene->sun_km);
-            e0 = m.tsi_w_m2 * au_d * au_d;
+            au_d = au / oi__norm(scene->sun_km);
+            e0 = tsi * au_d * au_d;
             in.background_w_m2_sr = scene->earth_albedo * e0 * cos_i / OI_PI_R;
         }
     }
