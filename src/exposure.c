@@ -475,7 +475,7 @@ int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
      * they can share stack space (stack goal of issue 6: 512 bytes). */
     oi_real b[3], bh[3];
     oi_real r_obs, r_tgt, range, re, sun_angle, c, sc, ob, s_hit, cos_i, e0, au_d;
-    oi_real sin_rho, cos_rho, sin_h, cos_h, sin_th, cos_th, cos_g, sin_g, half_fov;
+    oi_real sin_rho, cos_rho, cos_g, sin_g, sin_gr, cos_gr;
     oi_real ifov, cap, au, tsi;
     int st;
 
@@ -538,14 +538,14 @@ int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
 
     /* Earth's disc against the field (Note 2): the flag is the decision
      * gamma - rho < h, gamma the angle from the boresight to the Earth's
-     * centre, rho = asin(R/r) the disc's radius, h = fov/2. With
-     * theta = rho + h in (0, pi) and gamma in [0, pi], gamma < theta exactly
-     * when sin(theta - gamma) = sin(theta) cos(gamma) - cos(theta) sin(gamma)
-     * is positive; that sign is computed from unit vectors (cos and sin of
-     * gamma as dot and cross products) and the sum formulas, with no atan2
-     * or asin (docs/camera.md, "Cost of the search": it decides as the angle
-     * comparison except within a few ulp of the boundary). Two tests that
-     * do not need h come first (h = 0 and h = pi/2 in the same formula). */
+     * centre, rho = asin(R/r) the disc's radius, h = fov/2. The sine and
+     * cosine of gamma - rho come from unit vectors (cos and sin of gamma as
+     * dot and cross products, sin rho = R/r) and the difference formulas,
+     * so one atan2 gives gamma - rho where it matters, instead of two
+     * angles (docs/camera.md, "Cost of the search"): gamma < rho (sine
+     * negative) is on the disc, whatever h; gamma - rho >= pi/2 (cosine not
+     * positive) is at least pi/2 >= h away; only in between is the angle
+     * computed and compared with h. */
     sin_rho = re / r_obs;
     cos_rho = OI_SQRT((one - sin_rho) * (one + sin_rho));
     {
@@ -557,23 +557,13 @@ int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
         oi__cross(uo, bh, cr);
         sin_g = OI_SQRT(oi__dot(cr, cr)); /* unit vectors: no overflow */
     }
-    if (!oi__finite3(b)) {
-        /* b overflowed (positions near the largest oi_real): gamma was
-         * taken as 0 before (oi_angle of a non-finite vector): flag */
+    sin_gr = cos_rho * sin_g - sin_rho * cos_g; /* sin(gamma - rho) */
+    cos_gr = cos_rho * cos_g + sin_rho * sin_g; /* cos(gamma - rho) */
+    if (!oi__finite3(b) || sin_gr < 0 ||
+        (cos_gr > 0 && OI_ATAN2(sin_gr, cos_gr) < OI_R(0.5) * camera->fov_rad)) {
+        /* (b overflowed, positions near the largest oi_real: gamma was
+         * taken as 0 before, oi_angle of a non-finite vector: flag) */
         in.flags |= OI_FLAG_EARTH_IN_FOV;
-    } else if (sin_rho * cos_g - cos_rho * sin_g > 0) {
-        /* sin(rho - gamma) > 0: the boresight is on the disc, any h */
-        in.flags |= OI_FLAG_EARTH_IN_FOV;
-    } else if (cos_rho * cos_g + sin_rho * sin_g > 0) {
-        /* cos(gamma - rho) > 0: gamma - rho < pi/2, so h (<= pi/2) decides;
-         * otherwise the disc is at least pi/2 >= h away: no flag, and no
-         * sine or cosine of h is needed */
-        half_fov = OI_R(0.5) * camera->fov_rad;
-        sin_h = OI_SIN(half_fov);
-        cos_h = OI_COS(half_fov);
-        sin_th = sin_rho * cos_h + cos_rho * sin_h;
-        cos_th = cos_rho * cos_h - sin_rho * sin_h;
-        if (sin_th * cos_g - cos_th * sin_g > 0) in.flags |= OI_FLAG_EARTH_IN_FOV;
     }
 
     c = (r_obs - re) * (r_obs + re); /* |o|^2 - R^2 > 0 */
