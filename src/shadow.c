@@ -107,8 +107,7 @@ static oi_real tri_angle(oi_real a, oi_real b, oi_real c, int comp)
  * area as an integral without cancellation, obtained by differentiating the
  * above in alpha:
  *   seg = 2 sin^2 r cos r  J(alpha),  J = int_0^alpha sin^2 u / (1 - sin^2 r sin^2 u) du,
- * J by the 16-point Gauss-Legendre rule (the integrand is analytic in a
- * disc of radius > 1 about [0, 1/2], so the rule is exact to rounding).
+ * J by the 8-point Gauss-Legendre rule (gauss_j).
  * Planar check: for small r, seg -> (r^2/2)(2 alpha - sin 2 alpha).
  */
 static oi_real gauss_j(oi_real alpha, oi_real k2);
@@ -246,36 +245,40 @@ oi_real oi_cap_overlap(oi_real r1, oi_real r2, oi_real d)
 
 /* ---------------------------------------------------------------- quadrature */
 
-/* 16-point Gauss-Legendre rule on [0, 1]: the nodes x below and 1 - x
+/* 8-point Gauss-Legendre rule on [0, 1]: the nodes x below and 1 - x
  * share the weights (computed with mpmath at 40 digits by Newton iteration
- * on P_16; tests/ref/gen_refs.py --gauss 16 prints them). */
-#define GL_HALF 8
+ * on P_8; tests/ref/gen_refs.py --gauss 8 prints them). */
+#define GL_HALF 4
 static const oi_real gl_node[GL_HALF][2] = {
-    {OI_R(0.00529953250417503370192), OI_R(0.0135762297058770474259)},
-    {OI_R(0.027712488463383711961), OI_R(0.0311267619693239464314)},
-    {OI_R(0.0671843988060841280598), OI_R(0.047579255841246392405)},
-    {OI_R(0.122297795822498483052), OI_R(0.0623144856277669360262)},
-    {OI_R(0.191061877798678125777), OI_R(0.0747979944082883660408)},
-    {OI_R(0.270991611171386306829), OI_R(0.0845782596975012690947)},
-    {OI_R(0.359198224610370543385), OI_R(0.0913017075224617944334)},
-    {OI_R(0.452493745081181279907), OI_R(0.0947253052275342481427)},
+    {OI_R(0.0198550717512318841582), OI_R(0.0506142681451881295763)},
+    {OI_R(0.101666761293186630204), OI_R(0.111190517226687235272)},
+    {OI_R(0.237233795041835507091), OI_R(0.156853322938943643669)},
+    {OI_R(0.40828267875217509753), OI_R(0.181341891689180991483)},
 };
 
 /* J(alpha) = int_0^alpha sin^2 u / (1 - k2 sin^2 u) du, k2 = sin^2 r <= 1,
- * alpha < 1/2: Gauss-Legendre, 16 nodes. */
+ * alpha < 1/2: Gauss-Legendre, 8 nodes on [0, alpha] when alpha < 1/4, on
+ * each half of it otherwise. The integrand's nearest singularity,
+ * sin^2 u = 1/k2, lies at least pi/2 - 1/2 from [0, alpha], so the error
+ * factor of a panel is below (z + sqrt(z^2 - 1))^-16 with z >= 9.6 (the
+ * distance over the half-width): < 4e-21 (measured with mpmath: one
+ * 8-point panel on [0, 1/2] at k2 = 1 errs by 7e-15 relative). */
 static oi_real gauss_j(oi_real alpha, oi_real k2)
 {
-    oi_real sum = (oi_real)0;
-    int i, j;
-    for (i = 0; i < GL_HALF; ++i) {
-        for (j = 0; j < 2; ++j) {
-            oi_real x = j ? (oi_real)1 - gl_node[i][0] : gl_node[i][0];
-            oi_real su = OI_SIN(alpha * x);
-            oi_real s2 = su * su;
-            sum += gl_node[i][1] * s2 / ((oi_real)1 - k2 * s2);
+    int panels = alpha < OI_R(0.25) ? 1 : 2, k, i, j;
+    oi_real sum = (oi_real)0, h = alpha / (oi_real)panels;
+    for (k = 0; k < panels; ++k) {
+        oi_real lo = (oi_real)k * h;
+        for (i = 0; i < GL_HALF; ++i) {
+            for (j = 0; j < 2; ++j) {
+                oi_real x = j ? (oi_real)1 - gl_node[i][0] : gl_node[i][0];
+                oi_real su = OI_SIN(lo + h * x);
+                oi_real s2 = su * su;
+                sum += gl_node[i][1] * s2 / ((oi_real)1 - k2 * s2);
+            }
         }
     }
-    return alpha * sum;
+    return h * sum;
 }
 
 #ifndef OI_NO_LIMB_DARKENING
@@ -396,19 +399,14 @@ static oi_real ld_node_value(const ld_geom *g, oi_real sph, oi_real cph)
     return p * (g->n0 - g->n1 * st2) * sph / den;
 }
 
-/* The 12-point rule on phi in [lo, hi] (a graded panel). */
-static oi_real ld_panel(const ld_geom *g, oi_real lo, oi_real hi)
-{
-    oi_real h = hi - lo, sum = (oi_real)0;
-    int i, j;
-    for (i = 0; i < LD_HALF; ++i) {
-        for (j = 0; j < 2; ++j) {
-            oi_real ph = lo + h * (j ? (oi_real)1 - ld_node[i][0] : ld_node[i][0]);
-            sum += ld_node[i][1] * ld_node_value(g, OI_SIN(ph), OI_COS(ph));
-        }
-    }
-    return sum * h;
-}
+/* GCC and clang: keep the limb-darkened integral's locals out of the frame
+ * of oi__sun_shadow, which is live during the atmosphere's call as well
+ * (make stack); elsewhere the compiler decides. */
+#if defined(__GNUC__)
+#define LD_NOINLINE __attribute__((noinline))
+#else
+#define LD_NOINLINE
+#endif
 
 /*
  * Visible fraction of the limb-darkened solar disc (radius rs) when the
@@ -442,14 +440,14 @@ static oi_real ld_panel(const ld_geom *g, oi_real lo, oi_real hi)
  * Jacobian is 2, and the singularity of mu sits at a distance
  * asinh(sqrt(e / (sin sep sin r_e))) beyond pi/2, graded the same way.
  */
-static oi_real fraction_limb_darkened(oi_real rs, oi_real re, oi_real sep, oi_real pa_s,
-                                      const oi_real *tri)
+static LD_NOINLINE oi_real fraction_limb_darkened(oi_real rs, oi_real re, oi_real sep,
+                                                  oi_real pa_s, const oi_real *tri)
 {
     ld_geom g;
     oi_real hrs = sin_half_sq(rs), s2 = (oi_real)4 * hrs * ((oi_real)1 - hrs);
     oi_real sse = OI_SIN(sep), sre = OI_SIN(re), b = sep - re, sg = (oi_real)1;
     oi_real sum = (oi_real)0, t, lim, res;
-    int i, grade;
+    int i, j, k, grade;
 
     g.hrs1 = (oi_real)1 - hrs;
     g.c4 = (oi_real)4 / s2;
@@ -487,19 +485,29 @@ static oi_real fraction_limb_darkened(oi_real rs, oi_real re, oi_real sep, oi_re
     res = ld_poly((oi_real)1, (oi_real)1, g.k, g.nj); /* P(1) > 0 */
     g.p1 = OI_FABS(b) < OI_R(0.875) * rs ? res : (oi_real)0;
 
-    if (!grade) {
-        /* the undivided panel [0, pi/2], nodes and their sines tabulated */
-        for (i = 0; i < LD_HALF; ++i)
-            sum += ld_node[i][1] * (ld_node_value(&g, ld_node[i][2], ld_node[i][3]) +
-                                    ld_node_value(&g, ld_node[i][3], ld_node[i][2]));
-        sum *= HALF_PI_R;
-    } else {
-        oi_real q = HALF_PI_R;
-        for (i = 0; i < 40 && q > lim; ++i) {
-            sum += ld_panel(&g, OI_R(0.5) * q, q);
-            q *= OI_R(0.5);
+    /* panels in phi = pi/2 - theta: [0, pi/2] undivided (nodes and their
+     * sines tabulated), or graded: [q/2, q] for q = pi/2, pi/4, ... while
+     * q > lim (at most 40), then [0, q] */
+    for (k = 0, t = HALF_PI_R; k <= 40; ++k) {
+        oi_real lo = grade && k < 40 && t > lim ? OI_R(0.5) * t : (oi_real)0, h = t - lo;
+        oi_real ps = (oi_real)0;
+        for (i = 0; i < LD_HALF; ++i) {
+            for (j = 0; j < 2; ++j) {
+                oi_real sph, cph;
+                if (grade) {
+                    oi_real ph = lo + h * (j ? (oi_real)1 - ld_node[i][0] : ld_node[i][0]);
+                    sph = OI_SIN(ph);
+                    cph = OI_COS(ph);
+                } else {
+                    sph = ld_node[i][j ? 3 : 2];
+                    cph = ld_node[i][j ? 2 : 3];
+                }
+                ps += ld_node[i][1] * ld_node_value(&g, sph, cph);
+            }
         }
-        sum += ld_panel(&g, (oi_real)0, q);
+        sum += ps * h;
+        if (!(lo > (oi_real)0)) break;
+        t = lo;
     }
     sum /= OI_PI_R * res;
     if (g.p1 > (oi_real)0) res = pa_s / OI_PI_R + sum;
@@ -663,7 +671,6 @@ int oi__sun_shadow(const oi_real sun_km[3], const oi_real point_km[3], const oi_
                    oi_shadow *out, oi_real light_dir[3])
 {
     const oi_model *m = model;
-    oi_real rel[3], anti[3];
     oi_real ds, dp, dsp, rs, re, sep, frac, frac_ld, q_earth;
     int st = OI_OK, region;
 
@@ -681,16 +688,20 @@ int oi__sun_shadow(const oi_real sun_km[3], const oi_real point_km[3], const oi_
         q_earth = (oi_real)-1; /* far: the plain form is accurate */
     }
     if (ds <= m->sun_radius_km + m->earth_radius_km) return OI_ERR_GEOMETRY;
-    oi__sub(sun_km, point_km, rel);
-    if (!oi__finite3(rel)) return OI_ERR_NONFINITE;
-    dsp = oi__norm(rel);
-    if (!OI_ISFINITE(dsp) || !OI_ISFINITE(dp)) return OI_ERR_NONFINITE;
-    if (dsp <= m->sun_radius_km) return OI_ERR_GEOMETRY;
-
-    anti[0] = -point_km[0];
-    anti[1] = -point_km[1];
-    anti[2] = -point_km[2];
-    sep = oi_angle(rel, anti);
+    {
+        /* a block of its own: these arrays may share stack with the
+         * penumbra's (make stack) */
+        oi_real rel[3], anti[3];
+        oi__sub(sun_km, point_km, rel);
+        if (!oi__finite3(rel)) return OI_ERR_NONFINITE;
+        dsp = oi__norm(rel);
+        if (!OI_ISFINITE(dsp) || !OI_ISFINITE(dp)) return OI_ERR_NONFINITE;
+        if (dsp <= m->sun_radius_km) return OI_ERR_GEOMETRY;
+        anti[0] = -point_km[0];
+        anti[1] = -point_km[1];
+        anti[2] = -point_km[2];
+        sep = oi_angle(rel, anti);
+    }
     rs = apparent_radius(m->sun_radius_km, dsp);
     re = q_earth > (oi_real)0 ? OI_ATAN2(m->earth_radius_km, OI_SQRT(q_earth))
                               : apparent_radius(m->earth_radius_km, dp);
