@@ -24,8 +24,7 @@
  * table's double fields, or compile-time constants for the default table (the
  * single-precision build then does no double arithmetic in the lookup). */
 typedef struct es_grid {
-    const float *q, *psi;
-    int n_lit, n_term, n_alt;
+    const oi_earth_table *t;   /* payload and sizes */
     int surf;                  /* w_min = 0: the first row is the surface */
     int full;                  /* w_min = 0 and w_max = pi/2: every h > 0 is inside */
     oi_real w_min, w_max, k0, kp;
@@ -68,15 +67,16 @@ static int cell_of(oi_real f, int n, oi_real *frac)
 }
 
 /* Ghost rows of one 4-row stencil (the theta spline is linear in the rows):
- * quadratic below a surface row (w_min = 0, n_alt >= 3), else linear; then
- * the Catmull-Rom sum in w. */
+ * quadratic below a surface row (w_min = 0, n_alt >= 3, so that row 2
+ * exists), else linear; then the Catmull-Rom sum in w. r[1], r[2] are rows
+ * j, j + 1; r[0], r[3] rows j - 1, j + 2 where they exist. */
 static oi_real alt_sum(oi_real r[4], int j, int n_alt, int surf, const oi_real wb[4])
 {
+    if (j + 2 >= n_alt) r[3] = OI_R(2.0) * r[2] - r[1];
     if (j - 1 < 0) {
         if (surf && n_alt >= 3) r[0] = OI_R(3.0) * (r[1] - r[2]) + r[3];
         else r[0] = OI_R(2.0) * r[1] - r[2];
     }
-    if (j + 2 >= n_alt) r[3] = OI_R(2.0) * r[2] - r[1];
     return wb[0] * r[0] + wb[1] * r[1] + wb[2] * r[2] + wb[3] * r[3];
 }
 
@@ -97,11 +97,11 @@ static void seg_interp(const es_grid *g, int off, int n, oi_real fv, oi_real fw,
 {
     oi_real wa[4], wb[4], rq[4], rp[4], fa, fb;
     const int i = cell_of(fv, n, &fa);
-    const int j = cell_of(fw, g->n_alt, &fb);
+    const int j = cell_of(fw, g->t->n_alt, &fb);
     const int lo = i == 0, hi = i + 2 >= n;
-    const size_t ld = (size_t)g->n_lit + (size_t)g->n_term;
+    const size_t ld = (size_t)g->t->n_lit + (size_t)g->t->n_term;
     /* rows j - 1 + k for k in [k_lo, k_hi): those inside the table */
-    const int k_lo = j == 0 ? 1 : 0, k_hi = j + 2 >= g->n_alt ? 3 : 4;
+    const int k_lo = j == 0 ? 1 : 0, k_hi = j + 2 >= g->t->n_alt ? 3 : 4;
     int k;
     cr_weights(fb, wb);
     if (n == 2) {
@@ -109,30 +109,30 @@ static void seg_interp(const es_grid *g, int off, int n, oi_real fv, oi_real fw,
          * line through them (the lit segment: n_lit = 2) */
         for (k = k_lo; k < k_hi; k++) {
             const size_t c = (size_t)(j - 1 + k) * ld + (size_t)off;
-            const oi_real q0 = (oi_real)g->q[c], p0 = (oi_real)g->psi[c];
-            rq[k] = q0 + fa * ((oi_real)g->q[c + 1] - q0);
-            rp[k] = p0 + fa * ((oi_real)g->psi[c + 1] - p0);
+            const oi_real q0 = (oi_real)g->t->q[c], p0 = (oi_real)g->t->psi[c];
+            rq[k] = q0 + fa * ((oi_real)g->t->q[c + 1] - q0);
+            rp[k] = p0 + fa * ((oi_real)g->t->psi[c + 1] - p0);
         }
-        *vq = alt_sum(rq, j, g->n_alt, g->surf, wb);
-        *vp = alt_sum(rp, j, g->n_alt, g->surf, wb);
+        *vq = alt_sum(rq, j, g->t->n_alt, g->surf, wb);
+        *vp = alt_sum(rp, j, g->t->n_alt, g->surf, wb);
         return;
     }
     cr_weights(fa, wa);
     if (!lo && !hi) {
         for (k = k_lo; k < k_hi; k++) {
             const size_t c = (size_t)(j - 1 + k) * ld + (size_t)off + (size_t)i;
-            rq[k] = row_interior(g->q + c, wa);
-            rp[k] = row_interior(g->psi + c, wa);
+            rq[k] = row_interior(g->t->q + c, wa);
+            rp[k] = row_interior(g->t->psi + c, wa);
         }
     } else {
         for (k = k_lo; k < k_hi; k++) {
             const size_t c = (size_t)(j - 1 + k) * ld + (size_t)off + (size_t)i;
-            rq[k] = seg_row(g->q + c, lo, hi, wa);
-            rp[k] = seg_row(g->psi + c, lo, hi, wa);
+            rq[k] = seg_row(g->t->q + c, lo, hi, wa);
+            rp[k] = seg_row(g->t->psi + c, lo, hi, wa);
         }
     }
-    *vq = alt_sum(rq, j, g->n_alt, g->surf, wb);
-    *vp = alt_sum(rp, j, g->n_alt, g->surf, wb);
+    *vq = alt_sum(rq, j, g->t->n_alt, g->surf, wb);
+    *vp = alt_sum(rp, j, g->t->n_alt, g->surf, wb);
 }
 
 /* asinh(z) without cancellation for small |z|: series z (1 - z^2/6 + 3 z^4/40
@@ -213,26 +213,23 @@ static es_bits nonneg_bits(double d)
 
 static int table_valid(const oi_earth_table *t)
 {
-    const es_bits w_min = nonneg_bits(t->w_min), w_max = nonneg_bits(t->w_max);
-    const es_bits k0 = nonneg_bits(t->term_k0), kp = nonneg_bits(t->term_kp);
     if (t->format != OI_TABLE_FORMAT || t->n_lit < 2 || t->n_term < 2 || t->n_alt < 2) return 0;
     if (t->q == NULL || t->psi == NULL) return 0;
-    if (w_min > ES_INF_BITS || w_max > ES_INF_BITS || !(w_max > w_min) ||
-        w_max > nonneg_bits(0.5 * OI_PI * (1.0 + 1e-15)))
-        return 0;
-    if (w_min == 0ULL && t->n_alt < 3) return 0; /* quadratic ghost row */
-    if (k0 > nonneg_bits(20.0) || kp > nonneg_bits(100.0)) return 0;
-    return 1;
+    {
+        const es_bits w_min = nonneg_bits(t->w_min), w_max = nonneg_bits(t->w_max);
+        if (w_min > ES_INF_BITS || w_max > ES_INF_BITS || !(w_max > w_min) ||
+            w_max > nonneg_bits(0.5 * OI_PI * (1.0 + 1e-15)))
+            return 0;
+        if (w_min == 0ULL && t->n_alt < 3) return 0; /* quadratic ghost row */
+    }
+    return nonneg_bits(t->term_k0) <= nonneg_bits(20.0) &&
+           nonneg_bits(t->term_kp) <= nonneg_bits(100.0);
 }
 
 /* The grid of a valid caller's table in oi_real; returns g. */
 static const es_grid *grid_of(const oi_earth_table *t, es_grid *g)
 {
-    g->q = t->q;
-    g->psi = t->psi;
-    g->n_lit = t->n_lit;
-    g->n_term = t->n_term;
-    g->n_alt = t->n_alt;
+    g->t = t;
     g->surf = nonneg_bits(t->w_min) == 0ULL;
     g->w_min = (oi_real)t->w_min;
     g->w_max = (oi_real)t->w_max;
@@ -254,21 +251,15 @@ static const es_grid *grid_of(const oi_earth_table *t, es_grid *g)
 #define ES_DEF_K0 2.0
 #define ES_DEF_KP 8.0
 
-static const es_grid *grid_default(es_grid *g)
-{
-    g->q = oi_earth_diffuse.q;
-    g->psi = oi_earth_diffuse.psi;
-    g->n_lit = OI_EARTH_DIFFUSE_N_LIT;
-    g->n_term = OI_EARTH_DIFFUSE_N_TERM;
-    g->n_alt = OI_EARTH_DIFFUSE_N_ALT;
-    g->surf = ES_DEF_W_MIN == 0.0;
-    g->w_min = (oi_real)ES_DEF_W_MIN;
-    g->w_max = (oi_real)ES_DEF_W_MAX;
-    g->k0 = (oi_real)ES_DEF_K0;
-    g->kp = (oi_real)ES_DEF_KP;
-    g->full = g->surf && g->w_max >= HALF_PI_R;
-    return g;
-}
+static const es_grid es_default_grid = {
+    .t = &oi_earth_diffuse,
+    .surf = ES_DEF_W_MIN == 0.0,
+    .full = ES_DEF_W_MIN == 0.0 && (oi_real)ES_DEF_W_MAX >= HALF_PI_R,
+    .w_min = (oi_real)ES_DEF_W_MIN,
+    .w_max = (oi_real)ES_DEF_W_MAX,
+    .k0 = (oi_real)ES_DEF_K0,
+    .kp = (oi_real)ES_DEF_KP,
+};
 #endif
 
 /*
@@ -379,7 +370,7 @@ int oi__earthshine(oi_real theta, oi_real h_km, const oi_model *resolved, oi_rea
         }
 #ifndef OI_NO_EARTH_TABLE
         else {
-            grid = grid_default(&g);
+            grid = &es_default_grid;
         }
 #endif
     }
@@ -412,7 +403,7 @@ int oi__earthshine(oi_real theta, oi_real h_km, const oi_model *resolved, oi_rea
     w = OI_ATAN2(s, R); /* = acos(x), no cancellation at low altitude */
 
     if (grid != NULL) {
-        const oi_real cells = (oi_real)(grid->n_alt - 1);
+        const oi_real cells = (oi_real)(grid->t->n_alt - 1);
         const oi_real fw = (w - grid->w_min) / (grid->w_max - grid->w_min) * cells;
         if (fw >= -EDGE_TOL_CELLS && fw <= cells + EDGE_TOL_CELLS) {
             oi_real q, p, fv;
@@ -423,8 +414,8 @@ int oi__earthshine(oi_real theta, oi_real h_km, const oi_model *resolved, oi_rea
                  * tan(theta) G(x) exactly; stored q0 = phi(0, x) / x^2, G / w */
                 const oi_real ct = OI_COS(theta);
                 const oi_real st = OI_SIN(theta);
-                fv = theta / tb * (oi_real)(grid->n_lit - 1);
-                seg_interp(grid, 0, grid->n_lit, fv, fw, &q, &p);
+                fv = theta / tb * (oi_real)(grid->t->n_lit - 1);
+                seg_interp(grid, 0, grid->t->n_lit, fv, fw, &q, &p);
                 q *= ct;
                 p = OI_ATAN2(p * w * st, ct);
             } else {
@@ -432,8 +423,8 @@ int oi__earthshine(oi_real theta, oi_real h_km, const oi_model *resolved, oi_rea
                 oi_real mm = (theta - HALF_PI_R) / w;
                 if (mm > OI_R(1.0)) mm = OI_R(1.0);
                 if (mm < OI_R(-1.0)) mm = OI_R(-1.0);
-                fv = OI_R(0.5) * (term_t(mm, x, grid) + OI_R(1.0)) * (oi_real)(grid->n_term - 1);
-                seg_interp(grid, grid->n_lit, grid->n_term, fv, fw, &q, &p);
+                fv = OI_R(0.5) * (term_t(mm, x, grid) + OI_R(1.0)) * (oi_real)(grid->t->n_term - 1);
+                seg_interp(grid, grid->t->n_lit, grid->t->n_term, fv, fw, &q, &p);
                 q *= w;
             }
             if (q < (oi_real)0) q = (oi_real)0;
