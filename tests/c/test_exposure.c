@@ -402,6 +402,18 @@ static void test_builtin_cameras(void **state)
         assert_non_null(c->name);
         assert_ptr_equal(oi_camera_find(c->name), c);
         check_int(OI_OK, oi_expose(c, &in, NULL, &out), c->name);
+        {
+            /* A copy is not a built-in by address, so it goes through the
+             * full camera check (the library skips it for the built-ins
+             * themselves): it must pass, with the same result. A copy with
+             * one field out of range must fail. */
+            oi_camera copy = *c;
+            oi_exposure out_copy;
+            check_int(OI_OK, oi_expose(&copy, &in, NULL, &out_copy), "copy of a built-in camera");
+            assert_memory_equal(&out, &out_copy, sizeof out);
+            copy.times_s[copy.n_times - 1] = copy.times_s[0];
+            check_int(OI_ERR_CAMERA, oi_expose(&copy, &in, NULL, &out_copy), "broken copy");
+        }
     }
     assert_true(i >= 2 && i <= 8);
     assert_null(oi_camera_builtin(i));
