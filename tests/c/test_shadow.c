@@ -4,7 +4,11 @@
  * small cap, ref_shadow.h from tests/ref/gen_refs.py) at the exact input
  * values; closed-form configurations (disjoint, nested, half-covered,
  * tangent, complement, annular); monotonicity across the penumbra; every
- * error path with zeroed outputs. */
+ * error path with zeroed outputs. The limb-darkened fraction also against
+ * two references of its own (a closed-form ring integral for concentric
+ * discs, a ring quadrature for a large Sun) and for continuity where the
+ * method switches; built with -DOI_NO_LIMB_DARKENING the same program checks
+ * that fraction_ld equals fraction and OI_LIMB_DARKENED is refused. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
@@ -233,7 +237,13 @@ static void test_sun_vs_mpmath(void **state)
                         i, r->fraction, (double)s.fraction, err, tol, r->cond);
             ++bad;
         }
+#ifdef OI_NO_LIMB_DARKENING
+        /* the limb-darkened disc is compiled out: fraction_ld is fraction */
+        err_ld = fabs((double)s.fraction_ld - (double)s.fraction);
+        if (!(err_ld == 0)) {
+#else
         if (!(err_ld <= tol + LD_QUAD) || s.fraction_ld < 0 || s.fraction_ld > 1) {
+#endif
             print_error("row %zu fraction_ld: want %.17g got %.17g err %.3g\n", i,
                         r->fraction_ld, (double)s.fraction_ld, err_ld);
             ++bad;
@@ -324,7 +334,19 @@ static void test_sun_fraction_atm_choice(void **state)
         oi_real sun[3], pt[3];
         set3(sun, r->sun[0], r->sun[1], r->sun[2]);
         set3(pt, r->point[0], r->point[1], r->point[2]);
+#ifdef OI_NO_LIMB_DARKENING
+        /* compiled out: the model asking for it is refused (src/model.c),
+         * outputs zeroed */
+        memset(&s, 0x5a, sizeof s);
+        assert_int_equal(oi_sun_fraction(sun, pt, &m, &s), OI_ERR_MODEL);
+        assert_true(s.fraction == 0 && s.fraction_ld == 0 && s.fraction_atm == 0 && s.region == 0);
+        m.limb_darkening = OI_LIMB_UNIFORM;
         assert_int_equal(oi_sun_fraction(sun, pt, &m, &s), OI_OK);
+        assert_true(s.fraction_ld == s.fraction && s.fraction_atm == s.fraction);
+        return;
+#else
+        assert_int_equal(oi_sun_fraction(sun, pt, &m, &s), OI_OK);
+#endif
     }
     assert_true(s.fraction_atm == s.fraction_ld);
     assert_true(s.fraction_ld != s.fraction);
@@ -363,9 +385,13 @@ static void test_sun_exact(void **state)
         print_error("annular: want %.17g got %.17g\n", want, (double)s.fraction);
         fail();
     }
+#ifdef OI_NO_LIMB_DARKENING
+    assert_true(s.fraction_ld == s.fraction);
+#else
     /* limb-darkened annular: the dark disc covers the bright centre, so less
      * than the uniform fraction */
     assert_true(s.fraction_ld < s.fraction && s.fraction_ld > 0);
+#endif
 }
 
 /* monotonic across the penumbra, at 0.983 and 1.017 AU, LEO and GEO */
@@ -399,6 +425,252 @@ static void test_sun_monotonic(void **state)
         }
     }
 }
+
+/* ---------------------------------------------------------------- limb darkening */
+
+#ifndef OI_NO_LIMB_DARKENING
+/* Neckel & Labs (1994) at 559.95 nm, as in docs/shadow.md */
+static double ld_intensity(double mu)
+{
+    static const double a[6] = {0.26892, 1.34319, -1.58427, 1.91271, -1.31350, 0.37295};
+    double p = 0;
+    int i;
+    for (i = 5; i >= 0; --i) p = p * mu + a[i];
+    return p;
+}
+
+/* Flux of the disc (radius rs) within rho of its centre, up to a constant:
+ * int_mu(rho)^1 I(m) m / sqrt(cos^2 rs + sin^2 rs m^2) dm by composite
+ * Simpson in m (20000 intervals; the integrand is a smooth function of m):
+ * a ring integral, not the runtime's line integral. */
+static double ld_flux_within(double rho, double rs)
+{
+    double x = sin(rho) / sin(rs), mu = x < 1 ? sqrt(1 - x * x) : 0;
+    double c2 = cos(rs) * cos(rs), s2 = sin(rs) * sin(rs), h, sum = 0;
+    int i, n = 20000;
+    h = (1 - mu) / n;
+    for (i = 0; i <= n; ++i) {
+        double m = mu + h * i, w = (i == 0 || i == n) ? 1 : (i % 2 ? 4 : 2);
+        sum += w * ld_intensity(m) * m / sqrt(c2 + s2 * m * m);
+    }
+    return sum * h / 3;
+}
+
+/* I(mu(rho)) sin rho times the uncovered fraction of the ring rho (the
+ * Earth's disc, radius re, sep away, covers the arc 2 acos(c)) */
+static double ring_visible(double rho, double rs, double re, double sep, int cover)
+{
+    double x = sin(rho) / sin(rs), mu = x < 1 ? sqrt(1 - x * x) : 0, f = 1;
+    if (cover) {
+        double c = (cos(re) - cos(sep) * cos(rho)) / (sin(sep) * sin(rho));
+        c = c > 1 ? 1 : (c < -1 ? -1 : c);
+        f = 1 - acos(c) / PI;
+    }
+    return ld_intensity(mu) * sin(rho) * f;
+}
+
+/* the rings rho in [a, b], rho = a + (b - a) sin^2 th (smooth at the square
+ * roots of both ends), composite Simpson in th, n intervals */
+static double ring_piece(double a, double b, double rs, double re, double sep, int cover, int n)
+{
+    double h = 0.5 * PI / n, sum = 0;
+    int i;
+    if (!(b > a)) return 0;
+    for (i = 0; i <= n; ++i) {
+        double th = i * h, sn = sin(th), w = (i == 0 || i == n) ? 1 : (i % 2 ? 4 : 2);
+        sum += w * ring_visible(a + (b - a) * sn * sn, rs, re, sep, cover) * (b - a) * 2 * sn *
+               cos(th);
+    }
+    return sum * h / 3;
+}
+
+/* Visible fraction of the limb-darkened disc by rings about the Sun's centre
+ * (the algorithm of tests/ref/gen_refs.py, in double with Simpson's rule;
+ * measured against the mpmath rows away from the tangencies: 2e-12) */
+static double ld_fraction_rings(double rs, double re, double sep)
+{
+    double b1 = fabs(sep - re), b2 = sep + re, tot, vis;
+    const int n = 4096;
+    if (b1 > rs) b1 = rs;
+    if (b2 > rs) b2 = rs;
+    tot = ring_piece(0, rs, rs, re, sep, 0, n);
+    vis = (sep < re ? 0 : ring_piece(0, b1, rs, re, sep, 0, n)) +
+          ring_piece(b1, b2, rs, re, sep, 1, n) + ring_piece(b2, rs, rs, re, sep, 0, n);
+    return vis / tot;
+}
+
+/* concentric discs (a point on the shadow axis beyond the umbra's tip):
+ * fraction_ld = 1 - F(r_e)/F(r_s), F the flux within a radius */
+static void test_ld_concentric(void **state)
+{
+    static const double dist[] = {1.4e6, 2e6, 3e6, 1e7, 1e8};
+    size_t i;
+    double worst = 0;
+    (void)state;
+    for (i = 0; i < sizeof dist / sizeof dist[0]; ++i) {
+        oi_real sun[3], pt[3];
+        oi_shadow s;
+        double want, err;
+        set3(sun, AU, 0, 0);
+        set3(pt, -dist[i], 0, 0);
+        assert_int_equal(oi_sun_fraction(sun, pt, geo_model(), &s), OI_OK);
+        assert_int_equal(s.region, OI_SHADOW_ANNULAR);
+        want = 1 - ld_flux_within((double)s.earth_radius_rad, (double)s.sun_radius_rad) /
+                       ld_flux_within((double)s.sun_radius_rad, (double)s.sun_radius_rad);
+        err = fabs((double)s.fraction_ld - want);
+#ifdef OI_SINGLE_PRECISION
+        if (!(err <= 1e-6)) {
+#else
+        if (!(err <= 1e-13)) {
+#endif
+            print_error("concentric at %g km: want %.17g got %.17g\n", dist[i], want,
+                        (double)s.fraction_ld);
+            fail();
+        }
+        worst = fmax(worst, err);
+    }
+    print_message("fraction_ld, concentric discs: worst |err| %.3g against the ring integral\n",
+                  worst);
+}
+
+/* A Sun of large apparent radius (a model radius up to 60 times the Sun's
+ * at 1 AU, r_s = 0.047 ... 0.41 rad: the series in tan^2 r_s needs its
+ * later terms), against the ring quadrature; beyond 0.5 rad the uniform
+ * disc stands in (docs/shadow.md). */
+static void test_ld_large_sun(void **state)
+{
+    static const double rsun[] = {7e6, 1.5e7, 3e7, 6e7};
+    static const double v[] = {0.1, 0.3, 0.5, 0.7, 0.9};
+    oi_model m;
+    size_t i, j;
+    (void)state;
+    memset(&m, 0, sizeof m);
+    m.no_atmosphere = 1;
+    for (i = 0; i < sizeof rsun / sizeof rsun[0]; ++i) {
+        double worst = 0, rs_seen = 0;
+        m.sun_radius_km = (oi_real)rsun[i];
+        for (j = 0; j < sizeof v / sizeof v[0] + 1; ++j) {
+            double rs = asin(rsun[i] / AU), re = asin(RE / 42164.0), psi, want, err, k, tol;
+            oi_real sun[3], pt[3];
+            oi_shadow s;
+            /* across the penumbra; the last one annular when possible */
+            if (j < sizeof v / sizeof v[0])
+                psi = fabs(re - rs) + v[j] * (re + rs - fabs(re - rs));
+            else if (rs > re)
+                psi = 0.5 * (rs - re);
+            else
+                continue;
+            set3(sun, AU, 0, 0);
+            set3(pt, -42164.0 * cos(psi), 42164.0 * sin(psi), 0);
+            assert_int_equal(oi_sun_fraction(sun, pt, &m, &s), OI_OK);
+            assert_true(s.region == OI_SHADOW_PENUMBRA || s.region == OI_SHADOW_ANNULAR);
+            want = ld_fraction_rings((double)s.sun_radius_rad, (double)s.earth_radius_rad,
+                                     (double)s.separation_rad);
+            err = fabs((double)s.fraction_ld - want);
+            /* the series' truncation after 6 terms, (tan^2 r_s)^6, plus the
+             * reference's and the precision's own error */
+            k = tan((double)s.sun_radius_rad);
+            k = pow(k * k, 6);
+#ifdef OI_SINGLE_PRECISION
+            tol = 1e-5 + k;
+#else
+            tol = 1e-10 + k;
+#endif
+            if (!(err <= tol)) {
+                print_error("large Sun r_s=%.6g sep=%.6g: want %.17g got %.17g (tol %.3g)\n",
+                            (double)s.sun_radius_rad, (double)s.separation_rad, want,
+                            (double)s.fraction_ld, tol);
+                fail();
+            }
+            worst = fmax(worst, err);
+            rs_seen = (double)s.sun_radius_rad;
+        }
+        print_message("fraction_ld, r_s = %.3g rad: worst |err| %.3g against the ring quadrature\n",
+                      rs_seen, worst);
+    }
+    /* r_s > 0.5 rad: fraction_ld is the uniform fraction */
+    {
+        oi_real sun[3], pt[3];
+        oi_shadow s;
+        double rs = asin(1e8 / AU), re = asin(RE / 42164.0);
+        m.sun_radius_km = (oi_real)1e8;
+        set3(sun, AU, 0, 0);
+        set3(pt, -42164.0 * cos(rs), 42164.0 * sin(rs), 0);
+        assert_int_equal(oi_sun_fraction(sun, pt, &m, &s), OI_OK);
+        assert_true(s.sun_radius_rad > (oi_real)0.5 && s.region == OI_SHADOW_PENUMBRA);
+        assert_true(s.fraction_ld == s.fraction);
+        (void)re;
+    }
+}
+
+#ifndef OI_SINGLE_PRECISION
+/* Point at distance dist from the Earth's centre, psi from the anti-solar
+ * axis (the Sun at 1 AU on +x); returns the shadow. */
+static oi_shadow shadow_at(double dist, double psi)
+{
+    oi_real sun[3], pt[3];
+    oi_shadow s;
+    set3(sun, AU, 0, 0);
+    set3(pt, -dist * cos(psi), dist * sin(psi), 0);
+    assert_int_equal(oi_sun_fraction(sun, pt, geo_model(), &s), OI_OK);
+    return s;
+}
+
+/* the runtime's switches, as functions of the geometry (docs/shadow.md):
+ * 0: |sep - r_e| = 7/8 r_s (centre and deficit forms);
+ * 1: cos^2(psi0/2) = 0.81 (graded panels in the penumbra);
+ * 2: e / (sin sep sin r_e) = 4 (graded panels when annular) */
+static double switch_fn(const oi_shadow *s, int which)
+{
+    double rs = (double)s->sun_radius_rad, re = (double)s->earth_radius_rad;
+    double sep = (double)s->separation_rad, h = 0.5 * (sep + re + rs);
+    if (which == 0) return fabs(sep - re) - 0.875 * rs;
+    if (which == 1) return sin(h) * sin(h - rs) / (sin(sep) * sin(re)) - 0.81;
+    return -sin(h) * sin(h - rs) / (sin(sep) * sin(re)) - 4;
+}
+
+/* fraction_ld is smooth where the method switches: no jump above 1e-12 in
+ * 40 steps of 1e-10 rad across each switch (the second differences of the
+ * true function are ~1e-15 there) */
+static void test_ld_switch_continuity(void **state)
+{
+    static const struct { double dist, lo, hi; int which; } cases[] = {
+        {42164.0, 0.155, 0.1565, 0}, /* GEO, near the lit edge: sep - re = 7/8 rs */
+        {42164.0, 0.146, 0.149, 0},  /* GEO, near the umbra: re - sep = 7/8 rs */
+        {1.5e6, 0.0004, 0.0087, 1},  /* beyond the umbra's tip */
+        {1.5e6, 1e-5, 0.00034, 2},   /* annular, off-centre */
+    };
+    size_t c;
+    (void)state;
+    for (c = 0; c < sizeof cases / sizeof cases[0]; ++c) {
+        double lo = cases[c].lo, hi = cases[c].hi, worst = 0, prev2 = 0, prev1 = 0;
+        int which = cases[c].which, k;
+        oi_shadow a = shadow_at(cases[c].dist, lo), b = shadow_at(cases[c].dist, hi);
+        double flo = switch_fn(&a, which), fhi = switch_fn(&b, which);
+        if (!(flo * fhi < 0)) {
+            print_error("switch %zu not bracketed: %g %g\n", c, flo, fhi);
+            fail();
+        }
+        for (k = 0; k < 100; ++k) {
+            double mid = 0.5 * (lo + hi);
+            oi_shadow s = shadow_at(cases[c].dist, mid);
+            if ((switch_fn(&s, which) < 0) == (flo < 0)) lo = mid;
+            else hi = mid;
+        }
+        for (k = -20; k <= 20; ++k) {
+            oi_shadow s = shadow_at(cases[c].dist, lo + 1e-10 * k);
+            double f = (double)s.fraction_ld;
+            if (k >= -18) worst = fmax(worst, fabs(f - 2 * prev1 + prev2));
+            prev2 = prev1;
+            prev1 = f;
+        }
+        print_message("fraction_ld across switch %d at psi = %.10g: worst second difference %.3g\n",
+                      which, lo, worst);
+        assert_true(worst <= 1e-12);
+    }
+}
+#endif
+#endif /* OI_NO_LIMB_DARKENING */
 
 /* ---------------------------------------------------------------- errors */
 
@@ -512,6 +784,13 @@ int main(void)
         cmocka_unit_test(test_sun_fraction_atm_choice),
         cmocka_unit_test(test_sun_exact),
         cmocka_unit_test(test_sun_monotonic),
+#ifndef OI_NO_LIMB_DARKENING
+        cmocka_unit_test(test_ld_concentric),
+        cmocka_unit_test(test_ld_large_sun),
+#ifndef OI_SINGLE_PRECISION
+        cmocka_unit_test(test_ld_switch_continuity),
+#endif
+#endif
         cmocka_unit_test(test_sun_errors),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
