@@ -10,6 +10,11 @@
  *   OI_NO_EXPOSURE       no camera model: removes oi_camera*, oi_expose*.
  *   OI_NO_ATMOSPHERE     no refraction into the shadow (sun_fraction_atm equals
  *                        sun_fraction).
+ *   OI_NO_LIMB_DARKENING no limb-darkened solar disc: removes its integral
+ *                        from src/shadow.c; oi_shadow.fraction_ld equals
+ *                        fraction (the uniform disc), and a model with
+ *                        limb_darkening = OI_LIMB_DARKENED is rejected with
+ *                        OI_ERR_MODEL (src/model.c). docs/shadow.md.
  * An option that removes a feature removes its declarations too, so code that
  * still uses the feature fails to compile.
  */

@@ -36,9 +36,11 @@ OPTSET_no_moon := -DOI_NO_MOON
 OPTSET_no_atmosphere := -DOI_NO_ATMOSPHERE
 OPTSET_no_exposure := -DOI_NO_EXPOSURE
 OPTSET_no_earth_table := -DOI_NO_EARTH_TABLE
-CROSS_OPTSETS := full sun_only no_moon no_atmosphere no_exposure no_earth_table
+OPTSET_sun_uniform := $(OPTSET_sun_only) -DOI_NO_LIMB_DARKENING
+CROSS_OPTSETS := full sun_only no_moon no_atmosphere no_exposure no_earth_table sun_uniform
 # which program each option set links (target/size_<prog>.c)
 SIZEPROG_sun_only := sun
+SIZEPROG_sun_uniform := sun
 
 # Public functions: one stub each in libstubs.a (target/stubs.c), linked after the
 # library so a function the library does not define yet is reported, not a link error.

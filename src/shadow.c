@@ -718,30 +718,42 @@ int oi__sun_shadow(const oi_real sun_km[3], const oi_real point_km[3], const oi_
     } else {
         oi_real ssun = sin_half_sq(rs);
         oi_real pa_s = OI_PI_R; /* pi - alpha_s; pi when annular */
-        oi_real hs[4];          /* the triangle's sines (penumbra, rs < 1) */
+        oi_real hs[4];          /* the triangle's sines (penumbra) */
         const oi_real *tri = NULL;
         if (sep <= rs - re) {
             /* 1 - sin^2(re/2)/sin^2(rs/2), the difference of squares
              * factored: sin((rs - re)/2) sin((rs + re)/2) */
             region = OI_SHADOW_ANNULAR;
             frac = OI_SIN(OI_R(0.5) * (rs - re)) * OI_SIN(OI_R(0.5) * (rs + re)) / ssun;
-        } else if (rs < (oi_real)1) {
-            /* the visible part of the Sun's cap directly, as the Sun's
-             * segment beyond the chord of the two crossing points minus the
-             * Earth's segment (no 1 - overlap/area: keeps the relative
-             * accuracy of a thin crescent next to the umbra); the angle at
-             * the Sun's centre enters as pi - alpha_s from tri_angle */
+        } else {
+            /* the triangle (Sun's centre, Earth's centre, a crossing point
+             * of the limbs): a_e at the Earth's centre, pi - a_s at the
+             * Sun's, both from one set of sines */
             oi_real a_e;
             half_sines(rs, re, sep, hs);
             a_e = half_angle(hs, 1, 0);
             pa_s = half_angle(hs, 2, 1);
             region = OI_SHADOW_PENUMBRA;
             tri = hs;
-            frac = (cap_segment(rs, pa_s) - cap_segment(re, a_e)) /
-                   ((oi_real)4 * OI_PI_R * ssun);
-        } else {
-            region = OI_SHADOW_PENUMBRA;
-            frac = (oi_real)1 - oi_cap_overlap(re, rs, sep) / ((oi_real)4 * OI_PI_R * ssun);
+            if (rs < (oi_real)1) {
+                /* the visible part of the Sun's cap directly, as the Sun's
+                 * segment beyond the chord of the two crossing points minus
+                 * the Earth's segment (no 1 - overlap/area: keeps the
+                 * relative accuracy of a thin crescent next to the umbra) */
+                frac = (cap_segment(rs, pa_s) - cap_segment(re, a_e)) /
+                       ((oi_real)4 * OI_PI_R * ssun);
+            } else {
+                /* a Sun of 1 rad or more (an observer within 0.19 solar
+                 * radii of its surface): Gauss-Bonnet on the lens, as in
+                 * overlap_small, 2 (pi - gamma) - 2 a_s cos rs - 2 a_e cos re
+                 * (gamma the angle at the crossing point; the chord
+                 * decomposition degenerates when both limbs approach great
+                 * circles); absolute error a few eps */
+                oi_real lens = (oi_real)2 * (half_angle(hs, 3, 1) -
+                                             half_angle(hs, 2, 0) * OI_COS(rs) -
+                                             a_e * OI_COS(re));
+                frac = (oi_real)1 - lens / ((oi_real)4 * OI_PI_R * ssun);
+            }
         }
         frac = clamp(frac, (oi_real)0, (oi_real)1);
 #ifdef OI_NO_LIMB_DARKENING
@@ -749,8 +761,8 @@ int oi__sun_shadow(const oi_real sun_km[3], const oi_real point_km[3], const oi_
         (void)tri;
         frac_ld = frac; /* the limb-darkened disc is compiled out */
 #else
-        /* beyond LD_RS_MAX (an observer within ~2 solar radii of the Sun's
-         * surface) or below 1e-15 rad the uniform disc stands in */
+        /* beyond LD_RS_MAX (an observer within 2.1 solar radii of the Sun's
+         * centre) or below 1e-15 rad the uniform disc stands in */
         frac_ld = rs <= LD_RS_MAX && rs > LD_RS_MIN
                       ? fraction_limb_darkened(rs, re, sep, pa_s, tri)
                       : frac;

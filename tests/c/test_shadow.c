@@ -426,6 +426,57 @@ static void test_sun_monotonic(void **state)
     }
 }
 
+/* A Sun of apparent radius 1 rad or more (the model's largest Sun radius,
+ * 1e8 km, 1.05e8 to 1.15e8 km away): oi_sun_fraction takes Gauss-Bonnet on the lens; the
+ * reference is 1 - oi_cap_overlap / A(r_s) (tested against mpmath above),
+ * down to 1 m altitude where both limbs approach great circles. */
+static void test_sun_large_disc(void **state)
+{
+    static const double sund[] = {1.05e8, 1.1e8, 1.15e8};
+    static const double dist[] = {42164.0, 7000.0, 6378.138};
+    static const double v[] = {0.02, 0.3, 0.5, 0.8, 0.98};
+    oi_model m;
+    size_t i, j, l, n = 0;
+    double worst = 0;
+    (void)state;
+    memset(&m, 0, sizeof m);
+    m.no_atmosphere = 1;
+    m.sun_radius_km = (oi_real)1e8;
+    for (i = 0; i < sizeof sund / sizeof sund[0]; ++i) {
+        for (l = 0; l < sizeof dist / sizeof dist[0]; ++l) {
+            for (j = 0; j < sizeof v / sizeof v[0]; ++j) {
+                double rs = asin(1e8 / sund[i]), re = asin(RE / dist[l]), psi, want, err;
+                oi_real sun[3], pt[3];
+                oi_shadow s;
+                psi = fabs(re - rs) + v[j] * (fmin(re + rs, PI) - fabs(re - rs));
+                set3(sun, sund[i], 0, 0);
+                set3(pt, -dist[l] * cos(psi), dist[l] * sin(psi), 0);
+                assert_int_equal(oi_sun_fraction(sun, pt, &m, &s), OI_OK);
+                if (s.region != OI_SHADOW_PENUMBRA) continue;
+                assert_true(s.sun_radius_rad >= (oi_real)1);
+                want = 1 - (double)oi_cap_overlap(s.earth_radius_rad, s.sun_radius_rad,
+                                                  s.separation_rad) /
+                               cap_area((double)s.sun_radius_rad);
+                err = fabs((double)s.fraction - want);
+                if (!(err <= 64 * EPS)) {
+                    print_error("large disc r_s=%.6g r_e=%.6g sep=%.6g: want %.17g got %.17g\n",
+                                (double)s.sun_radius_rad, (double)s.earth_radius_rad,
+                                (double)s.separation_rad, want, (double)s.fraction);
+                    fail();
+                }
+                /* beyond 0.5 rad the limb-darkened fraction is the uniform one */
+                assert_true(s.fraction_ld == s.fraction);
+                worst = fmax(worst, err);
+                ++n;
+            }
+        }
+    }
+    print_message("fraction, Sun of 1 rad or more: %zu points, worst |err| %.3g against "
+                  "oi_cap_overlap\n",
+                  n, worst);
+    assert_true(n >= 30);
+}
+
 /* ---------------------------------------------------------------- limb darkening */
 
 #ifndef OI_NO_LIMB_DARKENING
@@ -784,6 +835,7 @@ int main(void)
         cmocka_unit_test(test_sun_fraction_atm_choice),
         cmocka_unit_test(test_sun_exact),
         cmocka_unit_test(test_sun_monotonic),
+        cmocka_unit_test(test_sun_large_disc),
 #ifndef OI_NO_LIMB_DARKENING
         cmocka_unit_test(test_ld_concentric),
         cmocka_unit_test(test_ld_large_sun),
