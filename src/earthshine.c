@@ -321,6 +321,13 @@ static const es_grid es_default_grid = {
  *  4. The table is scale-free: a model Earth radius other than the default
  *     uses the same table (its altitude range scales with the radius).
  *  5. The model Earth has no atmosphere; refracted light is not included.
+ *  6. Cost (docs/earthshine-table.md, "Cost"): the default table's grid is
+ *     compiled in (no validation or double conversion per call); a caller's
+ *     table is validated on every call (its double fields compared by bit
+ *     pattern, then converted once to oi_real). One stencil (cells and
+ *     weights) serves q and psi. Beyond the cap's far edge a table covering
+ *     every altitude returns without an arctangent. Results agree with the
+ *     previous lookup to rounding (tests/c/test_earthshine.c).
  * References:
  *  Penney 2009 (seed), III.3 (table of phi over theta and altitude; its
  *  analytic model corrected as in PHYSICS.md errata). Catmull & Rom 1974;
