@@ -418,6 +418,26 @@ int oi_expose(const oi_camera *camera, const oi_expose_in *in,
     return expose_valid(camera, in, goal, out);
 }
 
+/* GCC and clang: keep scene_model's copy of the model out of the frame of
+ * oi_expose_scene, which is live during the choice as well (make stack);
+ * elsewhere the compiler decides. */
+#if defined(__GNUC__)
+#define EXP_NOINLINE __attribute__((noinline))
+#else
+#define EXP_NOINLINE
+#endif
+
+/* The model constants oi_expose_scene needs (oi__model_resolve's status). */
+static EXP_NOINLINE int scene_model(const oi_model *model, oi_real *re, oi_real *au, oi_real *tsi)
+{
+    oi_model m;
+    int st = oi__model_resolve(model, &m);
+    *re = m.earth_radius_km;
+    *au = m.au_km;
+    *tsi = m.tsi_w_m2;
+    return st;
+}
+
 /*
  * oi_expose_scene: exposure choice from a scene and its illumination.
  *
@@ -497,13 +517,13 @@ int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
     memset(out, 0, sizeof *out);
     if (camera == NULL || scene == NULL || illum == NULL) return OI_ERR_NULL;
     if (!scene->has_observer) return OI_ERR_NULL;
-    {
-        oi_model m; /* in a block: its stack is reused below */
-        st = oi__model_resolve(model, &m);
+    if (model == NULL) { /* the default model (src/model.c), without a copy */
+        re = (oi_real)OI_EARTH_RADIUS_KM;
+        au = (oi_real)OI_AU_KM;
+        tsi = (oi_real)OI_TSI_W_M2;
+    } else {
+        st = scene_model(model, &re, &au, &tsi);
         if (st != OI_OK) return st;
-        re = m.earth_radius_km;
-        au = m.au_km;
-        tsi = m.tsi_w_m2;
     }
     if (!oi__finite3(scene->sun_km) || !oi__finite3(scene->target_km) ||
         !oi__finite3(scene->observer_km)) {
@@ -541,11 +561,12 @@ int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
      * observer is at the Sun. */
     sun_angle = 0;
     {
-        oi_real sun_rel[3], us[3], cr[3];
-        oi__sub(scene->sun_km, scene->observer_km, sun_rel);
-        if (oi__finite3(b) && oi__finite3(sun_rel) && oi__unit(sun_rel, us) > 0) {
-            oi__cross(us, bh, cr);
-            sun_angle = OI_ATAN2(oi__norm(cr), oi__dot(us, bh));
+        oi_real u[3], d; /* sun - observer, its unit vector, then u x bh */
+        oi__sub(scene->sun_km, scene->observer_km, u);
+        if (oi__finite3(b) && oi__finite3(u) && oi__unit(u, u) > 0) {
+            d = oi__dot(u, bh);
+            oi__cross(u, bh, u);
+            sun_angle = OI_ATAN2(oi__norm(u), d);
         }
     }
     if (sun_angle < camera->sun_exclusion_rad) in.flags |= OI_FLAG_SUN_EXCLUSION;
@@ -563,13 +584,13 @@ int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
     sin_rho = re / r_obs;
     cos_rho = OI_SQRT((one - sin_rho) * (one + sin_rho));
     {
-        oi_real uo[3], cr[3];
-        uo[0] = scene->observer_km[0] / r_obs;
-        uo[1] = scene->observer_km[1] / r_obs;
-        uo[2] = scene->observer_km[2] / r_obs;
-        cos_g = -oi__dot(uo, bh);
-        oi__cross(uo, bh, cr);
-        sin_g = OI_SQRT(oi__dot(cr, cr)); /* unit vectors: no overflow */
+        oi_real u[3]; /* unit vector of the observer, then u x bh */
+        u[0] = scene->observer_km[0] / r_obs;
+        u[1] = scene->observer_km[1] / r_obs;
+        u[2] = scene->observer_km[2] / r_obs;
+        cos_g = -oi__dot(u, bh);
+        oi__cross(u, bh, u);
+        sin_g = OI_SQRT(oi__dot(u, u)); /* unit vectors: no overflow */
     }
     sin_gr = cos_rho * sin_g - sin_rho * cos_g; /* sin(gamma - rho) */
     cos_gr = cos_rho * cos_g + sin_rho * sin_g; /* cos(gamma - rho) */
@@ -588,16 +609,16 @@ int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
      * avoids cancellation, and ob^2 - c = (-ob - sc)(-ob + sc). */
     ob = oi__dot(scene->observer_km, bh);
     if (ob < 0 && -ob >= sc) {
-        oi_real hit[3], sun_hit[3], nh[3], sh[3];
+        oi_real hit[3], sun_hit[3]; /* then their unit vectors, in place */
         s_hit = c / (-ob + OI_SQRT((-ob - sc) * (-ob + sc)));
         hit[0] = scene->observer_km[0] + s_hit * bh[0];
         hit[1] = scene->observer_km[1] + s_hit * bh[1];
         hit[2] = scene->observer_km[2] + s_hit * bh[2];
         if (s_hit < range) in.flags |= OI_FLAG_OCCULTED;
         oi__sub(scene->sun_km, hit, sun_hit);
-        (void)oi__unit(hit, nh);
-        (void)oi__unit(sun_hit, sh);
-        cos_i = oi__dot(nh, sh);
+        (void)oi__unit(hit, hit);
+        (void)oi__unit(sun_hit, sun_hit);
+        cos_i = oi__dot(hit, sun_hit);
         if (cos_i > 0) {
             au_d = au / oi__norm(scene->sun_km);
             e0 = tsi * au_d * au_d;

@@ -540,6 +540,42 @@ static void test_scene_nadir_subsolar(void **state)
     assert_true(out.flags & OI_FLAG_ECLIPSED);
 }
 
+/* The model's constants reach the background: TSI 1000 W/m^2 and an AU of
+ * 1.5e8 km (the Sun at 1.01 x that) scale the radiance of the sub-solar
+ * point, 0.3 TSI (AU / d)^2 / pi; an Earth radius of 6000 km puts the
+ * observer 4000 km above it (the boresight still meets it). A model equal
+ * to the defaults gives exactly the NULL model's result. */
+static void test_scene_custom_model(void **state)
+{
+    oi_camera c = synth();
+    oi_scene s;
+    oi_illum il = lit_illum(1e-15);
+    oi_exposure out, out_null;
+    oi_model m;
+    double au = 1.5e8, sun_d = 1.01 * au, radiance;
+    (void)state;
+    c.pixel_pitch_m = (oi_real)1e-7;
+    c.focal_length_m = 1;
+    c.photon_energy_j = (oi_real)1e-17;
+    oi_scene_defaults(&s);
+    set3(s.sun_km, sun_d, 0, 0);
+    set3(s.observer_km, 10000, 0, 0);
+    set3(s.target_km, 9000, 0, 0);
+    s.has_observer = 1;
+    memset(&m, 0, sizeof m);
+    m.tsi_w_m2 = 1000;
+    m.au_km = (oi_real)au;
+    m.earth_radius_km = 6000;
+    check_int(OI_OK, oi_expose_scene(&c, &s, &il, &m, NULL, &out), "status");
+    radiance = 0.3 * 1000.0 * (au / sun_d) * (au / sun_d) / PI;
+    check_rel(radiance * 1e3 * out.exposure_s, out.background_e, REL_TOL * 10, "background");
+    /* all zero fields: the defaults, as NULL */
+    memset(&m, 0, sizeof m);
+    check_int(OI_OK, oi_expose_scene(&c, &s, &il, &m, NULL, &out), "status zero model");
+    check_int(OI_OK, oi_expose_scene(&c, &s, &il, NULL, NULL, &out_null), "status NULL model");
+    assert_memory_equal(&out, &out_null, sizeof out);
+}
+
 /* Boresight through the Earth: the target is hidden; its flux is dropped. */
 static void test_scene_occulted(void **state)
 {
@@ -1267,6 +1303,7 @@ int main(void)
         cmocka_unit_test(test_builtin_cameras),
         cmocka_unit_test(test_flag_names),
         cmocka_unit_test(test_scene_nadir_subsolar),
+        cmocka_unit_test(test_scene_custom_model),
         cmocka_unit_test(test_scene_occulted),
         cmocka_unit_test(test_scene_sun_and_earth_angles),
         cmocka_unit_test(test_scene_resolved_target),
