@@ -16,3 +16,15 @@ check-ref-shadow: ref-shadow ## regenerate the phase/shadow references and fail 
 
 shadow-report: deps-py ## planar Montenbruck-Gill vs exact spherical Sun fraction (regenerates refs)
 	$(PY) tests/ref/gen_refs.py --only shadow --report
+
+# test_shadow with the limb-darkened disc compiled out (OI_NO_LIMB_DARKENING,
+# include/oi_config.h): fraction_ld == fraction, OI_LIMB_DARKENED refused.
+NOLD_DIR := $(BUILDDIR)/nold
+.PHONY: test-shadow-nold
+test-shadow-nold: ## test_shadow built with -DOI_NO_LIMB_DARKENING, both precisions
+	@$(MAKE) --no-print-directory BUILDDIR=$(NOLD_DIR) EXTRA_DEFS=-DOI_NO_LIMB_DARKENING \
+	  TEST_CFLAGS="$(TEST_CFLAGS) -DOI_NO_LIMB_DARKENING" \
+	  $(NOLD_DIR)/tests/double/test_shadow $(NOLD_DIR)/tests/float/test_shadow
+	$(NOLD_DIR)/tests/double/test_shadow
+	$(NOLD_DIR)/tests/float/test_shadow
+TEST_TARGETS += test-shadow-nold

@@ -628,12 +628,18 @@ static oi_real apparent_radius(oi_real rad, oi_real dist)
  *     <= r_sun - r_earth: the Earth's disc inside the Sun's, beyond the
  *     umbra's tip; fraction = 1 - A(r_earth)/A(r_sun)), else PENUMBRA.
  *  3. Limb darkening: Neckel & Labs (1994) fifth-degree polynomial at
- *     559.95 nm (V band). fraction_ld integrates the disc's intensity over
- *     rings about the Sun's centre (exact spherical ring geometry) times the
- *     uncovered arc of each ring, with fixed 8-point Gauss-Legendre panels on
- *     each piece between the rings where covering starts or stops (graded
- *     panels when the Earth's disc is nearly internally tangent to the
- *     Sun's, beyond the umbra's tip).
+ *     559.95 nm (V band). fraction_ld by Green's theorem: the flux hidden
+ *     is a line integral, along the Earth's limb inside the Sun's disc, of
+ *     the flux within a radius about the Sun's centre (a closed form, the
+ *     polynomial integrated against a binomial series in tan^2 r_sun), plus
+ *     that flux times the angle of the Sun's limb inside the Earth's disc;
+ *     one 12-point Gauss-Legendre panel in a variable that makes the limb's
+ *     square roots smooth (graded panels when the Earth's disc is nearly
+ *     internally tangent to the Sun's, beyond the umbra's tip). For
+ *     r_sun > 0.5 rad (an observer within 2.1 solar radii of the Sun's
+ *     centre) or < 1e-15 rad, fraction_ld = fraction. With
+ *     OI_NO_LIMB_DARKENING (include/oi_config.h) fraction_ld = fraction
+ *     always, and a model with OI_LIMB_DARKENED gives OI_ERR_MODEL.
  *  4. Accuracy (docs/shadow.md), against an mpmath ring quadrature of the
  *     same geometry: double, fraction and fraction_ld within 8e-14 absolute
  *     (1 m altitude to 1e7 km, 0.983-1.017 AU, shadow edges to 1e-12 rad);
@@ -641,6 +647,8 @@ static oi_real apparent_radius(oi_real rad, oi_real dist)
  *     per radian of separation, so it is bounded by that times the rounding
  *     of the separation. Near the surface |point|^2 - R^2 is formed in
  *     compensated arithmetic (the rounding of |point| would dominate).
+ *     fraction_ld for a Sun of r_sun = 0.2 / 0.41 rad: 7e-11 / 5e-7 (the
+ *     series' truncation, below (tan^2 r_sun)^6).
  *  5. fraction_atm: without the atmosphere (model->no_atmosphere, or
  *     OI_NO_ATMOSPHERE) it equals fraction, or fraction_ld with
  *     OI_LIMB_DARKENED; otherwise src/atmosphere.c adds refraction and
@@ -650,6 +658,9 @@ static oi_real apparent_radius(oi_real rad, oi_real dist)
  *   (conical shadow model; its planar two-circle overlap is what this
  *   function replaces by the exact spherical one).
  *   Neckel, H. & Labs, D. 1994, Sol. Phys. 153, 91 (limb darkening).
+ *   Green's theorem in polar form: the flux over a region is the line
+ *   integral of F(rho) dt around it, F(rho) the flux within rho (see
+ *   fraction_limb_darkened).
  */
 int oi_sun_fraction(const oi_real sun_km[3], const oi_real point_km[3],
                     const oi_model *model, oi_shadow *out)
@@ -667,10 +678,10 @@ int oi_sun_fraction(const oi_real sun_km[3], const oi_real point_km[3],
 /* oi_sun_fraction with a resolved model, and (light_dir not NULL, atmosphere
  * compiled in and on) the mean direction the sunlight arrives from: see
  * src/oi_internal.h. */
-int oi__sun_shadow(const oi_real sun_km[3], const oi_real point_km[3], const oi_model *model,
+int oi__sun_shadow(const oi_real sun_km[3], const oi_real point_km[3], const oi_model *resolved,
                    oi_shadow *out, oi_real light_dir[3])
 {
-    const oi_model *m = model;
+    const oi_model *m = resolved;
     oi_real ds, dp, dsp, rs, re, sep, frac, frac_ld, q_earth;
     int st = OI_OK, region;
 
