@@ -345,12 +345,14 @@ int oi_earthshine(oi_real theta, oi_real h_km, const oi_model *model,
 
     st = oi__model_resolve(model, &m);
     if (st < 0) return st;
-    return oi__earthshine(theta, h_km, &m, phi, psi);
+    return oi__earthshine(theta, (oi_real)2, (oi_real)0, h_km, &m, phi, psi);
 }
 
-/* oi_earthshine with a resolved model and non-NULL outputs (oi_internal.h). */
-int oi__earthshine(oi_real theta, oi_real h_km, const oi_model *resolved, oi_real *phi,
-                   oi_real *psi)
+/* oi_earthshine with a resolved model and non-NULL outputs, and cos(theta),
+ * sin(theta) when the caller has them (cos_theta > 1: not given); see
+ * src/oi_internal.h. */
+int oi__earthshine(oi_real theta, oi_real cos_theta, oi_real sin_theta, oi_real h_km,
+                   const oi_model *resolved, oi_real *phi, oi_real *psi)
 {
     const oi_model *m = resolved;
     es_grid g;
@@ -419,8 +421,8 @@ int oi__earthshine(oi_real theta, oi_real h_km, const oi_model *resolved, oi_rea
             if (theta <= tb && tb > (oi_real)0) {
                 /* cap wholly lit: phi = cos(theta) phi(0, x), tan psi =
                  * tan(theta) G(x) exactly; stored q0 = phi(0, x) / x^2, G / w */
-                const oi_real ct = OI_COS(theta);
-                const oi_real st = OI_SIN(theta);
+                const oi_real ct = cos_theta > (oi_real)1 ? OI_COS(theta) : cos_theta;
+                const oi_real st = cos_theta > (oi_real)1 ? OI_SIN(theta) : sin_theta;
                 fv = theta / tb * (oi_real)(grid->t->n_lit - 1);
                 seg_interp(grid, 0, grid->t->n_lit, fv, fw, &q, &p);
                 q *= ct;

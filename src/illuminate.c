@@ -189,7 +189,7 @@ int oi_illuminate(const oi_scene *scene, const oi_model *model, oi_illum *out)
 {
     oi_model m;
     oi_real e0, phi = (oi_real)0, psi = (oi_real)0, to_sun[3], sun_dir[3], sun_distance;
-    oi_real s_hat[3], r_hat[3], d_sun, r_target;
+    oi_real s_hat[3], r_hat[3], d_sun, r_target, cos_theta, sin_theta;
     int st, warn = OI_OK;
 
     if (out == NULL) return OI_ERR_NULL;
@@ -210,7 +210,13 @@ int oi_illuminate(const oi_scene *scene, const oi_model *model, oi_illum *out)
 
     d_sun = oi__unit_bounded(scene->sun_km, s_hat);
     r_target = oi__unit_bounded(scene->target_km, r_hat);
-    out->earth_theta = oi__angle_unit(s_hat, r_hat);
+    {
+        oi_real c[3];
+        oi__cross(s_hat, r_hat, c);
+        sin_theta = oi__norm_bounded(c);
+        cos_theta = oi__dot(s_hat, r_hat);
+        out->earth_theta = OI_ATAN2(sin_theta, cos_theta);
+    }
     out->earth_h_km = r_target - m.earth_radius_km;
     e0 = solar_irradiance(&m, d_sun);
 
@@ -219,7 +225,8 @@ int oi_illuminate(const oi_scene *scene, const oi_model *model, oi_illum *out)
         memcpy(out->dir_sun, sun_dir, sizeof sun_dir);
     }
     if (scene->terms & OI_TERM_EARTH) {
-        st = oi__earthshine(out->earth_theta, out->earth_h_km, &m, &phi, &psi);
+        st = oi__earthshine(out->earth_theta, cos_theta, sin_theta, out->earth_h_km, &m, &phi,
+                            &psi);
         if (st < 0) goto fail;
         if (st > 0) warn = st;
         out->earth_phi = phi;

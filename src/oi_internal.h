@@ -127,10 +127,12 @@ int oi__sun_shadow(const oi_real sun_km[3], const oi_real point_km[3], const oi_
 /*
  * oi_earthshine (src/earthshine.c) for callers that already hold a resolved
  * model and non-NULL phi, psi: same results and statuses, the model is not
- * validated again.
+ * validated again. cos_theta, sin_theta: the cosine and sine theta was formed
+ * from (theta = atan2(sin, cos) of unit vectors), used instead of OI_COS and
+ * OI_SIN where needed; cos_theta > 1 means not given.
  */
-int oi__earthshine(oi_real theta, oi_real h_km, const oi_model *resolved, oi_real *phi,
-                   oi_real *psi);
+int oi__earthshine(oi_real theta, oi_real cos_theta, oi_real sin_theta, oi_real h_km,
+                   const oi_model *resolved, oi_real *phi, oi_real *psi);
 
 /* oi_lambert_phase (src/phase.c) for a caller that holds cos(xi) and
  * sin(xi) of the same angle (e.g. the dot and cross products of two unit

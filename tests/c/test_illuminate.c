@@ -283,6 +283,45 @@ static void test_moon_in_umbra_is_dark(void **state)
 }
 #endif
 
+/* oi_illuminate hands earthshine the cosine and sine theta came from: its
+ * earth_phi and earth_psi must agree with the public oi_earthshine at the
+ * returned theta and altitude, over random targets from 1 km up. */
+static void test_earthshine_matches_public_lookup(void **state)
+{
+    oi_scene s = lit_scene();
+    oi_illum out;
+    uint64_t r = 777u;
+    int i;
+    double worst = 0;
+    (void)state;
+    s.terms = OI_TERM_EARTH;
+    s.has_observer = 0;
+    for (i = 0; i < 5000; i++) {
+        double u[4], rad, len;
+        oi_real phi, psi;
+        int k;
+        for (k = 0; k < 4; k++) {
+            r = r * 6364136223846793005ULL + 1442695040888963407ULL;
+            u[k] = (double)(r >> 11) / 9007199254740992.0;
+        }
+        rad = 6378.137 + pow(10.0, u[3] * 5.0); /* 1 km .. 1e5 km */
+        len = sqrt((u[0] - 0.5) * (u[0] - 0.5) + (u[1] - 0.5) * (u[1] - 0.5) +
+                   (u[2] - 0.5) * (u[2] - 0.5));
+        if (len < 1e-3) continue;
+        set3(s.target_km, rad * (u[0] - 0.5) / len, rad * (u[1] - 0.5) / len,
+             rad * (u[2] - 0.5) / len);
+        assert_true(oi_illuminate(&s, NULL, &out) >= 0);
+        assert_true(oi_earthshine(out.earth_theta, out.earth_h_km, NULL, &phi, &psi) >= 0);
+        if (phi > 0) {
+            double rel = fabs((double)out.earth_phi - (double)phi) / (double)phi;
+            if (rel > worst) worst = rel;
+        }
+        check_rel((double)phi, out.earth_phi, REL_TOL * 10, "earth_phi vs oi_earthshine");
+        assert_true(fabs((double)out.earth_psi - (double)psi) <= REL_TOL * 10);
+    }
+    print_message("earth_phi vs oi_earthshine: worst relative difference %.3g\n", worst);
+}
+
 static void test_target_in_umbra(void **state)
 {
     oi_scene s = lit_scene();
@@ -472,6 +511,7 @@ int main(void)
         cmocka_unit_test(test_moon_phase_law_irradiance),
         cmocka_unit_test(test_moon_fraction_matches_shadow),
 #endif
+        cmocka_unit_test(test_earthshine_matches_public_lookup),
         cmocka_unit_test(test_target_in_umbra),
 #ifndef OI_NO_ATMOSPHERE
         cmocka_unit_test(test_refracted_sunlight_in_umbra),
