@@ -318,8 +318,8 @@ static const oi_real ld_coef[LD_JMAX + 1][6] = {
 };
 
 /* 12-point Gauss-Legendre rule on [0, 1] (nodes x < 1/2; 1 - x shares the
- * weight), with sin(pi x / 2) and cos(pi x / 2) for the undivided panel
- * [0, pi/2] (mpmath, 40 digits, Newton iteration on P_12). */
+ * weight; x and w from tests/ref/gen_refs.py --gauss 12), with sin(pi x/2)
+ * and cos(pi x/2) for the undivided panel [0, pi/2] (mpmath, 40 digits). */
 #define LD_HALF 6
 static const oi_real ld_node[LD_HALF][4] = {
     {OI_R(0.00921968287664037465473), OI_R(0.0235876681932559135973),
