@@ -14,7 +14,10 @@
  *                        from src/shadow.c; oi_shadow.fraction_ld equals
  *                        fraction (the uniform disc), and a model with
  *                        limb_darkening = OI_LIMB_DARKENED is rejected with
- *                        OI_ERR_MODEL (src/model.c). docs/shadow.md.
+ *                        OI_ERR_MODEL (src/model.c): the one option whose
+ *                        declarations stay (the field and the constant
+ *                        belong to the model's ABI), refused at run time
+ *                        instead. docs/shadow.md.
  * An option that removes a feature removes its declarations too, so code that
  * still uses the feature fails to compile.
  */
