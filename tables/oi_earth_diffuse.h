@@ -12,12 +12,12 @@
 #endif
 
 #define OI_EARTH_DIFFUSE_N_LIT 2
-#define OI_EARTH_DIFFUSE_N_TERM 65
+#define OI_EARTH_DIFFUSE_N_TERM 49
 #define OI_EARTH_DIFFUSE_N_ALT 122
-#define OI_EARTH_DIFFUSE_N_VALUES 8174
+#define OI_EARTH_DIFFUSE_N_VALUES 6222
 
 #ifndef OI_NO_EARTH_TABLE
-/* oi_earth_diffuse: altitude 0 km to infinity, max relative error 2.908e-04 (see oi_earth_diffuse.c). */
+/* oi_earth_diffuse: altitude 0 km to infinity, max relative error 5.174e-04 (see oi_earth_diffuse.c). */
 extern const oi_earth_table oi_earth_diffuse;
 #endif
 

@@ -146,9 +146,11 @@ def main():
                 ok = False
                 goals.append("goal.zero_data_bss.%s.%s missed (%d bytes of .data/.bss in the library)"
                              % (cfg, s, data + bss))
-            if s == "sun_only":
-                goals.append("goal.sun_only_flash_under_4KiB.%s %s (%d bytes excl. libm, limit 4096)"
-                             % (cfg, "met" if flash < 4096 else "missed", flash))
+            if s in ("sun_only", "sun_uniform"):
+                # the goal's "Sun-only shadow build": sun_uniform is the smallest
+                # (uniform disc); sun_only keeps the limb-darkened fraction
+                goals.append("goal.sun_only_flash_under_4KiB.%s.%s %s (%d bytes excl. libm, limit 4096)"
+                             % (s, cfg, "met" if flash < 4096 else "missed", flash))
             if s == "full":
                 goals.append("goal.full_flash_under_96KiB.%s %s (%d bytes incl. tables, excl. libm, limit 98304)"
                              % (cfg, "met" if flash < 98304 else "missed", flash))
