@@ -108,23 +108,42 @@ static int certainly_lit(const oi_real u_sun[3], oi_real d_sun, const oi_real po
     return cos_sep < cos_e * cos_s - sin_e * sin_s - OI_R(1e-6);
 }
 
-/* Scalar irradiance of moonlight at the target; moon_fraction is the fraction
- * of sunlight reaching the Moon. */
-static int moon_irradiance(const oi_scene *s, const oi_model *m, oi_real *e_moon,
-                           oi_real dir[3], oi_real *moon_fraction)
+/* certainly_lit for the Moon (its own frame, not live during the shadow call). */
+static OI_NOINLINE int moon_certainly_lit(const oi_scene *s, const oi_model *m)
 {
-    oi_real to_sun[3], u_sun[3], to_target[3], d_sun, d_target, alpha, ratio;
+    oi_real to_sun[3], d_sun;
     oi__sub(s->sun_km, s->moon_km, to_sun);
-    oi__sub(s->target_km, s->moon_km, to_target);
-    d_sun = oi__unit_bounded(to_sun, u_sun);
-    if (certainly_lit(u_sun, d_sun, s->moon_km, oi__norm_bounded(s->moon_km), m)) {
+    d_sun = oi__unit_bounded(to_sun, to_sun);
+    return certainly_lit(to_sun, d_sun, s->moon_km, oi__norm_bounded(s->moon_km), m);
+}
+
+/* Fraction of sunlight reaching the Moon. Called from oi_illuminate itself
+ * with only the shadow's result in its frame: the shadow call's chain is the
+ * deepest of oi_illuminate (make stack). */
+static OI_NOINLINE int moon_sun_fraction(const oi_scene *s, const oi_model *m,
+                                         oi_real *moon_fraction)
+{
+    oi_shadow moon_shadow;
+    int st;
+    if (moon_certainly_lit(s, m)) {
         *moon_fraction = (oi_real)1;
-    } else {
-        oi_shadow moon_shadow;
-        int st = oi__sun_shadow(s->sun_km, s->moon_km, m, &moon_shadow, NULL);
-        if (st < 0) return st;
-        *moon_fraction = moon_shadow.fraction_atm;
+        return OI_OK;
     }
+    st = oi__sun_shadow(s->sun_km, s->moon_km, m, &moon_shadow, NULL);
+    if (st < 0) return st;
+    *moon_fraction = moon_shadow.fraction_atm;
+    return OI_OK;
+}
+
+/* Scalar irradiance of moonlight at the target and its direction, given
+ * out->moon_sun_fraction. */
+static OI_NOINLINE int moon_term(const oi_scene *s, const oi_model *m, oi_illum *out)
+{
+    oi_real u_sun[3], to_target[3], d_sun, d_target, alpha, ratio, e_moon;
+    oi_real *dir = out->dir_moon;
+    oi__sub(s->sun_km, s->moon_km, u_sun);
+    d_sun = oi__unit_bounded(u_sun, u_sun);
+    oi__sub(s->target_km, s->moon_km, to_target);
     d_target = oi__unit(to_target, dir);
     if (!(d_target > m->moon_radius_km)) return OI_ERR_GEOMETRY;
     alpha = oi__angle_unit(u_sun, dir);
@@ -133,17 +152,17 @@ static int moon_irradiance(const oi_scene *s, const oi_model *m, oi_real *e_moon
     dir[2] = -dir[2];
     if (m->moon_model == OI_MOON_LAMBERT) {
         ratio = m->moon_radius_km / d_target;
-        *e_moon = solar_irradiance(m, d_sun) * m->moon_albedo * ratio * ratio *
-                  oi_lambert_phase(alpha);
+        e_moon = solar_irradiance(m, d_sun) * m->moon_albedo * ratio * ratio *
+                 oi_lambert_phase(alpha);
     } else {
         /* Full Moon at mean distance and 1 AU: V = OI_MOON_MAG_V_FULL; scale by
          * both inverse squares and the phase law (Krisciunas & Schaefer 1991):
          * 10^(-0.4 (V_full - V_sun)) = MOON_FULL_OVER_SUN. */
         ratio = (oi_real)OI_MOON_MEAN_DISTANCE_KM / d_target;
-        *e_moon = solar_irradiance(m, d_sun) * MOON_FULL_OVER_SUN * ratio * ratio *
-                  oi_moon_phase_law(alpha);
+        e_moon = solar_irradiance(m, d_sun) * MOON_FULL_OVER_SUN * ratio * ratio *
+                 oi_moon_phase_law(alpha);
     }
-    *e_moon *= *moon_fraction;
+    out->e_moon = e_moon * out->moon_sun_fraction;
     return OI_OK;
 }
 #endif
@@ -185,11 +204,72 @@ static oi_real reflected_flux(oi_real e, const oi_real dir[3], const oi_real obs
  *     overflow scaling and angles between unit vectors are formed directly
  *     (oi__angle_unit), each unit vector once. docs/performance.md.
  */
+/* The Sun's term and the shadow: e_sun, dir_sun, shadow (its own frame: the
+ * shadow call's chain is the deepest of oi_illuminate). */
+static OI_NOINLINE int sun_term(const oi_scene *scene, const oi_model *m, oi_illum *out)
+{
+    oi_real to_sun[3], sun_distance;
+    int st;
+    /* the Sun's direction, replaced by the refracted light's mean direction
+     * where the atmosphere bends sunlight into the shadow */
+    oi__sub(scene->sun_km, scene->target_km, to_sun);
+    sun_distance = oi__unit_bounded(to_sun, to_sun);
+    st = oi__sun_shadow(scene->sun_km, scene->target_km, m, &out->shadow, to_sun);
+    if (st < 0) return st;
+    if (scene->terms & OI_TERM_SUN) {
+        out->e_sun = solar_irradiance(m, sun_distance) * out->shadow.fraction_atm;
+        memcpy(out->dir_sun, to_sun, sizeof to_sun);
+    }
+    return st;
+}
+
+/* theta, h and the Earth's term: e_earth, dir_earth, earth_phi, earth_psi. */
+static OI_NOINLINE int earth_term(const oi_scene *scene, const oi_model *m, oi_illum *out)
+{
+    oi_real s_hat[3], r_hat[3], c[3], cos_theta, sin_theta, phi, psi;
+    int st = OI_OK;
+    const oi_real d_sun = oi__unit_bounded(scene->sun_km, s_hat);
+    const oi_real r_target = oi__unit_bounded(scene->target_km, r_hat);
+    oi__cross(s_hat, r_hat, c);
+    sin_theta = oi__norm_bounded(c);
+    cos_theta = oi__dot(s_hat, r_hat);
+    out->earth_theta = OI_ATAN2(sin_theta, cos_theta);
+    out->earth_h_km = r_target - m->earth_radius_km;
+    if (scene->terms & OI_TERM_EARTH) {
+        st = oi__earthshine(out->earth_theta, cos_theta, sin_theta, out->earth_h_km, m, &phi,
+                            &psi);
+        if (st < 0) return st;
+        out->earth_phi = phi;
+        out->earth_psi = psi;
+        out->e_earth = scene->earth_albedo * solar_irradiance(m, d_sun) * phi;
+        earth_direction(r_hat, s_hat, psi, out->dir_earth);
+    }
+    return st;
+}
+
+/* What the observer receives: range, phase angles, fluxes, magnitude. */
+static OI_NOINLINE int observer_term(const oi_scene *scene, const oi_model *m, oi_illum *out)
+{
+    oi_real obs_hat[3], ratio;
+    oi__sub(scene->observer_km, scene->target_km, obs_hat);
+    out->range_km = oi__unit(obs_hat, obs_hat);
+    /* radius and range in the same unit */
+    ratio = scene->target_radius_m / (out->range_km * OI_R(1000.0));
+    if (!(ratio < (oi_real)1)) return OI_ERR_OBSERVER_AT_TARGET;
+    out->flux_sun = reflected_flux(out->e_sun, out->dir_sun, obs_hat, ratio,
+                                   scene->target_albedo, &out->phase_sun);
+    out->flux_earth = reflected_flux(out->e_earth, out->dir_earth, obs_hat, ratio,
+                                     scene->target_albedo, &out->phase_earth);
+    out->flux_moon = reflected_flux(out->e_moon, out->dir_moon, obs_hat, ratio,
+                                    scene->target_albedo, &out->phase_moon);
+    out->flux_obs = out->flux_sun + out->flux_earth + out->flux_moon;
+    out->mag_v = oi__magnitude_v(out->flux_obs, m->tsi_w_m2);
+    return OI_OK;
+}
+
 int oi_illuminate(const oi_scene *scene, const oi_model *model, oi_illum *out)
 {
     oi_model m;
-    oi_real e0, phi = (oi_real)0, psi = (oi_real)0, to_sun[3], sun_dir[3], sun_distance;
-    oi_real s_hat[3], r_hat[3], d_sun, r_target, cos_theta, sin_theta;
     int st, warn = OI_OK;
 
     if (out == NULL) return OI_ERR_NULL;
@@ -200,65 +280,23 @@ int oi_illuminate(const oi_scene *scene, const oi_model *model, oi_illum *out)
     st = check_scene(scene, &m);
     if (st < 0) return st;
 
-    /* the Sun's direction, replaced by the refracted light's mean direction
-     * where the atmosphere bends sunlight into the shadow */
-    oi__sub(scene->sun_km, scene->target_km, to_sun);
-    sun_distance = oi__unit_bounded(to_sun, sun_dir);
-    st = oi__sun_shadow(scene->sun_km, scene->target_km, &m, &out->shadow, sun_dir);
+    st = sun_term(scene, &m, out);
     if (st < 0) goto fail;
     if (st > 0) warn = st;
-
-    d_sun = oi__unit_bounded(scene->sun_km, s_hat);
-    r_target = oi__unit_bounded(scene->target_km, r_hat);
-    {
-        oi_real c[3];
-        oi__cross(s_hat, r_hat, c);
-        sin_theta = oi__norm_bounded(c);
-        cos_theta = oi__dot(s_hat, r_hat);
-        out->earth_theta = OI_ATAN2(sin_theta, cos_theta);
-    }
-    out->earth_h_km = r_target - m.earth_radius_km;
-    e0 = solar_irradiance(&m, d_sun);
-
-    if (scene->terms & OI_TERM_SUN) {
-        out->e_sun = solar_irradiance(&m, sun_distance) * out->shadow.fraction_atm;
-        memcpy(out->dir_sun, sun_dir, sizeof sun_dir);
-    }
-    if (scene->terms & OI_TERM_EARTH) {
-        st = oi__earthshine(out->earth_theta, cos_theta, sin_theta, out->earth_h_km, &m, &phi,
-                            &psi);
-        if (st < 0) goto fail;
-        if (st > 0) warn = st;
-        out->earth_phi = phi;
-        out->earth_psi = psi;
-        out->e_earth = scene->earth_albedo * e0 * phi;
-        earth_direction(r_hat, s_hat, psi, out->dir_earth);
-    }
+    st = earth_term(scene, &m, out);
+    if (st < 0) goto fail;
+    if (st > 0) warn = st;
 #ifndef OI_NO_MOON
     if (scene->terms & OI_TERM_MOON) {
-        st = moon_irradiance(scene, &m, &out->e_moon, out->dir_moon, &out->moon_sun_fraction);
+        st = moon_sun_fraction(scene, &m, &out->moon_sun_fraction);
+        if (st < 0) goto fail;
+        st = moon_term(scene, &m, out);
         if (st < 0) goto fail;
     }
 #endif
-
     if (scene->has_observer) {
-        oi_real to_obs[3], obs_hat[3], ratio;
-        oi__sub(scene->observer_km, scene->target_km, to_obs);
-        out->range_km = oi__unit(to_obs, obs_hat);
-        /* radius and range in the same unit */
-        ratio = scene->target_radius_m / (out->range_km * OI_R(1000.0));
-        if (!(ratio < (oi_real)1)) {
-            st = OI_ERR_OBSERVER_AT_TARGET;
-            goto fail;
-        }
-        out->flux_sun = reflected_flux(out->e_sun, out->dir_sun, obs_hat, ratio,
-                                       scene->target_albedo, &out->phase_sun);
-        out->flux_earth = reflected_flux(out->e_earth, out->dir_earth, obs_hat, ratio,
-                                         scene->target_albedo, &out->phase_earth);
-        out->flux_moon = reflected_flux(out->e_moon, out->dir_moon, obs_hat, ratio,
-                                        scene->target_albedo, &out->phase_moon);
-        out->flux_obs = out->flux_sun + out->flux_earth + out->flux_moon;
-        out->mag_v = oi__magnitude_v(out->flux_obs, m.tsi_w_m2);
+        st = observer_term(scene, &m, out);
+        if (st < 0) goto fail;
     }
     return warn;
 

@@ -8,6 +8,15 @@
 
 #include "oi_port.h"
 
+/* GCC and clang: a helper kept out of its caller's frame, so that its locals
+ * are not live during the caller's other calls (make stack); elsewhere the
+ * compiler decides. */
+#if defined(__GNUC__)
+#define OI_NOINLINE __attribute__((noinline))
+#else
+#define OI_NOINLINE
+#endif
+
 static inline oi_real oi__dot(const oi_real a[3], const oi_real b[3])
 {
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
