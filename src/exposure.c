@@ -418,17 +418,10 @@ int oi_expose(const oi_camera *camera, const oi_expose_in *in,
     return expose_valid(camera, in, goal, out);
 }
 
-/* GCC and clang: keep scene_model's copy of the model out of the frame of
- * oi_expose_scene, which is live during the choice as well (make stack);
- * elsewhere the compiler decides. */
-#if defined(__GNUC__)
-#define EXP_NOINLINE __attribute__((noinline))
-#else
-#define EXP_NOINLINE
-#endif
-
-/* The model constants oi_expose_scene needs (oi__model_resolve's status). */
-static EXP_NOINLINE int scene_model(const oi_model *model, oi_real *re, oi_real *au, oi_real *tsi)
+/* The model constants oi_expose_scene needs (oi__model_resolve's status);
+ * out of line (OI_NOINLINE) so that its copy of the model is not in the frame
+ * of oi_expose_scene, which is live during the choice as well. */
+static OI_NOINLINE int scene_model(const oi_model *model, oi_real *re, oi_real *au, oi_real *tsi)
 {
     oi_model m;
     int st = oi__model_resolve(model, &m);

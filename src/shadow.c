@@ -413,16 +413,10 @@ static oi_real ld_node_value(const ld_geom *g, oi_real sph, oi_real cph)
     return p * (g->n0 - g->n1 * st2) * sph / den;
 }
 
-/* GCC and clang: keep the limb-darkened integral's locals out of the frame
- * of oi__sun_shadow, which is live during the atmosphere's call as well
- * (make stack); elsewhere the compiler decides. */
-#if defined(__GNUC__)
-#define LD_NOINLINE __attribute__((noinline))
-#else
-#define LD_NOINLINE
-#endif
-
 /*
+ * Kept out of line (OI_NOINLINE): its locals stay out of the frame of
+ * oi__sun_shadow, which is live during the atmosphere's call as well.
+ *
  * Visible fraction of the limb-darkened solar disc (radius rs) when the
  * Earth's disc (radius re) is sep away: in the penumbra, tri = the sines of
  * the triangle (rs, re, sep) from half_sines and pa_s = pi - a_s, a_s the
@@ -454,7 +448,7 @@ static oi_real ld_node_value(const ld_geom *g, oi_real sph, oi_real cph)
  * Jacobian is 2, and the singularity of mu sits at a distance
  * asinh(sqrt(e / (sin sep sin r_e))) beyond pi/2, graded the same way.
  */
-static LD_NOINLINE oi_real fraction_limb_darkened(oi_real rs, oi_real re, oi_real sep,
+static OI_NOINLINE oi_real fraction_limb_darkened(oi_real rs, oi_real re, oi_real sep,
                                                   oi_real pa_s, const oi_real *tri)
 {
     ld_geom g;
