@@ -23,11 +23,16 @@
 #define OI_SQRT OI_FN(sqrt)
 #endif
 #ifndef OI_SIN
-#define OI_SIN OI_FN(sin)
+/* the runtime's own (src/sincos.c): a small fixed frame (no huge-argument
+ * reduction), the same bits on every target; -DOI_SIN=sin (sinf) and
+ * -DOI_COS=cos (cosf) select the libm's */
+#define OI_SIN oi__sin
 #endif
 #ifndef OI_COS
-#define OI_COS OI_FN(cos)
+#define OI_COS oi__cos
 #endif
+oi_real oi__sin(oi_real x);
+oi_real oi__cos(oi_real x);
 #ifndef OI_TAN
 #define OI_TAN OI_FN(tan)
 #endif
