@@ -17,6 +17,7 @@
 
 oi_real oi__sin(oi_real x); /* internal, src/sincos.c */
 oi_real oi__cos(oi_real x);
+void oi__sincos(oi_real x, oi_real *s, oi_real *c);
 
 #ifdef OI_SINGLE_PRECISION
 typedef double ref_real;
@@ -250,13 +251,41 @@ static void test_special_values(void **state)
     }
 }
 
+/* oi__sincos gives oi__sin's and oi__cos's bits (one shared reduction). */
+static void test_sincos_pair(void **state)
+{
+    int i;
+    const oi_real special[] = {(oi_real)0, -(oi_real)0, (oi_real)1e-30, (oi_real)2e6, (oi_real)INFINITY,
+                               (oi_real)NAN};
+    (void)state;
+    for (i = 0; i < 100000; i++) {
+        oi_real x = (oi_real)((uniform01() * 2.0 - 1.0) * pow(10.0, uniform01() * 8.0 - 2.0)), s, c;
+        oi__sincos(x, &s, &c);
+        if (!(s == oi__sin(x) && c == oi__cos(x))) {
+            print_error("sincos(%.17g): want %.17g %.17g got %.17g %.17g\n", (double)x,
+                        (double)oi__sin(x), (double)oi__cos(x), (double)s, (double)c);
+            fail();
+        }
+    }
+    for (i = 0; i < (int)(sizeof special / sizeof special[0]); i++) {
+        oi_real s, c;
+        oi__sincos(special[i], &s, &c);
+        if (isnan(oi__sin(special[i]))) {
+            assert_true(isnan(s) && isnan(c));
+        } else {
+            assert_true(s == oi__sin(special[i]) && c == oi__cos(special[i]));
+            assert_true(signbit(s) == signbit(oi__sin(special[i])));
+        }
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_random_8),       cmocka_unit_test(test_random_1e3),
         cmocka_unit_test(test_random_1e6),     cmocka_unit_test(test_near_multiples),
         cmocka_unit_test(test_tiny),           cmocka_unit_test(test_beyond_range),
-        cmocka_unit_test(test_special_values),
+        cmocka_unit_test(test_special_values), cmocka_unit_test(test_sincos_pair),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
