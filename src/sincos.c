@@ -25,10 +25,6 @@
  */
 #include "oi_internal.h"
 
-#ifndef OI_FMOD
-#define OI_FMOD OI_FN(fmod)
-#endif
-
 /* Constants printed by tools/sincos_coeffs.py. */
 #ifdef OI_SINGLE_PRECISION
 /* pi/2 = P1 + ... + P5 (12 leading bits each) + P6 (rounded): pi/2 - sum = 8.8e-29 */
@@ -79,6 +75,8 @@
 #define ROUND_MAGIC (6755399441055744.0) /* 1.5 2^52 */
 #define TINY (0x1p-27)
 #endif
+/* |x| <= pi/4 (rounded down): no reduction */
+#define PIO4 (OI_R(0.78539816339744828))
 /* the exact reduction's range: |k| < 2^20 */
 #define RANGE (OI_R(1647098.0)) /* below (2^20 - 1/2) pi/2: |k| < 2^20 */
 
@@ -136,30 +134,42 @@ static oi_real reduce(oi_real x, oi_real *lo, unsigned *quad)
     return r;
 }
 
-/* sin(r + lo), |r| <= pi/4 + a few ulp, |lo| <= ulp(r) */
-static oi_real sin_kernel(oi_real r, oi_real lo)
+/* sin r - r for |r| <= pi/4 + a few ulp, z = r^2 */
+static oi_real sin_poly(oi_real r, oi_real z)
 {
-    const oi_real z = r * r, v = z * r;
 #ifdef OI_SINGLE_PRECISION
     const oi_real p = S5 + z * (S7 + z * S9);
 #else
     const oi_real p = S5 + z * (S7 + z * (S9 + z * (S11 + z * S13)));
 #endif
-    /* sin(r + lo) = sin r + lo cos r, cos r = 1 - z/2 to the order needed */
-    return r + (v * (S3 + z * p) + lo * ((oi_real)1 - OI_R(0.5) * z));
+    return z * r * (S3 + z * p);
 }
 
-/* cos(r + lo), |r| <= pi/4 + a few ulp, |lo| <= ulp(r) */
-static oi_real cos_kernel(oi_real r, oi_real lo)
+/* cos r - (1 - z/2) for |r| <= pi/4 + a few ulp, z = r^2 */
+static oi_real cos_poly(oi_real z)
 {
-    const oi_real z = r * r, hz = OI_R(0.5) * z, w = (oi_real)1 - hz;
 #ifdef OI_SINGLE_PRECISION
     const oi_real p = C4 + z * (C6 + z * C8);
 #else
     const oi_real p = C4 + z * (C6 + z * (C8 + z * (C10 + z * (C12 + z * C14))));
 #endif
-    /* (1 - w) - hz: the rounding error of w, exact (Sterbenz; hz <= 0.31) */
-    return w + ((((oi_real)1 - w) - hz) + (z * z * p - r * lo));
+    return z * z * p;
+}
+
+/* sin(r + lo), |lo| <= ulp(r): sin r + lo cos r, cos r = 1 - z/2 to the
+ * order needed */
+static oi_real sin_kernel(oi_real r, oi_real lo)
+{
+    const oi_real z = r * r;
+    return r + (sin_poly(r, z) + lo * ((oi_real)1 - OI_R(0.5) * z));
+}
+
+/* cos(r + lo), |lo| <= ulp(r); (1 - w) - hz is the rounding error of w,
+ * exact (Sterbenz; hz <= 0.31) */
+static oi_real cos_kernel(oi_real r, oi_real lo)
+{
+    const oi_real z = r * r, hz = OI_R(0.5) * z, w = (oi_real)1 - hz;
+    return w + ((((oi_real)1 - w) - hz) + (cos_poly(z) - r * lo));
 }
 
 /* sin (n even) or cos (n odd) of r + lo, negated for n mod 4 in {2, 3} */
@@ -169,19 +179,39 @@ static oi_real quadrant(oi_real r, oi_real lo, unsigned n)
     return (n & 2u) ? -v : v;
 }
 
-/* |x| <= RANGE, or NaN/inf passed through, or a finite huge x folded by
- * fmod into (-2 pi, 2 pi): see oi__sin note 3. Returns 0 when the result is
- * x - x (NaN). */
-static int fold(oi_real *x)
+/* x - n M, M = 2 pi rounded to oi_real, n = trunc(x / M), exactly (fmod
+ * by binary long division, no libm): for |x| > RANGE, finite. M 2^j is
+ * doubled up to a > M 2^j / 2, then halved back to M, subtracting where it
+ * fits; each subtraction has y <= a < 2y, so it is exact (Sterbenz). At most
+ * 2 x 1022 (float: 2 x 126) iterations, at the largest finite x. */
+static oi_real fold_huge(oi_real x)
 {
-    const oi_real ax = OI_FABS(*x);
-    if (ax <= RANGE) return 1;
-    if (ax - ax != (oi_real)0) {
-        *x = *x - *x; /* inf or NaN: NaN */
-        return 0;
+    oi_real a = OI_FABS(x), y = TWO_PI_R;
+    while (y <= OI_R(0.5) * a) y *= (oi_real)2;
+    while (y >= TWO_PI_R) {
+        if (a >= y) a -= y;
+        y *= OI_R(0.5);
     }
-    *x = OI_FMOD(*x, TWO_PI_R);
-    return 1;
+    return x < (oi_real)0 ? -a : a;
+}
+
+/* sin x (n = 0) or cos x (n = 1) */
+static oi_real sin_or_cos(oi_real x, unsigned n)
+{
+    oi_real ax = OI_FABS(x), r, lo;
+    unsigned q;
+    if (ax < TINY) return n ? (oi_real)1 : x;
+    if (ax <= PIO4) {
+        /* no reduction: r = x, lo = 0 (the kernels without the lo terms) */
+        const oi_real z = x * x, hz = OI_R(0.5) * z, w = (oi_real)1 - hz;
+        return n ? w + ((((oi_real)1 - w) - hz) + cos_poly(z)) : x + sin_poly(x, z);
+    }
+    if (!(ax <= RANGE)) {
+        if (ax - ax != (oi_real)0) return x - x; /* inf or NaN: NaN */
+        x = fold_huge(x);
+    }
+    r = reduce(x, &lo, &q);
+    return quadrant(r, lo, q + n);
 }
 
 /*
@@ -200,15 +230,17 @@ static int fold(oi_real *x)
  *     float): r is accurate to a small fraction of its ulp even for the
  *     doubles closest to a multiple of pi/2. Then sin or cos of r + r_lo by
  *     a polynomial on |r| <= pi/4 (Chebyshev fits, tools/sincos_coeffs.py)
- *     and the sign of the quadrant k mod 4. Stack: a few words, no calls
- *     but OI_FMOD (note 3).
+ *     and the sign of the quadrant k mod 4. Stack: a few words; no calls,
+ *     no libm.
  *  2. Measured: within 1 ulp for |x| <= 2^20 pi/2 (tests/c/test_sincos.c:
  *     random x up to 1e6, the nearest values to k pi/2 for k up to 10^5,
  *     tiny x).
- *  3. |x| > 1,647,099 (2^20 pi/2): x is first replaced by OI_FMOD(x, 2 pi
- *     rounded) (fmod is exact), so the result is finite and in [-1, 1] but
- *     its angle is off by up to |x| 2^-53 (float: 2^-24) rad. The runtime
- *     passes angles of a few pi; this path exists only to stay defined.
+ *  3. |x| > 1,647,098 (2^20 pi/2): x is first replaced by x mod (2 pi
+ *     rounded to oi_real), computed exactly by binary long division in the
+ *     runtime (no libm call, at most ~2,000 (float: ~250) short loop
+ *     iterations at the largest x), so the result is finite and in [-1, 1]
+ *     but its angle is off by up to |x| 2^-53 (float: |x| 2^-24) rad. The
+ *     runtime passes angles of a few pi; this path only keeps it defined.
  * References:
  *   Cody, W.J. & Waite, W. 1980, Software Manual for the Elementary
  *     Functions, Prentice-Hall, ch. 8 (reduction in parts).
@@ -218,12 +250,7 @@ static int fold(oi_real *x)
  */
 oi_real oi__sin(oi_real x)
 {
-    oi_real r, lo;
-    unsigned q;
-    if (OI_FABS(x) < TINY) return x;
-    if (!fold(&x)) return x;
-    r = reduce(x, &lo, &q);
-    return quadrant(r, lo, q);
+    return sin_or_cos(x, 0u);
 }
 
 /*
@@ -242,12 +269,7 @@ oi_real oi__sin(oi_real x)
  */
 oi_real oi__cos(oi_real x)
 {
-    oi_real r, lo;
-    unsigned q;
-    if (OI_FABS(x) < TINY) return (oi_real)1;
-    if (!fold(&x)) return x;
-    r = reduce(x, &lo, &q);
-    return quadrant(r, lo, q + 1u);
+    return sin_or_cos(x, 1u);
 }
 
 /*
@@ -268,14 +290,24 @@ void oi__sincos(oi_real x, oi_real *s, oi_real *c)
 {
     oi_real r, lo;
     unsigned q;
-    if (OI_FABS(x) < TINY) {
+    const oi_real ax = OI_FABS(x);
+    if (ax < TINY) {
         *s = x;
         *c = (oi_real)1;
         return;
     }
-    if (!fold(&x)) {
-        *s = *c = x;
+    if (ax <= PIO4) {
+        const oi_real z = x * x, hz = OI_R(0.5) * z, w = (oi_real)1 - hz;
+        *s = x + sin_poly(x, z);
+        *c = w + ((((oi_real)1 - w) - hz) + cos_poly(z));
         return;
+    }
+    if (!(ax <= RANGE)) {
+        if (ax - ax != (oi_real)0) {
+            *s = *c = x - x; /* inf or NaN: NaN */
+            return;
+        }
+        x = fold_huge(x);
     }
     r = reduce(x, &lo, &q);
     *s = quadrant(r, lo, q);

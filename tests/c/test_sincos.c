@@ -208,6 +208,22 @@ static void test_beyond_range(void **state)
             fail();
         }
     }
+    /* the fold is x mod (2 pi rounded) exactly: the same bits as the libm's
+     * (exact) fmod followed by the reduction */
+    for (i = 0; i < 20000; i++) {
+        double mag = pow(10.0, 6.3 + uniform01() * 30.0), sgn = uniform01() < 0.5 ? -1.0 : 1.0;
+        oi_real x = (oi_real)(sgn * mag);
+#ifdef OI_SINGLE_PRECISION
+        oi_real m = fmodf(x, (oi_real)6.283185307179586);
+#else
+        oi_real m = fmod(x, 6.283185307179586);
+#endif
+        if (!(oi__sin(x) == oi__sin(m) && oi__cos(x) == oi__cos(m))) {
+            print_error("x = %.17g: want sin %.17g cos %.17g (fmod) got %.17g %.17g\n", (double)x,
+                        (double)oi__sin(m), (double)oi__cos(m), (double)oi__sin(x), (double)oi__cos(x));
+            fail();
+        }
+    }
     /* the largest finite values */
 #ifdef OI_SINGLE_PRECISION
     {
