@@ -50,45 +50,6 @@ static const oi_real atan_lo[17] = {
 #define SIDE_SCALE (0x1p-200)
 #endif
 
-/* atan(t) - t for |t| <= 1/8: Taylor series to t^17 (double; the first term
- * left out is below 2^-56 |t|) or t^9 (float). */
-static oi_real rest_to_eighth(oi_real t)
-{
-    const oi_real z = t * t;
-    oi_real p;
-#ifdef OI_SINGLE_PRECISION
-    p = (oi_real)1 / (oi_real)9;
-#else
-    p = (oi_real)1 / (oi_real)17;
-    p = p * z - (oi_real)1 / (oi_real)15;
-    p = p * z + (oi_real)1 / (oi_real)13;
-    p = p * z - (oi_real)1 / (oi_real)11;
-    p = p * z + (oi_real)1 / (oi_real)9;
-#endif
-    p = p * z - (oi_real)1 / (oi_real)7;
-    p = p * z + (oi_real)1 / (oi_real)5;
-    p = p * z - (oi_real)1 / (oi_real)3;
-    return t * z * p;
-}
-
-/* atan(u) - u for |u| <= 1/32: to u^11 (double; below 2^-63 |u| left out)
- * or u^7 (float). */
-static oi_real rest_to_32nd(oi_real u)
-{
-    const oi_real z = u * u;
-    oi_real p;
-#ifdef OI_SINGLE_PRECISION
-    p = -(oi_real)1 / (oi_real)7;
-#else
-    p = -(oi_real)1 / (oi_real)11;
-    p = p * z + (oi_real)1 / (oi_real)9;
-    p = p * z - (oi_real)1 / (oi_real)7;
-#endif
-    p = p * z + (oi_real)1 / (oi_real)5;
-    p = p * z - (oi_real)1 / (oi_real)3;
-    return u * z * p;
-}
-
 /* a - b * c exactly rounded once, for b * c close to a (Dekker's product:
  * b * c = ph + pl exactly with Veltkamp's split; a - ph is then exact by
  * Sterbenz). The split goes through a volatile so that contraction into an
@@ -119,9 +80,12 @@ static oi_real residual(oi_real a, oi_real b, oi_real c)
  *     two) does not enter. t < 1/8: atan t = t + series. Else k = nearest
  *     integer to 16 t and atan t = atan(k/16) + atan(u), u = (t - k/16 +
  *     t_lo) / (1 + t k/16), |u| <= 1/32 (the addition formula; t - k/16 is
- *     exact by Sterbenz), |u| at most a quarter of the result. Then the
- *     octant (pi/2 - a, pi - a; Fast2Sum keeps the roundings of these
- *     subtractions) and the sign of y; one final rounding.
+ *     exact by Sterbenz), |u| at most a quarter of the result. Both cases
+ *     share one Horner chain (the t < 1/8 case evaluates its first terms
+ *     too). Then the octant, B + a or B - a with B in {pi/2, pi} (pi/2 - a,
+ *     pi - a, pi/2 + a) in one Fast2Sum that keeps the rounding of the sum,
+ *     and the sign of y; one final rounding. One path for each step keeps
+ *     the code small (the Sun-only build fits 4 KiB of flash, issue 6).
  *  2. Measured: within 1 ulp (tests/c/test_atan2.c, 400,000 random points
  *     over 40 decades and every reduction breakpoint).
  * References:
@@ -130,8 +94,8 @@ static oi_real residual(oi_real a, oi_real b, oi_real c)
  */
 oi_real oi__atan2(oi_real y, oi_real x)
 {
-    oi_real ax = OI_FABS(x), ay = OI_FABS(y), num, den, t, t_lo, hi, mid, lo, s, r;
-    int k;
+    oi_real ax = OI_FABS(x), ay = OI_FABS(y), num, den, t, t_lo, hi, u, lo, z, p, s, r;
+    int swap, neg;
     if (y != y || x != x) return y + x; /* NaN */
     if (ay == (oi_real)0) {
         /* on the x axis: 0 or pi, with the sign of y */
@@ -156,33 +120,62 @@ oi_real oi__atan2(oi_real y, oi_real x)
          * (0 when t underflows: the result is then t itself) */
         t_lo = t > (oi_real)0 ? residual(num, t, den) / den : (oi_real)0;
     }
+    /* a = atan t = hi + u + lo, lo = (t_lo or atan_lo[k]) + u^3 P(u^2) with
+     * the series of atan u - u (A&S 4.4.42) to u^17 (double; the first term
+     * left out is below 2^-56 |u| for |u| <= 1/8) or u^9 (float) when
+     * t < 1/8, and to its last five (double; below 2^-63 |u|) or three
+     * (float) terms when |u| <= 1/32: one Horner chain whose first
+     * terms only the first case evaluates. */
     if (t < OI_R(0.125)) {
         hi = (oi_real)0;
-        mid = t;
-        lo = t_lo + rest_to_eighth(t);
+        u = t;
+        lo = t_lo;
+        z = u * u;
+#ifdef OI_SINGLE_PRECISION
+        p = (oi_real)1 / (oi_real)9;
+        p = p * z - (oi_real)1 / (oi_real)7;
+#else
+        p = (oi_real)1 / (oi_real)17;
+        p = p * z - (oi_real)1 / (oi_real)15;
+        p = p * z + (oi_real)1 / (oi_real)13;
+        p = p * z - (oi_real)1 / (oi_real)11;
+#endif
     } else {
-        oi_real ck;
-        k = (int)(t * (oi_real)16 + OI_R(0.5));
-        ck = (oi_real)k * OI_R(0.0625);
-        mid = ((t - ck) + t_lo) / ((oi_real)1 + t * ck);
+        const int k = (int)(t * (oi_real)16 + OI_R(0.5));
+        const oi_real ck = (oi_real)k * OI_R(0.0625);
+        u = ((t - ck) + t_lo) / ((oi_real)1 + t * ck);
         hi = atan_hi[k];
-        lo = atan_lo[k] + rest_to_32nd(mid);
+        lo = atan_lo[k];
+        z = u * u;
+#ifdef OI_SINGLE_PRECISION
+        p = -(oi_real)1 / (oi_real)7;
+#else
+        p = -(oi_real)1 / (oi_real)11;
+#endif
     }
-    /* a = hi + mid + lo */
-    if (ay > ax) {
-        /* pi/2 - a: hi' + err = PIO2_HI - hi exactly (Fast2Sum) */
-        s = PIO2_HI - hi;
-        lo = (PIO2_LO - lo) + ((PIO2_HI - s) - hi);
+#ifndef OI_SINGLE_PRECISION
+    p = p * z + (oi_real)1 / (oi_real)9;
+    p = p * z - (oi_real)1 / (oi_real)7;
+#endif
+    p = p * z + (oi_real)1 / (oi_real)5;
+    p = p * z - (oi_real)1 / (oi_real)3;
+    lo = lo + u * z * p;
+    /* the octant: pi/2 - a (|y| > |x|), pi - a (x < 0), pi/2 + a (both), as
+     * B + a or B - a with one Fast2Sum (|B| >= pi/2 > |hi|), which keeps the
+     * rounding error of the sum in lo */
+    swap = ay > ax;
+    neg = OI_SIGNBIT(x) != 0;
+    if (swap || neg) {
+        const oi_real f = swap ? (oi_real)1 : (oi_real)2; /* B = f pi/2 */
+        if (swap != neg) {
+            hi = -hi;
+            u = -u;
+            lo = -lo;
+        }
+        s = f * PIO2_HI + hi;
+        lo = (f * PIO2_LO + lo) + ((f * PIO2_HI - s) + hi);
         hi = s;
-        mid = -mid;
     }
-    if (OI_SIGNBIT(x)) {
-        /* pi - a */
-        s = (oi_real)2 * PIO2_HI - hi;
-        lo = ((oi_real)2 * PIO2_LO - lo) + (((oi_real)2 * PIO2_HI - s) - hi);
-        hi = s;
-        mid = -mid;
-    }
-    r = hi + (mid + lo);
+    r = hi + (u + lo);
     return OI_SIGNBIT(y) ? -r : r;
 }

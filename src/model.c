@@ -12,51 +12,62 @@ static const oi_model default_model = {
     .moon_albedo = (oi_real)OI_MOON_ALBEDO_DEFAULT,
 };
 
-/* Replace a zero constant by its default; reject negative, non-finite, or
- * outside [lo, hi] (the bounds keep every intermediate finite). */
-static int resolve_positive(oi_real given, oi_real fallback, oi_real lo, oi_real hi,
-                            oi_real *out)
-{
-    if (!OI_ISFINITE(given) || given < (oi_real)0) return -1;
-    *out = given > (oi_real)0 ? given : fallback;
-    return *out < lo || *out > hi ? -1 : 0;
-}
+/* The real-valued fields of oi_model (offsetof), in the order they are
+ * checked: the three radii first (their failure is OI_ERR_RADIUS when all
+ * three are finite), then tsi_w_m2, au_km, moon_albedo. A zero field takes
+ * the default; a negative or non-finite one, or one outside [lo, hi] (the
+ * bounds keep every intermediate finite), is rejected. Field i has the
+ * bounds bound_lo/hi[i < N_RADII ? 0 : i - N_RADII + 1]. One loop over these
+ * tables instead of six unrolled checks: the Sun-only build must fit 4 KiB of
+ * flash (issue 6, docs/performance.md). */
+#define N_RADII 3
+#define N_FIELDS 6
+static const unsigned char field_offset[N_FIELDS] = {
+    (unsigned char)offsetof(oi_model, sun_radius_km), (unsigned char)offsetof(oi_model, earth_radius_km),
+    (unsigned char)offsetof(oi_model, moon_radius_km), (unsigned char)offsetof(oi_model, tsi_w_m2),
+    (unsigned char)offsetof(oi_model, au_km), (unsigned char)offsetof(oi_model, moon_albedo)};
+static const oi_real bound_lo[N_FIELDS - N_RADII + 1] = {
+    (oi_real)OI_MODEL_RADIUS_MIN, (oi_real)OI_MODEL_TSI_MIN, (oi_real)OI_MODEL_AU_MIN, (oi_real)0};
+static const oi_real bound_hi[N_FIELDS - N_RADII + 1] = {
+    (oi_real)OI_MODEL_RADIUS_MAX, (oi_real)OI_MODEL_TSI_MAX, (oi_real)OI_MODEL_AU_MAX, (oi_real)1};
+
+/* the field at byte offset off of a model */
+#define FIELD(m, off) (*(const oi_real *)(const void *)((const char *)(m) + (off)))
+
+/* The option fields are checked as "0 or 1" in one test: the values must be
+ * 0 and 1 (a negative array size stops the build otherwise). */
+typedef char model_options_are_0_or_1[(OI_EARTH_TABLE == 0 && OI_EARTH_LAMBERT == 1 &&
+                                       OI_MOON_PHASE_LAW == 0 && OI_MOON_LAMBERT == 1 &&
+                                       OI_LIMB_UNIFORM == 0 && OI_LIMB_DARKENED == 1)
+                                          ? 1
+                                          : -1];
 
 int oi__model_resolve(const oi_model *in, oi_model *out)
 {
-    const oi_model def = default_model;
-    *out = def;
+    oi_real v[N_FIELDS];
+    unsigned i;
+    /* the only copy of the defaults: *out is written again only on success */
+    *out = default_model;
     if (in == NULL) return OI_OK;
 
-    const oi_real r_lo = (oi_real)OI_MODEL_RADIUS_MIN, r_hi = (oi_real)OI_MODEL_RADIUS_MAX;
-    if (resolve_positive(in->sun_radius_km, def.sun_radius_km, r_lo, r_hi, &out->sun_radius_km) ||
-        resolve_positive(in->earth_radius_km, def.earth_radius_km, r_lo, r_hi,
-                         &out->earth_radius_km) ||
-        resolve_positive(in->moon_radius_km, def.moon_radius_km, r_lo, r_hi,
-                         &out->moon_radius_km)) {
-        *out = def;
-        return OI_ISFINITE(in->sun_radius_km) && OI_ISFINITE(in->earth_radius_km) &&
-                       OI_ISFINITE(in->moon_radius_km)
-                   ? OI_ERR_RADIUS
-                   : OI_ERR_MODEL;
+    for (i = 0; i < N_FIELDS; i++) {
+        const unsigned k = i < N_RADII ? 0u : i - N_RADII + 1u;
+        const oi_real given = FIELD(in, field_offset[i]);
+        v[i] = given > (oi_real)0 ? given : FIELD(out, field_offset[i]);
+        if (!OI_ISFINITE(given) || given < (oi_real)0 || v[i] < bound_lo[k] || v[i] > bound_hi[k]) {
+            if (i >= N_RADII) return OI_ERR_MODEL;
+            for (i = 0; i < N_RADII; i++)
+                if (!OI_ISFINITE(FIELD(in, field_offset[i]))) return OI_ERR_MODEL;
+            return OI_ERR_RADIUS;
+        }
     }
-    if (resolve_positive(in->tsi_w_m2, def.tsi_w_m2, (oi_real)OI_MODEL_TSI_MIN, (oi_real)OI_MODEL_TSI_MAX,
-                         &out->tsi_w_m2) ||
-        resolve_positive(in->au_km, def.au_km, (oi_real)OI_MODEL_AU_MIN, (oi_real)OI_MODEL_AU_MAX,
-                         &out->au_km) ||
-        resolve_positive(in->moon_albedo, def.moon_albedo, (oi_real)0, (oi_real)1,
-                         &out->moon_albedo) ||
-        (in->earth_model != OI_EARTH_TABLE && in->earth_model != OI_EARTH_LAMBERT) ||
-        (in->moon_model != OI_MOON_PHASE_LAW && in->moon_model != OI_MOON_LAMBERT) ||
-        (in->limb_darkening != OI_LIMB_UNIFORM && in->limb_darkening != OI_LIMB_DARKENED)
+    /* each option 0 or 1 (see model_options_are_0_or_1) */
+    if ((in->earth_model | in->moon_model | in->limb_darkening) & ~1) return OI_ERR_MODEL;
 #ifdef OI_NO_LIMB_DARKENING
-        /* the limb-darkened disc is compiled out (include/oi_config.h) */
-        || in->limb_darkening == OI_LIMB_DARKENED
+    /* the limb-darkened disc is compiled out (include/oi_config.h) */
+    if (in->limb_darkening == OI_LIMB_DARKENED) return OI_ERR_MODEL;
 #endif
-    ) {
-        *out = def;
-        return OI_ERR_MODEL;
-    }
+    for (i = 0; i < N_FIELDS; i++) *(oi_real *)(void *)((char *)out + field_offset[i]) = v[i];
     out->earth_model = in->earth_model;
     out->moon_model = in->moon_model;
     out->limb_darkening = in->limb_darkening;

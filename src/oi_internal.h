@@ -41,7 +41,7 @@ static inline void oi__cross(const oi_real a[3], const oi_real b[3], oi_real out
 
 /* Euclidean norm, scaled so that large or tiny components neither overflow
  * nor underflow. */
-static inline oi_real oi__norm(const oi_real a[3])
+static inline oi_real oi__norm_inline(const oi_real a[3])
 {
     oi_real m = OI_FABS(a[0]);
     oi_real t = OI_FABS(a[1]);
@@ -54,6 +54,26 @@ static inline oi_real oi__norm(const oi_real a[3])
     y = a[1] / m;
     z = a[2] / m;
     return m * OI_SQRT(x * x + y * y + z * z);
+}
+
+/* The same, one out-of-line copy (src/vector.c). */
+oi_real oi__norm_outline(const oi_real a[3]);
+
+/* oi__norm (and oi__unit, which calls it) and oi__finite3 are inlined, except
+ * in a file that defines OI_VECTOR_OUT_OF_LINE before including this header:
+ * there they call the single copies in src/vector.c. The files of the
+ * Sun-only build (src/shadow.c, src/phase.c) do, to bring it towards 4 KiB of
+ * flash on every Cortex-M configuration (issue 6: about -160 B at -O2); the
+ * other hot paths keep the inline copies (out of line everywhere cost +3%
+ * instructions in make bench's all_expose, these two files +1.3%). Same
+ * values either way. */
+static inline oi_real oi__norm(const oi_real a[3])
+{
+#ifdef OI_VECTOR_OUT_OF_LINE
+    return oi__norm_outline(a);
+#else
+    return oi__norm_inline(a);
+#endif
 }
 
 /* out = a / |a|; returns |a| (out zeroed when |a| is 0). out may be a. */
@@ -102,9 +122,22 @@ static inline oi_real oi__angle_unit(const oi_real ua[3], const oi_real ub[3])
     return OI_ATAN2(oi__norm_bounded(c), oi__dot(ua, ub));
 }
 
-static inline int oi__finite3(const oi_real a[3])
+static inline int oi__finite3_inline(const oi_real a[3])
 {
     return OI_ISFINITE(a[0]) && OI_ISFINITE(a[1]) && OI_ISFINITE(a[2]);
+}
+
+/* The same, one out-of-line copy (src/vector.c); oi__finite3 picks one as
+ * oi__norm does (OI_VECTOR_OUT_OF_LINE). */
+int oi__finite3_outline(const oi_real a[3]);
+
+static inline int oi__finite3(const oi_real a[3])
+{
+#ifdef OI_VECTOR_OUT_OF_LINE
+    return oi__finite3_outline(a);
+#else
+    return oi__finite3_inline(a);
+#endif
 }
 
 static inline void oi__zero3(oi_real a[3])

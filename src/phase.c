@@ -1,6 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* phase.c: the Lambertian-sphere phase function and the angle between two
  * vectors. */
+/* oi__norm, oi__finite3 out of line: the Sun-only build fits 4 KiB (src/oi_internal.h) */
+#define OI_VECTOR_OUT_OF_LINE
 #include "oi_internal.h"
 
 /*

@@ -2,6 +2,8 @@
 /* shadow.c: exact overlap of two spherical caps, and the visible fraction of
  * the Sun (uniform and limb-darkened disc) seen from a point near the Earth.
  * Model, formulas and measured accuracy: docs/shadow.md. */
+/* oi__norm, oi__finite3 out of line: the Sun-only build fits 4 KiB (src/oi_internal.h) */
+#define OI_VECTOR_OUT_OF_LINE
 #include "oi_internal.h"
 
 /* pi in two parts (see phase.c): (PI_HI - x) + PI_LO is pi - x to one

@@ -89,7 +89,7 @@ def test_no_earth_table_falls_back_to_far_field(tmp_path, defs):
     exe = str(tmp_path / "nt")
     warn = ["-std=c99", "-Wall", "-Wextra", "-Wpedantic", "-Wconversion", "-Wshadow",
             "-Wdouble-promotion", "-Werror"]
-    files = [os.path.join(ROOT, f) for f in ("src/earthshine.c", "src/model.c", "src/phase.c", "src/atan2.c", "src/sincos.c",
+    files = [os.path.join(ROOT, f) for f in ("src/earthshine.c", "src/model.c", "src/phase.c", "src/atan2.c", "src/sincos.c", "src/vector.c",
                                              "tables/oi_earth_diffuse.c")]
     inc = ["-I" + os.path.join(ROOT, d) for d in ("include", "src", "tables")]
     subprocess.run(["cc"] + warn + ["-O2", "-DOI_NO_EARTH_TABLE"] + defs + inc + files +
