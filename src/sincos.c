@@ -195,23 +195,32 @@ static oi_real fold_huge(oi_real x)
     return x < (oi_real)0 ? -a : a;
 }
 
-/* sin x (n = 0) or cos x (n = 1) */
-static oi_real sin_or_cos(oi_real x, unsigned n)
+/* sin x (n = 0) or cos x (n = 1) for pi/4 < |x|, or NaN/inf: out of line,
+ * so that the common |x| <= pi/4 path needs no frame */
+static OI_NOINLINE oi_real sin_or_cos_reduced(oi_real x, unsigned n)
 {
-    oi_real ax = OI_FABS(x), r, lo;
+    const oi_real ax = OI_FABS(x);
+    oi_real r, lo;
     unsigned q;
-    if (ax < TINY) return n ? (oi_real)1 : x;
-    if (ax <= PIO4) {
-        /* no reduction: r = x, lo = 0 (the kernels without the lo terms) */
-        const oi_real z = x * x, hz = OI_R(0.5) * z, w = (oi_real)1 - hz;
-        return n ? w + ((((oi_real)1 - w) - hz) + cos_poly(z)) : x + sin_poly(x, z);
-    }
     if (!(ax <= RANGE)) {
         if (ax - ax != (oi_real)0) return x - x; /* inf or NaN: NaN */
         x = fold_huge(x);
     }
     r = reduce(x, &lo, &q);
     return quadrant(r, lo, q + n);
+}
+
+/* sin x (n = 0) or cos x (n = 1) */
+static oi_real sin_or_cos(oi_real x, unsigned n)
+{
+    const oi_real ax = OI_FABS(x);
+    if (ax <= PIO4) {
+        /* no reduction: r = x, lo = 0 (the kernels without the lo terms) */
+        const oi_real z = x * x, hz = OI_R(0.5) * z, w = (oi_real)1 - hz;
+        if (ax < TINY) return n ? (oi_real)1 : x;
+        return n ? w + ((((oi_real)1 - w) - hz) + cos_poly(z)) : x + sin_poly(x, z);
+    }
+    return sin_or_cos_reduced(x, n);
 }
 
 /*
