@@ -56,7 +56,9 @@ int oi__model_resolve(const oi_model *in, oi_model *out)
         v[i] = given > (oi_real)0 ? given : FIELD(out, field_offset[i]);
         if (!OI_ISFINITE(given) || given < (oi_real)0 || v[i] < bound_lo[k] || v[i] > bound_hi[k]) {
             if (i >= N_RADII) return OI_ERR_MODEL;
-            for (i = 0; i < N_RADII; i++)
+            /* a radius: OI_ERR_RADIUS when all three are finite (those
+             * before i passed their check, so only i on is tested) */
+            for (; i < N_RADII; i++)
                 if (!OI_ISFINITE(FIELD(in, field_offset[i]))) return OI_ERR_MODEL;
             return OI_ERR_RADIUS;
         }
