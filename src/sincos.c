@@ -35,6 +35,7 @@
 #define P5 (6.123031769111886e-17f)
 #define P6 (2.022266160358745e-21f)
 #define P5S (6.123234262925839e-17f) /* P5 + P6 rounded */
+#define P3R (7.549790126404332e-08f)  /* pi/2 - P1 - P2 rounded */
 /* sin r = r + r^3 (S3 + S5 z + ...), z = r^2: fit 2^-35.8 relative */
 #define S3 (-0.1666666716337204f)
 #define S5 (0.008333331905305386f)
@@ -56,6 +57,7 @@
 #define P2 (6.077100506303966e-11)
 #define P3 (2.0222662487111665e-21)
 #define P4 (8.4784276603689e-32)
+#define P2R (6.077100506506192e-11) /* pi/2 - P1 rounded */
 /* sin: fit 2^-56.1 relative */
 #define S3 (-0.16666666666666666)
 #define S5 (0.008333333333330946)
@@ -75,6 +77,8 @@
 #define ROUND_MAGIC (6755399441055744.0) /* 1.5 2^52 */
 #define TINY (0x1p-27)
 #endif
+/* |r| from the short reduction at least this: no cascade */
+#define SHORT_CUT (OI_R(0.0625))
 /* |x| <= pi/4 (rounded down): no reduction */
 #define PIO4 (OI_R(0.78539816339744828))
 /* the exact reduction's range: |k| < 2^20 */
@@ -101,6 +105,14 @@ static oi_real reduce(oi_real x, oi_real *lo, unsigned *quad)
         /* x - k P1 exact (Sterbenz); minus k P2 exact: the difference is a
          * multiple of 2^-24 (x < 1) or 2^-23 (x >= 1) below 1 in size */
         h = (x - kf * P1) - kf * P2;
+        /* short: the rest of pi/2 rounded once; k P3R and the rest's
+         * rounding err by < 2^-35.6, below 2^-31 of r for |r| >= 1/16 */
+        e = kf * P3R;
+        r = h - e;
+        if (OI_FABS(r) >= SHORT_CUT) {
+            *lo = (h - r) - e; /* exact: both differences are Sterbenz */
+            return r;
+        }
         h = two_sum(h, -kf * P3, &l);
         h = two_sum(h, -kf * P4, &e);
         l = (l + e) - kf * P5S;
@@ -125,6 +137,14 @@ static oi_real reduce(oi_real x, oi_real *lo, unsigned *quad)
 #else
     /* x - k P1 exact (Sterbenz); k P2 and k P3 exact for |k| < 2^20 */
     h = x - kf * P1;
+    /* short: the rest of pi/2 rounded once; k P2R and the rest's rounding
+     * err by < 2^-67, below 2^-63 of r for |r| >= 1/16 */
+    e = kf * P2R;
+    r = h - e;
+    if (OI_FABS(r) >= SHORT_CUT) {
+        *lo = (h - r) - e; /* exact: both differences are Sterbenz */
+        return r;
+    }
     h = two_sum(h, -kf * P2, &l);
     h = two_sum(h, -kf * P3, &e);
     l = (l + e) - kf * P4;

@@ -10,7 +10,9 @@
    fourth rounded to 53 bits (pi/2 to ~152 bits);
    float: five parts of 12 bits (exact for |k| < 2^12, or for k split into a
    multiple of 2^12 and a remainder below 2^11), a sixth rounded to 24 bits,
-   and the rounded sum of parts 5 and 6 for the short path.
+   and the rounded sum of parts 5 and 6 for the short path. P2R (double) /
+   P3R (float): what is left after the exact parts, rounded once (the
+   short reduction when |r| is not small).
 2. Polynomials on |r| <= pi/4 (a margin of 1e-4 relative): Chebyshev fits
    (mpmath.chebyfit, near-minimax; Trefethen 2013, ch. 16) of
      gs(z) = (sin(sqrt z)/sqrt z - 1)/z,  sin r = r + r^3 gs(r^2),
@@ -85,6 +87,11 @@ def main():
             print(f"#define {n} ({c_float(p, single)})")
         if short is not None:
             print(f"#define P5S ({c_float(short[4], single)}) /* P5 + P6 rounded */")
+        # the short reduction: the exact parts, then the rest rounded once
+        nex = 2 if single else 1
+        rest = HALF_PI - sum(ps[:nex])
+        f = np.float32(float(rest)) if single else float(rest)
+        print(f"#define P{nex + 1}R ({c_float(f, single)}) /* pi/2 - P1{' - P2' if single else ''} rounded */")
         err = HALF_PI - sum(ps)
         print(f"/* pi/2 - sum of parts = {mp.nstr(err, 3)} */")
         ns, nc = (4, 3) if single else (6, 6)
