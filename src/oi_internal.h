@@ -63,9 +63,10 @@ oi_real oi__norm_outline(const oi_real a[3]);
  * in a file that defines OI_VECTOR_OUT_OF_LINE before including this header:
  * there they call the single copies in src/vector.c. The files of the
  * Sun-only build (src/shadow.c, src/phase.c) do, to bring it towards 4 KiB of
- * flash on every Cortex-M configuration (issue 6: about -160 B at -O2); the
- * other hot paths keep the inline copies (out of line everywhere cost +3%
- * instructions in make bench's all_expose, these two files +1.3%). Same
+ * flash on every Cortex-M configuration (issue 6: about -200 B at -Os and
+ * -450 to -520 B at -O2); the other hot paths keep the inline copies (out of
+ * line everywhere cost +3% instructions in make bench's all_expose; these
+ * two files, with src/model.c and src/atan2.c as of 02f1b60, +1.8%). Same
  * values either way. */
 static inline oi_real oi__norm(const oi_real a[3])
 {
