@@ -34,7 +34,6 @@
 #define P4 (2.5632829192545614e-12f)
 #define P5 (6.123031769111886e-17f)
 #define P6 (2.022266160358745e-21f)
-#define P5S (6.123234262925839e-17f) /* P5 + P6 rounded */
 #define P3R (7.549790126404332e-08f)  /* pi/2 - P1 - P2 rounded */
 /* sin r = r + r^3 (S3 + S5 z + ...), z = r^2: fit 2^-35.8 relative */
 #define S3 (-0.1666666716337204f)
@@ -113,16 +112,15 @@ static oi_real reduce(oi_real x, oi_real *lo, unsigned *quad)
             *lo = (h - r) - e; /* exact: both differences are Sterbenz */
             return r;
         }
-        h = two_sum(h, -kf * P3, &l);
-        h = two_sum(h, -kf * P4, &e);
-        l = (l + e) - kf * P5S;
-    } else {
-        /* k = kh + kl, kh a multiple of 2^12 (at most 8 significant bits),
-         * |kl| <= 2^11: every kh Pi and kl Pi is exact */
+    }
+    {
+        /* k = kh + kl, kh a multiple of 2^12 (at most 8 significant bits;
+         * 0 for |k| < 2^11), |kl| <= 2^11: every kh Pi and kl Pi is exact;
+         * every step a TwoSum (the first ones are exact anyway) */
         static const oi_real part[5] = {P1, P2, P3, P4, P5};
         const oi_real kh = (kf + ROUND_MAGIC_4096) - ROUND_MAGIC_4096, kl = kf - kh;
         int i;
-        h = x - kh * P1; /* exact (Sterbenz) */
+        h = x - kh * P1; /* exact (Sterbenz, or kh = 0) */
         l = (oi_real)0;
         for (i = 0; i < 5; i++) {
             if (i > 0) {

@@ -10,7 +10,7 @@
    fourth rounded to 53 bits (pi/2 to ~152 bits);
    float: five parts of 12 bits (exact for |k| < 2^12, or for k split into a
    multiple of 2^12 and a remainder below 2^11), a sixth rounded to 24 bits,
-   and the rounded sum of parts 5 and 6 for the short path. P2R (double) /
+   P2R (double) /
    P3R (float): what is left after the exact parts, rounded once (the
    short reduction when |r| is not small).
 2. Polynomials on |r| <= pi/4 (a margin of 1e-4 relative): Chebyshev fits
@@ -76,7 +76,7 @@ def main():
         print(f"/* ---- {name} */")
         if single:
             ps, _ = parts(12, 5, 24)
-            short = parts(12, 4, 24)[0]
+            short = None
             names = ["P1", "P2", "P3", "P4", "P5", "P6"]
         else:
             ps, _ = parts(33, 3, 53)
