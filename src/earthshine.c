@@ -421,8 +421,8 @@ int oi__earthshine(oi_real theta, oi_real cos_theta, oi_real sin_theta, oi_real 
             if (theta <= tb && tb > (oi_real)0) {
                 /* cap wholly lit: phi = cos(theta) phi(0, x), tan psi =
                  * tan(theta) G(x) exactly; stored q0 = phi(0, x) / x^2, G / w */
-                const oi_real ct = cos_theta > (oi_real)1 ? OI_COS(theta) : cos_theta;
-                const oi_real st = cos_theta > (oi_real)1 ? OI_SIN(theta) : sin_theta;
+                oi_real ct = cos_theta, st = sin_theta;
+                if (cos_theta > (oi_real)1) OI_SINCOS(theta, &st, &ct);
                 fv = theta / tb * (oi_real)(grid->t->n_lit - 1);
                 seg_interp(grid, 0, grid->t->n_lit, fv, fw, &q, &p);
                 q *= ct;

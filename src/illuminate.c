@@ -66,8 +66,7 @@ static void earth_direction(const oi_real r_hat[3], const oi_real s_hat[3], oi_r
     for (i = 0; i < 3; i++) t[i] = s_hat[i] - along * r_hat[i];
     /* On the Sun-Earth axis the plane is undefined, and psi is 0 by symmetry. */
     if (oi__unit_bounded(t, t) == (oi_real)0) psi = (oi_real)0;
-    c = psi == (oi_real)0 ? (oi_real)1 : OI_COS(psi);
-    s = psi == (oi_real)0 ? (oi_real)0 : OI_SIN(psi);
+    OI_SINCOS(psi, &s, &c);
     for (i = 0; i < 3; i++) dir[i] = -c * r_hat[i] + s * t[i];
 }
 

@@ -27,12 +27,24 @@
  * reduction), the same bits on every target; -DOI_SIN=sin (sinf) and
  * -DOI_COS=cos (cosf) select the libm's */
 #define OI_SIN oi__sin
+#define OI__OWN_SIN 1
 #endif
 #ifndef OI_COS
 #define OI_COS oi__cos
+#define OI__OWN_COS 1
 #endif
 oi_real oi__sin(oi_real x);
 oi_real oi__cos(oi_real x);
+void oi__sincos(oi_real x, oi_real *s, oi_real *c);
+/* OI_SINCOS(x, s, c): *s = OI_SIN(x), *c = OI_COS(x), with one argument
+ * reduction when both are the runtime's own (bit-identical to the pair) */
+#ifndef OI_SINCOS
+#if defined(OI__OWN_SIN) && defined(OI__OWN_COS)
+#define OI_SINCOS(x, s, c) oi__sincos((x), (s), (c))
+#else
+#define OI_SINCOS(x, s, c) (*(s) = OI_SIN(x), *(c) = OI_COS(x))
+#endif
+#endif
 #ifndef OI_TAN
 #define OI_TAN OI_FN(tan)
 #endif

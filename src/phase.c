@@ -87,8 +87,7 @@ oi_real oi__lambert_phase_cs(oi_real xi, oi_real cos_xi, oi_real sin_xi)
         f = series_sin_minus_tcos(t);
     } else {
         if (cos_xi > (oi_real)1) {
-            cos_xi = OI_COS(xi);
-            sin_xi = OI_SIN(xi);
+            OI_SINCOS(xi, &sin_xi, &cos_xi);
         }
         f = t * cos_xi + sin_xi;
     }

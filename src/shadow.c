@@ -506,8 +506,7 @@ static OI_NOINLINE oi_real fraction_limb_darkened(oi_real rs, oi_real re, oi_rea
                 oi_real sph, cph;
                 if (grade) {
                     oi_real ph = lo + h * (j ? (oi_real)1 - ld_node[i][0] : ld_node[i][0]);
-                    sph = OI_SIN(ph);
-                    cph = OI_COS(ph);
+                    OI_SINCOS(ph, &sph, &cph);
                 } else {
                     sph = ld_node[i][j ? 3 : 2];
                     cph = ld_node[i][j ? 2 : 3];
@@ -718,10 +717,15 @@ int oi__sun_shadow(const oi_real sun_km[3], const oi_real point_km[3], const oi_
         dsp = oi__norm(rel);
         if (!OI_ISFINITE(dsp) || !OI_ISFINITE(dp)) return OI_ERR_NONFINITE;
         if (dsp <= m->sun_radius_km) return OI_ERR_GEOMETRY;
-        anti[0] = -point_km[0];
-        anti[1] = -point_km[1];
-        anti[2] = -point_km[2];
-        sep = oi_angle(rel, anti);
+        /* the angle between sun - point and -point from the unit vectors of
+         * the norms just formed (oi_angle would form them again) */
+        anti[0] = -point_km[0] / dp;
+        anti[1] = -point_km[1] / dp;
+        anti[2] = -point_km[2] / dp;
+        rel[0] /= dsp;
+        rel[1] /= dsp;
+        rel[2] /= dsp;
+        sep = oi__angle_unit(rel, anti);
     }
     rs = apparent_radius(m->sun_radius_km, dsp);
     re = q_earth > (oi_real)0 ? OI_ATAN2(m->earth_radius_km, OI_SQRT(q_earth))
