@@ -320,8 +320,8 @@ oi_real oi__cos(oi_real x)
  *   s      oi_real  sin x, bit for bit oi__sin(x)
  *   c      oi_real  cos x, bit for bit oi__cos(x)
  * Notes:
- *  1. For a caller that needs both (one reduction instead of two). Not an
- *     OI_* hook: declared where it is used.
+ *  1. For a caller that needs both (one reduction instead of two): the
+ *     default of the OI_SINCOS hook (src/oi_port.h).
  * References:
  *   See oi__sin.
  */
