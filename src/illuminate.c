@@ -17,39 +17,38 @@ static int check_scalar(oi_real value, oi_real lo, oi_real hi, int range_error)
     return OI_OK;
 }
 
-static int too_far(const oi_real v[3])
-{
-    return oi__norm(v) > (oi_real)OI_POSITION_MAX_KM;
-}
-
-/* Validation of everything in the scene that does not need geometry. */
+/* Validation of everything in the scene that does not need geometry. Each
+ * position's norm is formed once (scaled: any finite input). */
 static int check_scene(const oi_scene *s, const oi_model *m)
 {
     int st;
+    const int moon = (s->terms & OI_TERM_MOON) != 0, obs = s->has_observer != 0;
+    const oi_real far = (oi_real)OI_POSITION_MAX_KM;
+    oi_real n_sun, n_target, n_moon, n_obs;
     unsigned available = OI_TERM_SUN | OI_TERM_EARTH;
 #ifndef OI_NO_MOON
     available |= OI_TERM_MOON;
 #endif
     if (s->terms & ~available) return OI_ERR_TERMS;
     if (!oi__finite3(s->sun_km) || !oi__finite3(s->target_km)) return OI_ERR_NONFINITE;
-    if ((s->terms & OI_TERM_MOON) && !oi__finite3(s->moon_km)) return OI_ERR_NONFINITE;
-    if (s->has_observer && !oi__finite3(s->observer_km)) return OI_ERR_NONFINITE;
+    if (moon && !oi__finite3(s->moon_km)) return OI_ERR_NONFINITE;
+    if (obs && !oi__finite3(s->observer_km)) return OI_ERR_NONFINITE;
     st = check_scalar(s->earth_albedo, (oi_real)0, (oi_real)1, OI_ERR_ALBEDO);
     if (st == OI_OK) st = check_scalar(s->target_albedo, (oi_real)0, (oi_real)1, OI_ERR_ALBEDO);
     if (st != OI_OK) return st;
     if (!OI_ISFINITE(s->target_radius_m)) return OI_ERR_NONFINITE;
     if (!(s->target_radius_m > (oi_real)0)) return OI_ERR_RADIUS;
-    if (oi__norm(s->sun_km) == (oi_real)0 || oi__norm(s->target_km) == (oi_real)0)
+    /* a term that is off counts as a valid position */
+    n_sun = oi__norm(s->sun_km);
+    n_target = oi__norm(s->target_km);
+    n_moon = moon ? oi__norm(s->moon_km) : (oi_real)1;
+    n_obs = obs ? oi__norm(s->observer_km) : far;
+    if (n_sun == (oi_real)0 || n_target == (oi_real)0 || n_moon == (oi_real)0 ||
+        n_obs == (oi_real)0)
         return OI_ERR_ZERO_VECTOR;
-    if ((s->terms & OI_TERM_MOON) && oi__norm(s->moon_km) == (oi_real)0) return OI_ERR_ZERO_VECTOR;
-    if (s->has_observer && oi__norm(s->observer_km) == (oi_real)0) return OI_ERR_ZERO_VECTOR;
     /* Bounded positions keep every difference and square finite. */
-    if (too_far(s->sun_km) || too_far(s->target_km) ||
-        ((s->terms & OI_TERM_MOON) && too_far(s->moon_km)) ||
-        (s->has_observer && too_far(s->observer_km)))
-        return OI_ERR_GEOMETRY;
-    if (oi__norm(s->target_km) <= m->earth_radius_km) return OI_ERR_BELOW_SURFACE;
-    if (s->has_observer && oi__norm(s->observer_km) <= m->earth_radius_km)
+    if (n_sun > far || n_target > far || n_moon > far || n_obs > far) return OI_ERR_GEOMETRY;
+    if (n_target <= m->earth_radius_km || n_obs <= m->earth_radius_km)
         return OI_ERR_BELOW_SURFACE;
     return OI_OK;
 }
