@@ -27,7 +27,6 @@ static const oi_real atan_lo[17] = {
     -2.1855694143368964e-08f};
 #define PIO2_HI (1.5707963705062866f)
 #define PIO2_LO (-4.371138828673793e-08f)
-#define SPLITTER OI_R(4097.0) /* 2^12 + 1: Veltkamp's split of a float */
 #define HUGE_SIDE (0x1p100f)
 #define SIDE_SCALE (0x1p-60f)
 #else
@@ -45,23 +44,20 @@ static const oi_real atan_lo[17] = {
     3.061616997868383e-17};
 #define PIO2_HI (1.5707963267948966)
 #define PIO2_LO (6.123233995736766e-17)
-#define SPLITTER OI_R(134217729.0) /* 2^27 + 1 */
 #define HUGE_SIDE (0x1p900)
 #define SIDE_SCALE (0x1p-200)
 #endif
 
 /* a - b * c exactly rounded once, for b * c close to a (Dekker's product:
- * b * c = ph + pl exactly with Veltkamp's split; a - ph is then exact by
- * Sterbenz). The split goes through a volatile so that contraction into an
- * fma cannot break it (see src/shadow.c). */
+ * b * c = ph + pl exactly with oi__split, src/oi_internal.h; a - ph is then
+ * exact by Sterbenz). */
 static oi_real residual(oi_real a, oi_real b, oi_real c)
 {
-    volatile oi_real sb = SPLITTER * b, sc = SPLITTER * c;
-    oi_real tb = sb, tc = sc;
-    oi_real bh = tb - (tb - b), bl = b - bh;
-    oi_real ch = tc - (tc - c), cl = c - ch;
-    oi_real ph = b * c;
-    oi_real pl = ((bh * ch - ph) + bh * cl + bl * ch) + bl * cl;
+    oi_real bh, bl, ch, cl, ph, pl;
+    oi__split(b, &bh, &bl);
+    oi__split(c, &ch, &cl);
+    ph = b * c;
+    pl = ((bh * ch - ph) + bh * cl + bl * ch) + bl * cl;
     return (a - ph) - pl;
 }
 
@@ -111,7 +107,7 @@ oi_real oi__atan2(oi_real y, oi_real x)
         t = t_lo = (oi_real)0;
     } else {
         if (den > HUGE_SIDE) {
-            /* keep SPLITTER * den finite: scale both by a power of two */
+            /* keep OI_SPLITTER * den finite: scale both by a power of two */
             num *= SIDE_SCALE;
             den *= SIDE_SCALE;
         }

@@ -141,6 +141,39 @@ static inline int oi__finite3(const oi_real a[3])
 #endif
 }
 
+/*
+ * Error-free transformations (Knuth TAOCP 2, 4.2.2; Dekker 1971), shared by
+ * src/shadow.c, src/atan2.c and src/sincos.c. They need round-to-nearest in
+ * the working precision (no x87 extended registers). oi__split's product
+ * goes through a volatile so that a compiler contracting floating-point
+ * expressions (-ffp-contract=fast, the GNU C default on FMA targets) cannot
+ * fuse t - a = fl(S a) - a into an exact fma, which would break the split.
+ */
+#ifdef OI_SINGLE_PRECISION
+#define OI_SPLITTER OI_R(4097.0) /* 2^12 + 1 */
+#else
+#define OI_SPLITTER OI_R(134217729.0) /* 2^27 + 1 */
+#endif
+
+/* s + *e = a + b exactly (TwoSum; no condition on the operands); returns s. */
+static inline oi_real oi__two_sum(oi_real a, oi_real b, oi_real *e)
+{
+    const oi_real s = a + b;
+    const oi_real bb = s - a;
+    *e = (a - (s - bb)) + (b - bb);
+    return s;
+}
+
+/* a = *hi + *lo exactly, each with half the significand (Veltkamp's split),
+ * so that products of halves are exact; |a| below OI_SPLITTER's overflow. */
+static inline void oi__split(oi_real a, oi_real *hi, oi_real *lo)
+{
+    volatile oi_real tv = OI_SPLITTER * a;
+    const oi_real t = tv;
+    *hi = t - (t - a);
+    *lo = a - *hi;
+}
+
 static inline void oi__zero3(oi_real a[3])
 {
     a[0] = a[1] = a[2] = (oi_real)0;

@@ -527,38 +527,13 @@ static OI_NOINLINE oi_real fraction_limb_darkened(oi_real rs, oi_real re, oi_rea
 #endif /* OI_NO_LIMB_DARKENING */
 /* ---------------------------------------------------------------- sun fraction */
 
-/*
- * Error-free transformations (Dekker 1971; Knuth TAOCP 2, 4.2.2): a*a =
- * hi + lo exactly, with Veltkamp's split (2^27 + 1 for double, 2^12 + 1 for
- * float); a + b = s + e exactly. Needs round-to-nearest in the working
- * precision (no x87 extended registers). The split's product goes through a
- * volatile so that a compiler contracting floating-point expressions
- * (-ffp-contract=fast, the GNU C default on FMA targets) cannot fuse
- * t - a = fl(S a) - a into an exact fma, which would break the split; the
- * later partial products are exact, so fusing them changes nothing.
- */
-#ifdef OI_SINGLE_PRECISION
-#define SPLITTER OI_R(4097.0)
-#else
-#define SPLITTER OI_R(134217729.0)
-#endif
-
+/* a * a = hi + lo exactly (Dekker's product with oi__split, oi_internal.h). */
 static void two_square(oi_real a, oi_real *hi, oi_real *lo)
 {
-    volatile oi_real tv = SPLITTER * a;
-    oi_real t = tv;
-    oi_real ah = t - (t - a);
-    oi_real al = a - ah;
+    oi_real ah, al;
+    oi__split(a, &ah, &al);
     *hi = a * a;
     *lo = ((ah * ah - *hi) + (oi_real)2 * ah * al) + al * al;
-}
-
-static void two_sum(oi_real a, oi_real b, oi_real *s, oi_real *e)
-{
-    oi_real bb;
-    *s = a + b;
-    bb = *s - a;
-    *e = (a - (*s - bb)) + (b - bb);
 }
 
 /*
@@ -574,7 +549,7 @@ static oi_real radial_excess(const oi_real p[3], oi_real r)
     int i;
     for (i = 0; i < 3; ++i) {
         two_square(p[i], &h, &l);
-        two_sum(sh, h, &sh, &e);
+        sh = oi__two_sum(sh, h, &e);
         sl += e + l;
     }
     two_square(r, &rh, &rl);

@@ -86,15 +86,6 @@
 /* the exact reduction's range: |k| < 2^20 */
 #define RANGE (OI_R(1647098.0)) /* below (2^20 - 1/2) pi/2: |k| < 2^20 */
 
-/* (s, *e) = a + b exactly (Knuth's TwoSum; no condition on the operands). */
-static oi_real two_sum(oi_real a, oi_real b, oi_real *e)
-{
-    const oi_real s = a + b;
-    const oi_real bb = s - a;
-    *e = (a - (s - bb)) + (b - bb);
-    return s;
-}
-
 /* r + *lo = x - k pi/2 for |x| < RANGE, k = nearest integer to x 2/pi;
  * *quad = k mod 4. |r| <= pi/4 (to a few ulp). */
 static oi_real reduce(oi_real x, oi_real *lo, unsigned *quad)
@@ -127,10 +118,10 @@ static oi_real reduce(oi_real x, oi_real *lo, unsigned *quad)
         l = (oi_real)0;
         for (i = 0; i < 5; i++) {
             if (i > 0) {
-                h = two_sum(h, -kh * part[i], &e);
+                h = oi__two_sum(h, -kh * part[i], &e);
                 l += e;
             }
-            h = two_sum(h, -kl * part[i], &e);
+            h = oi__two_sum(h, -kl * part[i], &e);
             l += e;
         }
         l -= kf * P6;
@@ -146,8 +137,8 @@ static oi_real reduce(oi_real x, oi_real *lo, unsigned *quad)
         *lo = (h - r) - e; /* exact: both differences are Sterbenz */
         return r;
     }
-    h = two_sum(h, -kf * P2, &l);
-    h = two_sum(h, -kf * P3, &e);
+    h = oi__two_sum(h, -kf * P2, &l);
+    h = oi__two_sum(h, -kf * P3, &e);
     l = (l + e) - kf * P4;
 #endif
     r = h + l;
