@@ -207,31 +207,45 @@ static oi_real fold_huge(oi_real x)
     return x < (oi_real)0 ? -a : a;
 }
 
+/* sin x and cos x for |x| <= pi/4: no reduction (r = x, lo = 0: the kernels
+ * without the lo terms); x itself and 1 below TINY */
+static oi_real sin_small(oi_real x)
+{
+    return OI_FABS(x) < TINY ? x : x + sin_poly(x, x * x);
+}
+
+static oi_real cos_small(oi_real x)
+{
+    const oi_real z = x * x, hz = OI_R(0.5) * z, w = (oi_real)1 - hz;
+    return OI_FABS(x) < TINY ? (oi_real)1 : w + ((((oi_real)1 - w) - hz) + cos_poly(z));
+}
+
+/* r + *lo = x - k pi/2 and *quad = k mod 4 for any finite x (folded first
+ * beyond RANGE); returns 0 for inf or NaN (the caller returns x - x) */
+static int reduce_any(oi_real x, oi_real *r, oi_real *lo, unsigned *quad)
+{
+    if (!(OI_FABS(x) <= RANGE)) {
+        if (x - x != (oi_real)0) return 0;
+        x = fold_huge(x);
+    }
+    *r = reduce(x, lo, quad);
+    return 1;
+}
+
 /* sin x (n = 0) or cos x (n = 1) for pi/4 < |x|, or NaN/inf: out of line,
  * so that the common |x| <= pi/4 path needs no frame */
 static OI_NOINLINE oi_real sin_or_cos_reduced(oi_real x, unsigned n)
 {
-    const oi_real ax = OI_FABS(x);
     oi_real r, lo;
     unsigned q;
-    if (!(ax <= RANGE)) {
-        if (ax - ax != (oi_real)0) return x - x; /* inf or NaN: NaN */
-        x = fold_huge(x);
-    }
-    r = reduce(x, &lo, &q);
+    if (!reduce_any(x, &r, &lo, &q)) return x - x; /* inf or NaN: NaN */
     return quadrant(r, lo, q + n);
 }
 
 /* sin x (n = 0) or cos x (n = 1) */
 static oi_real sin_or_cos(oi_real x, unsigned n)
 {
-    const oi_real ax = OI_FABS(x);
-    if (ax <= PIO4) {
-        /* no reduction: r = x, lo = 0 (the kernels without the lo terms) */
-        const oi_real z = x * x, hz = OI_R(0.5) * z, w = (oi_real)1 - hz;
-        if (ax < TINY) return n ? (oi_real)1 : x;
-        return n ? w + ((((oi_real)1 - w) - hz) + cos_poly(z)) : x + sin_poly(x, z);
-    }
+    if (OI_FABS(x) <= PIO4) return n ? cos_small(x) : sin_small(x);
     return sin_or_cos_reduced(x, n);
 }
 
@@ -320,26 +334,13 @@ void oi__sincos(oi_real x, oi_real *s, oi_real *c)
 {
     oi_real r, lo;
     unsigned q;
-    const oi_real ax = OI_FABS(x);
-    if (ax < TINY) {
-        *s = x;
-        *c = (oi_real)1;
-        return;
+    if (OI_FABS(x) <= PIO4) {
+        *s = sin_small(x);
+        *c = cos_small(x);
+    } else if (!reduce_any(x, &r, &lo, &q)) {
+        *s = *c = x - x; /* inf or NaN: NaN */
+    } else {
+        *s = quadrant(r, lo, q);
+        *c = quadrant(r, lo, q + 1u);
     }
-    if (ax <= PIO4) {
-        const oi_real z = x * x, hz = OI_R(0.5) * z, w = (oi_real)1 - hz;
-        *s = x + sin_poly(x, z);
-        *c = w + ((((oi_real)1 - w) - hz) + cos_poly(z));
-        return;
-    }
-    if (!(ax <= RANGE)) {
-        if (ax - ax != (oi_real)0) {
-            *s = *c = x - x; /* inf or NaN: NaN */
-            return;
-        }
-        x = fold_huge(x);
-    }
-    r = reduce(x, &lo, &q);
-    *s = quadrant(r, lo, q);
-    *c = quadrant(r, lo, q + 1u);
 }
