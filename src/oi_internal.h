@@ -77,10 +77,9 @@ static inline oi_real oi__norm(const oi_real a[3])
 #endif
 }
 
-/* out = a / |a|; returns |a| (out zeroed when |a| is 0). out may be a. */
-static inline oi_real oi__unit(const oi_real a[3], oi_real out[3])
+/* out = a / n (out zeroed when n is 0); returns n. out may be a. */
+static inline oi_real oi__divide3(const oi_real a[3], oi_real n, oi_real out[3])
 {
-    oi_real n = oi__norm(a);
     if (n > (oi_real)0) {
         out[0] = a[0] / n;
         out[1] = a[1] / n;
@@ -89,6 +88,12 @@ static inline oi_real oi__unit(const oi_real a[3], oi_real out[3])
         out[0] = out[1] = out[2] = (oi_real)0;
     }
     return n;
+}
+
+/* out = a / |a|; returns |a| (out zeroed when |a| is 0). out may be a. */
+static inline oi_real oi__unit(const oi_real a[3], oi_real out[3])
+{
+    return oi__divide3(a, oi__norm(a), out);
 }
 
 /* Norm, unit vector and angle for vectors whose components are known to be
@@ -104,15 +109,7 @@ static inline oi_real oi__norm_bounded(const oi_real a[3])
 
 static inline oi_real oi__unit_bounded(const oi_real a[3], oi_real out[3])
 {
-    oi_real n = oi__norm_bounded(a);
-    if (n > (oi_real)0) {
-        out[0] = a[0] / n;
-        out[1] = a[1] / n;
-        out[2] = a[2] / n;
-    } else {
-        out[0] = out[1] = out[2] = (oi_real)0;
-    }
-    return n;
+    return oi__divide3(a, oi__norm_bounded(a), out);
 }
 
 /* Angle between two unit vectors, atan2(|a x b|, a . b) (see oi_angle). */

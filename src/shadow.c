@@ -694,12 +694,11 @@ int oi__sun_shadow(const oi_real sun_km[3], const oi_real point_km[3], const oi_
         if (dsp <= m->sun_radius_km) return OI_ERR_GEOMETRY;
         /* the angle between sun - point and -point from the unit vectors of
          * the norms just formed (oi_angle would form them again) */
-        anti[0] = -point_km[0] / dp;
-        anti[1] = -point_km[1] / dp;
-        anti[2] = -point_km[2] / dp;
-        rel[0] /= dsp;
-        rel[1] /= dsp;
-        rel[2] /= dsp;
+        anti[0] = -point_km[0];
+        anti[1] = -point_km[1];
+        anti[2] = -point_km[2];
+        (void)oi__divide3(anti, dp, anti);
+        (void)oi__divide3(rel, dsp, rel);
         sep = oi__angle_unit(rel, anti);
     }
     rs = apparent_radius(m->sun_radius_km, dsp);
