@@ -14,43 +14,23 @@
 #include <stdio.h>
 
 #include "orbillum.h"
+#include "oi_test_util.h"
 
 oi_real oi__atan2(oi_real y, oi_real x); /* internal, src/atan2.c */
 
 #ifdef OI_SINGLE_PRECISION
-typedef double ref_real;
 #define REF_ATAN2 atan2
-#define MANT_BITS 24
 #else
-typedef long double ref_real;
 #define REF_ATAN2 atan2l
-#define MANT_BITS 53
 #endif
 
 /* Worst error allowed, in ulp of the exact result. */
 #define MAX_ULP 1.0
 
-/* ulp of a value of the working precision at |v| (normal range). */
-static ref_real ulp_of(ref_real v)
-{
-    int e;
-    double u;
-    (void)frexp((double)(v < 0 ? -v : v), &e);
-    u = ldexp(1.0, e - MANT_BITS);
-    /* subnormal results: the spacing of the subnormals */
-#ifdef OI_SINGLE_PRECISION
-    if (u < ldexp(1.0, -149)) u = ldexp(1.0, -149);
-#else
-    if (u < ldexp(1.0, -1074)) u = ldexp(1.0, -1074);
-#endif
-    return (ref_real)u;
-}
-
 static uint64_t lcg_state = 0x2545F4914F6CDD1DULL;
 static double uniform01(void)
 {
-    lcg_state = lcg_state * 6364136223846793005ULL + 1442695040888963407ULL;
-    return (double)(lcg_state >> 11) * (1.0 / 9007199254740992.0);
+    return lcg01(&lcg_state);
 }
 
 static double worst_ulp;

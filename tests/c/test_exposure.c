@@ -17,6 +17,7 @@
 #include <string.h>
 
 #include "orbillum.h"
+#include "oi_test_util.h"
 
 #ifdef OI_SINGLE_PRECISION
 #define REL_TOL 2e-5
@@ -29,16 +30,6 @@ static const double PI = 3.14159265358979323846;
 static const double AU = 149597870.7;
 static const double TSI = 1361.0;
 static const double RE = 6378.137;
-
-static void check_rel(double want, double got, double rel, const char *what)
-{
-    double err = fabs(got - want);
-    if (!(err <= rel * fabs(want) + 1e-300)) {
-        print_error("%s: want %.17g got %.17g rel err %.3g\n", what, want, got,
-                    want != 0 ? err / fabs(want) : err);
-        fail();
-    }
-}
 
 static void check_int(long want, long got, const char *what)
 {
@@ -477,13 +468,6 @@ static void test_status_names(void **state)
 /* ---------------------------------------------------------------- scene */
 #ifndef OI_NO_EXPOSURE
 
-static void set3(oi_real v[3], double x, double y, double z)
-{
-    v[0] = (oi_real)x;
-    v[1] = (oi_real)y;
-    v[2] = (oi_real)z;
-}
-
 static double angle_ref(const double a[3], const double b[3])
 {
     double c[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
@@ -855,8 +839,7 @@ static void reference_expose_bruteforce(const oi_camera *c, const oi_expose_in *
 static uint64_t lcg_state;
 static double urand(void)
 {
-    lcg_state = lcg_state * 6364136223846793005ULL + 1442695040888963407ULL;
-    return (double)(lcg_state >> 11) * (1.0 / 9007199254740992.0);
+    return lcg01(&lcg_state);
 }
 static double log_uniform(double lo, double hi)
 {

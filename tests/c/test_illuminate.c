@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "orbillum.h"
+#include "oi_test_util.h"
 
 #ifdef OI_SINGLE_PRECISION
 #define REL_TOL 2e-5
@@ -23,27 +24,10 @@ static const double PI = 3.14159265358979323846;
 static const double AU = 149597870.7;
 static const double TSI = 1361.0;
 
-static void check_rel(double want, double got, double rel, const char *what)
-{
-    double err = fabs(got - want);
-    if (!(err <= rel * fabs(want) + 1e-300)) {
-        print_error("%s: want %.17g got %.17g rel err %.3g\n", what, want, got,
-                    want != 0 ? err / fabs(want) : err);
-        fail();
-    }
-}
-
 /* Lambert phase function, written out here as the reference. */
 static double phase_ref(double xi)
 {
     return 2.0 / (3.0 * PI) * ((PI - xi) * cos(xi) + sin(xi));
-}
-
-static void set3(oi_real v[3], double x, double y, double z)
-{
-    v[0] = (oi_real)x;
-    v[1] = (oi_real)y;
-    v[2] = (oi_real)z;
 }
 
 /* Target 7000 km from the Earth on the +y axis, Sun on +x at 1 AU: theta = 90 deg,
@@ -246,10 +230,7 @@ static void test_reflected_flux_matches_phase_function(void **state)
     for (i = 0; i < 3000; i++) {
         double u[3], want, ratio;
         int k;
-        for (k = 0; k < 3; k++) {
-            r = r * 6364136223846793005ULL + 1442695040888963407ULL;
-            u[k] = (double)(r >> 11) / 9007199254740992.0 * 2.0 - 1.0;
-        }
+        for (k = 0; k < 3; k++) u[k] = lcg01(&r) * 2.0 - 1.0;
         /* observer anywhere within 40,000 km of a target on +y */
         set3(s.observer_km, 40000.0 * u[0], 7000.0 + 40000.0 * u[1], 40000.0 * u[2]);
         if (sqrt(pow(40000.0 * u[0], 2) + pow(7000.0 + 40000.0 * u[1], 2) +
@@ -300,10 +281,7 @@ static void test_earthshine_matches_public_lookup(void **state)
         double u[4], rad, len;
         oi_real phi, psi;
         int k;
-        for (k = 0; k < 4; k++) {
-            r = r * 6364136223846793005ULL + 1442695040888963407ULL;
-            u[k] = (double)(r >> 11) / 9007199254740992.0;
-        }
+        for (k = 0; k < 4; k++) u[k] = lcg01(&r);
         rad = 6378.137 + pow(10.0, u[3] * 5.0); /* 1 km .. 1e5 km */
         len = sqrt((u[0] - 0.5) * (u[0] - 0.5) + (u[1] - 0.5) * (u[1] - 0.5) +
                    (u[2] - 0.5) * (u[2] - 0.5));

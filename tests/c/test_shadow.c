@@ -19,6 +19,7 @@
 #include <string.h>
 
 #include "orbillum.h"
+#include "oi_test_util.h"
 #include "ref_shadow.h"
 
 #ifdef OI_SINGLE_PRECISION
@@ -61,13 +62,6 @@ static const oi_model *geo_model(void)
     memset(&m, 0, sizeof m);
     m.no_atmosphere = 1;
     return &m;
-}
-
-static void set3(oi_real v[3], double x, double y, double z)
-{
-    v[0] = (oi_real)x;
-    v[1] = (oi_real)y;
-    v[2] = (oi_real)z;
 }
 
 /* ---------------------------------------------------------------- overlap */

@@ -14,17 +14,15 @@
 #include <stdio.h>
 
 #include "orbillum.h"
+#include "oi_test_util.h"
 
 oi_real oi__sin(oi_real x); /* internal, src/sincos.c */
 oi_real oi__cos(oi_real x);
 void oi__sincos(oi_real x, oi_real *s, oi_real *c);
 
 #ifdef OI_SINGLE_PRECISION
-typedef double ref_real;
 #define REF_SIN sin
 #define REF_COS cos
-#define MANT_BITS 24
-#define MIN_SUB_EXP (-149)
 #define NEXT_UP(x) nextafterf((x), INFINITY)
 #define NEXT_DOWN(x) nextafterf((x), -INFINITY)
 /* pi/2 to 64 bits, for the nearest working-precision values to k pi/2 */
@@ -32,11 +30,8 @@ typedef double ref_real;
 /* beyond the exact range: the angle off by at most |x| 2^-24 (2 pi rounded) */
 #define FOLD_REL 0x1p-24
 #else
-typedef long double ref_real;
 #define REF_SIN sinl
 #define REF_COS cosl
-#define MANT_BITS 53
-#define MIN_SUB_EXP (-1074)
 #define NEXT_UP(x) nextafter((x), INFINITY)
 #define NEXT_DOWN(x) nextafter((x), -INFINITY)
 #define HALF_PI_REF 1.570796326794896619231321691639751442L
@@ -46,22 +41,10 @@ typedef long double ref_real;
 /* Worst error allowed, in ulp of the exact result. */
 #define MAX_ULP 1.0
 
-/* ulp of a value of the working precision at |v| (subnormals included). */
-static ref_real ulp_of(ref_real v)
-{
-    int e;
-    double u;
-    (void)frexp((double)(v < 0 ? -v : v), &e);
-    u = ldexp(1.0, e - MANT_BITS);
-    if (u < ldexp(1.0, MIN_SUB_EXP)) u = ldexp(1.0, MIN_SUB_EXP);
-    return (ref_real)u;
-}
-
 static uint64_t lcg_state = 0x9E3779B97F4A7C15ULL;
 static double uniform01(void)
 {
-    lcg_state = lcg_state * 6364136223846793005ULL + 1442695040888963407ULL;
-    return (double)(lcg_state >> 11) * (1.0 / 9007199254740992.0);
+    return lcg01(&lcg_state);
 }
 
 static double worst_ulp;
