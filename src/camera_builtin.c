@@ -106,26 +106,6 @@ const oi_camera *oi_camera_builtin(int index)
     return &builtin[index];
 }
 
-/* Declared in src/exposure.c, its only user. */
-int oi__camera_is_builtin(const oi_camera *camera);
-
-/*
- * oi__camera_is_builtin: whether a camera is one of the built-in table's
- * entries (by address). They are constants whose every field is in range
- * (tests/c/test_exposure.c, test_builtin_cameras, checks copies of them
- * with the full camera check), so oi_expose and oi_expose_scene need not
- * check them again on every call (docs/camera.md, "Cost of the search").
- * Returns 1 or 0; 0 for NULL.
- */
-int oi__camera_is_builtin(const oi_camera *camera)
-{
-    int i;
-    for (i = 0; i < N_BUILTIN; i++) {
-        if (camera == &builtin[i]) return 1;
-    }
-    return 0;
-}
-
 /* Exact, case-sensitive string equality (no libc string functions). */
 static int same_name(const char *a, const char *b)
 {

@@ -8,10 +8,6 @@
 
 #ifndef OI_NO_EXPOSURE
 
-/* src/camera_builtin.c: 1 when camera is a built-in camera (all of whose
- * fields are in range by construction and by test), 0 otherwise. */
-int oi__camera_is_builtin(const oi_camera *camera);
-
 /* Valid ranges of the camera fields. They are wide enough for any real
  * instrument and narrow enough that no intermediate value can overflow in
  * single precision (the largest electron count is below 1e37). */
@@ -92,7 +88,8 @@ static int closed(oi_real x, oi_real lo, oi_real hi)
 }
 
 /* Nonzero when every field of the camera is in range (oi_expose Note 4).
- * A built-in camera is valid by construction and is not checked again. One
+ * Every camera is checked, the built-in ones too (the check is the same
+ * for the caller's own camera, which is what a flight program uses). One
  * pass over the times and one over the gains: "strictly ascending from 0"
  * is the lower bound of every element and the upper bound is tested on the
  * last one only (the same conditions as element by element; NaN fails
@@ -102,7 +99,6 @@ static int camera_valid(const oi_camera *c)
     int i, n;
     oi_real prev, x;
     const oi_real one = OI_R(1.0);
-    if (oi__camera_is_builtin(c)) return 1;
     if (!open_closed(c->aperture_m, 0, CAM_APERTURE_MAX_M) ||
         !closed(c->focal_length_m, CAM_FOCAL_MIN_M, CAM_FOCAL_MAX_M) ||
         !closed(c->pixel_pitch_m, CAM_PITCH_MIN_M, CAM_PITCH_MAX_M) ||
