@@ -123,7 +123,13 @@ def render(name, spec, q, psi, meta):
     h.append("#define %s_N_LIT %d" % (up, spec.n_lit))
     h.append("#define %s_N_TERM %d" % (up, spec.n_term))
     h.append("#define %s_N_ALT %d" % (up, spec.n_alt))
-    h.append("#define %s_N_VALUES %d\n" % (up, spec.n_values))
+    h.append("#define %s_N_VALUES %d" % (up, spec.n_values))
+    # the grid as constants too, for a runtime that uses this table as its
+    # compile-time default (src/earthshine.c) without reading the fields
+    h.append("#define %s_W_MIN %s" % (up, c_double(spec.w_min)))
+    h.append("#define %s_W_MAX %s" % (up, c_double(spec.w_max)))
+    h.append("#define %s_TERM_K0 %s" % (up, c_double(spec.term_k0)))
+    h.append("#define %s_TERM_KP %s\n" % (up, c_double(spec.term_kp)))
     h.append("#ifndef OI_NO_EARTH_TABLE")
     h.append("/* %s: altitude %s to %s, max relative error %.3e (see %s.c). */" % (
         name, _fmt_h(meta["h_min_km"]), _fmt_h(meta["h_max_km"]), meta["measured"]["max_rel_err"], name))

@@ -240,16 +240,16 @@ static const es_grid *grid_of(const oi_earth_table *t, es_grid *g)
 }
 
 #ifndef OI_NO_EARTH_TABLE
-/* The grid of the default table oi_earth_diffuse (tables/oi_earth_diffuse.c)
- * as compile-time constants: the const table is valid by construction, so it
- * is neither validated nor converted per call. test_earthshine.c
- * (test_default_grid_constants) checks these against the table's fields and
- * the lookup through them against the same table passed as a caller's table;
- * a re-bake with another grid must update them. */
-#define ES_DEF_W_MIN 0.0
-#define ES_DEF_W_MAX 1.5707963267948966
-#define ES_DEF_K0 2.0
-#define ES_DEF_KP 8.0
+/* The grid of the default table oi_earth_diffuse as compile-time constants,
+ * from its generated header (written by the baker with the table's fields,
+ * so a re-bake updates both): the const table is valid by
+ * construction, so it is neither validated nor converted per call.
+ * test_earthshine.c (test_default_grid_constants) checks the lookup through
+ * them against the same table passed as a caller's table. */
+#define ES_DEF_W_MIN OI_EARTH_DIFFUSE_W_MIN
+#define ES_DEF_W_MAX OI_EARTH_DIFFUSE_W_MAX
+#define ES_DEF_K0 OI_EARTH_DIFFUSE_TERM_K0
+#define ES_DEF_KP OI_EARTH_DIFFUSE_TERM_KP
 
 static const es_grid es_default_grid = {
     .t = &oi_earth_diffuse,

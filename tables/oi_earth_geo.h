@@ -15,6 +15,10 @@
 #define OI_EARTH_GEO_N_TERM 49
 #define OI_EARTH_GEO_N_ALT 2
 #define OI_EARTH_GEO_N_VALUES 102
+#define OI_EARTH_GEO_W_MIN 1.4160366207099628
+#define OI_EARTH_GEO_W_MAX 1.4232255460852268
+#define OI_EARTH_GEO_TERM_K0 2.0
+#define OI_EARTH_GEO_TERM_KP 8.0
 
 #ifndef OI_NO_EARTH_TABLE
 /* oi_earth_geo: altitude 35000 km to 37000 km, max relative error 2.603e-04 (see oi_earth_geo.c). */
