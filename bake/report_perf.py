@@ -50,35 +50,6 @@ def _run_bench():
         return json.load(f)
 
 
-def _bilinear_segment(tab, fv, fw):
-    n_alt, n = tab.shape
-    i = np.clip(np.floor(fv).astype(int), 0, n - 2)
-    a = fv - i
-    j = np.clip(np.floor(fw).astype(int), 0, n_alt - 2)
-    b = fw - j
-    return ((1 - a) * (1 - b) * tab[j, i] + a * (1 - b) * tab[j, i + 1]
-            + (1 - a) * b * tab[j + 1, i] + a * b * tab[j + 1, i + 1])
-
-
-def _lookup_bilinear(spec, q_tab, theta, x):
-    """Bilinear in the coordinates of the format-3 table (bake.grid before its
-    own kind="linear" option); used only with such a grid module."""
-    w = np.arctan2(np.sqrt((1.0 - x) * (1.0 + x)), x)
-    fw = (w - spec.w_min) / (spec.w_max - spec.w_min) * (spec.n_alt - 1)
-    tb = 0.5 * math.pi - w
-    lit = theta <= tb
-    with np.errstate(divide="ignore", invalid="ignore"):
-        v_lit = np.where(tb > 0, theta / np.where(tb > 0, tb, 1.0), 0.0)
-        v_term = (theta - tb) / (2.0 * w)
-    q_lit = _bilinear_segment(q_tab[:, :spec.n_lit], np.clip(v_lit, 0, 1) * (spec.n_lit - 1), fw)
-    q_term = _bilinear_segment(q_tab[:, spec.n_lit:], np.clip(v_term, 0, 1) * (spec.n_term - 1), fw)
-    # table format 4 (include/oi_table.h): lit columns hold phi(0,x)/x^2, the
-    # terminator segment phi/(x^2 w)
-    q = np.where(lit, q_lit * np.cos(theta), q_term * w)
-    dark = theta >= 0.5 * math.pi + w
-    return np.where(dark, 0.0, np.maximum(q, 0.0) * x * x)
-
-
 def _sweep(cache: Path):
     """Compute the sweep (every run: the report states what this run computed)
     and write it to `cache` as a data file next to the plot."""
@@ -109,11 +80,8 @@ def _sweep(cache: Path):
         q32 = q.astype(np.float32).astype(np.float64)
         psi32 = psi.astype(np.float32).astype(np.float64)
         phi_cr, psi_cr = grid.lookup(spec, q32, psi32, theta, x)
-        try:  # the baker's own bilinear variant of its lookup (same coordinates)
-            phi_bl, psi_bl = grid.lookup(spec, q32, psi32, theta, x, kind="linear")
-        except TypeError:  # an older grid module: the mirror written here
-            phi_bl = _lookup_bilinear(spec, q32, theta, x)
-            psi_bl = None
+        # the baker's own bilinear variant of its lookup (same coordinates)
+        phi_bl, psi_bl = grid.lookup(spec, q32, psi32, theta, x, kind="linear")
 
         # 16-bit storage: q and psi as uint16 with one float32 scale per
         # altitude row (the row maximum): half the bytes of float32
@@ -130,8 +98,7 @@ def _sweep(cache: Path):
             score, big = grid.goal_score(approx, phi_ref, phi0)
             with np.errstate(divide="ignore", invalid="ignore"):
                 rel = np.where(big, np.abs(approx - phi_ref) / phi_ref, 0.0)
-            psi_err = (float(np.where(big, np.abs(psi_approx - psi_ref), 0.0).max())
-                       if psi_approx is not None else float("nan"))
+            psi_err = float(np.where(big, np.abs(psi_approx - psi_ref), 0.0).max())
             nbytes = spec.bytes() if scheme != "catmull-rom-u16" else spec.bytes() // 2 + 2 * 4 * spec.n_alt
             rows.append(dict(scheme=scheme, scale=s, n_lit=spec.n_lit, n_term=spec.n_term,
                              n_alt=spec.n_alt, bytes=nbytes, max_rel_err=float(rel.max()),
@@ -254,11 +221,11 @@ def section(outdir) -> str:
             r["scheme"], " (default)" if r is default else
             (" (extra grid)" if r["scale"] is None else " x%.2f" % r["scale"]),
             r["n_alt"], r["n_lit"], r["n_term"], r["bytes"], r["max_rel_err"], r["max_score"],
-            r.get("max_psi_err", float("nan"))))
+            r["max_psi_err"]))
 
     def meets(r):
-        # both goals: phi (score) and psi (nan: not measured, counts as not met)
-        return r["max_score"] <= 1.0 and r.get("max_psi_err", float("nan")) <= psi_goal
+        # both goals: phi (score) and psi
+        return r["max_score"] <= 1.0 and r["max_psi_err"] <= psi_goal
 
     cr = sorted((r for r in rows if r["scheme"] == "catmull-rom"), key=lambda r: r["bytes"])
     meeting = [r for r in cr if meets(r)]
