@@ -8,3 +8,8 @@ REPORT_ARGS ?=
 
 report: deps-py ## write docs/report.md + docs/report/*.png (every number computed by this run)
 	MPLBACKEND=Agg $(PY) -m bake.report --out docs/report.md $(REPORT_ARGS)
+
+.PHONY: golden
+golden: $(PLAN) ## re-record tests/golden/*.plan.csv and demo.txt (only for a change meant to move them)
+	@for f in tests/golden/*.in.csv; do $(PLAN) --csv $$f > $${f%.in.csv}.plan.csv || [ $$? -eq 1 ]; done
+	$(PLAN) > tests/golden/demo.txt
