@@ -109,8 +109,57 @@ typedef struct oi_model {
     int moon_model;           /* OI_MOON_PHASE_LAW or OI_MOON_LAMBERT */
     int limb_darkening;       /* OI_LIMB_UNIFORM or OI_LIMB_DARKENED */
     int no_atmosphere;        /* nonzero: as if the Earth had no atmosphere */
-    const oi_earth_table *earth_table; /* NULL: the baked default table */
+    const oi_earth_table *earth_table; /* earthshine table; NULL: oi_earth_table_default() */
+    const oi_atm_table *atm_table;     /* atmosphere table; NULL: oi_atm_table_default() */
 } oi_model;
+
+/*
+ * Baked tables of a model (include/oi_table.h, docs/tables.md).
+ *
+ * earth_table: the earthshine table oi_earthshine and oi_illuminate use
+ *   with earth_model = OI_EARTH_TABLE. NULL: oi_earth_table_default(). A
+ *   caller's table is checked on every call that uses it: format
+ *   OI_TABLE_FORMAT, kind OI_TABLE_KIND_EARTHSHINE (or 0), n_lit, n_term,
+ *   n_alt >= 2 (n_alt >= 3 when w_min = 0), q and psi not NULL, 0 <= w_min <
+ *   w_max <= pi/2, term_k0 in [0, 20], term_kp in [0, 100]; otherwise the
+ *   call returns OI_ERR_MODEL with its outputs zeroed. Beyond the table's
+ *   altitude range: the Lambert far field and OI_WARN_TABLE_RANGE.
+ * atm_table: the atmosphere table oi_sun_fraction and oi_illuminate use
+ *   when the atmosphere is on (no_atmosphere = 0, OI_NO_ATMOSPHERE not
+ *   defined); ignored otherwise. NULL: oi_atm_table_default(). A caller's
+ *   table is checked by every function that takes the model: format
+ *   OI_ATM_FORMAT, kind OI_TABLE_KIND_ATMOSPHERE, nz, na >= 2, nb >= 1, each
+ *   <= 32767, nt = na + nb, q and psi not NULL, 0 < z_min_km < z_max_km,
+ *   h_a_km > 0, 0 <= h_c_km < v_mid_km < top_km <= OI_ATM_TOP_MAX_KM,
+ *   alpha_c_rad >= 0, w_rho in [0, 1], f_floor > 0, q_scale and
+ *   psi_scale_rad finite, psi codes within +-OI_ATM_PSI_MAX_RAD, e_mid,
+ *   c_iu, ln10 > 0 and finite (every real field finite); otherwise
+ *   OI_ERR_MODEL, outputs zeroed. The table must be compiled in the
+ *   caller's precision (its grid is oi_real).
+ *
+ * Defaults: each is returned by a function of its own translation unit
+ * (src/earth_table_default.c, src/atm_table_default.c), the only reference
+ * to the default table's bytes. The library's: oi_earth_diffuse (every
+ * altitude) and oi_atm_vband; -DOI_EARTH_TABLE_DEFAULT=<table> /
+ * -DOI_ATM_TABLE_DEFAULT=<table> at the library's build choose another.
+ * A program may define either function itself, returning its own table or
+ * NULL: then neither the library's function nor its table is linked. A
+ * default is trusted (not checked). A NULL default with a NULL field:
+ * earthshine is the Lambert far field with OI_WARN_TABLE_RANGE (as with
+ * OI_NO_EARTH_TABLE, which makes the library's default NULL); the
+ * atmosphere adds nothing, fraction_atm is the geometric fraction of the
+ * model's disc (as with OI_NO_ATMOSPHERE, which makes its default NULL).
+ */
+const oi_earth_table *oi_earth_table_default(void);
+const oi_atm_table *oi_atm_table_default(void);
+
+/* Highest top of a caller's atmosphere table (km): oi_illuminate's test
+ * for certain full sunlight assumes that no grazing ray climbs above
+ * twice this height. */
+#define OI_ATM_TOP_MAX_KM (100.0)
+/* Largest |psi| a caller's atmosphere table may encode (rad): the tilt of
+ * the light's direction uses a series of tan exact to rounding below it. */
+#define OI_ATM_PSI_MAX_RAD (0.05)
 
 /* ---------------------------------------------------------------- geometry */
 
@@ -158,10 +207,13 @@ typedef struct oi_shadow {
  * spherical-cap overlap).
  * Given:   sun_km   Sun position (km, Earth-centred)
  *          point_km point position (km, Earth-centred), above the surface
- *          model    NULL or model constants
+ *          model    NULL or model constants (atm_table: see oi_model)
  * Returned: out    fractions and geometry
- * Returns: OI_OK; OI_WARN_TABLE_RANGE (the point is beyond the atmosphere
- *          table's reach behind the Earth: fraction_atm is the geometric one);
+ * Returns: OI_OK; OI_WARN_TABLE_RANGE (the point is within the atmosphere's
+ *          reach but beyond the z range of the table used: fraction_atm is
+ *          the geometric one; with no atmosphere table at all, the model's
+ *          atm_table NULL and oi_atm_table_default() NULL, fraction_atm is
+ *          the geometric fraction and the status OI_OK);
  *          OI_ERR_NULL, OI_ERR_NONFINITE, OI_ERR_ZERO_VECTOR,
  *          OI_ERR_BELOW_SURFACE, OI_ERR_GEOMETRY, OI_ERR_MODEL, OI_ERR_RADIUS.
  */
@@ -176,16 +228,22 @@ int oi_sun_fraction(const oi_real sun_km[3], const oi_real point_km[3],
  *   E_earth = albedo * TSI * (1 AU / |sun|)^2 * phi.
  * Given:   theta  angle at the Earth's centre between Sun and point (rad, [0, pi])
  *          h_km   altitude above the model's Earth radius (km, > 0)
- *          model  NULL or model (earth_model, earth_table, earth_radius_km)
+ *          model  NULL or model (earth_model, earth_table, earth_radius_km;
+                 tables: see oi_model)
  * Returned: phi   normalised scalar irradiance (>= 0)
  *           psi   mean incidence direction: angle from the nadir (point to Earth
  *                 centre) towards the Sun side, in the Sun-Earth-point plane (rad)
  * Returns: OI_OK (also for model->earth_model = OI_EARTH_LAMBERT: the far
  *          field (R/r)^2 p(theta), psi = 0, by choice); OI_WARN_TABLE_RANGE
- *          (outside the altitude range of model->earth_table, or a build with
- *          OI_NO_EARTH_TABLE and no table given: Lambert far field used);
- *          OI_ERR_NULL, OI_ERR_NONFINITE, OI_ERR_BELOW_SURFACE (h_km <= 0),
- *          OI_ERR_MODEL, OI_ERR_RADIUS (negative model radius).
+ *          (outside the altitude range of the table used, or no table: the
+ *          model's earth_table NULL and oi_earth_table_default() NULL, as
+ *          with OI_NO_EARTH_TABLE: Lambert far field, psi = 0);
+ *          OI_ERR_NULL (phi or psi NULL), OI_ERR_NONFINITE (theta or h_km
+ *          NaN or infinite), OI_ERR_BELOW_SURFACE (h_km <= 0), OI_ERR_MODEL
+ *          (a model field out of range, or a caller's earth_table or
+ *          atm_table that fails its check, see oi_model), OI_ERR_RADIUS
+ *          (negative model radius). On error phi and psi (when not NULL)
+ *          are 0.
  * Notes:   The default table covers every altitude h > 0, from the surface to
  *          infinity: relative error <= 1e-3 where phi >= 1% of phi(0, h),
  *          absolute <= 1e-5 phi(0, h) elsewhere, measured from h = 1 m up

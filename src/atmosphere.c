@@ -1,37 +1,19 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * atmosphere.c: sunlight refracted and dimmed by the Earth's atmosphere into
- * the shadow, looked up in the baked table tables/oi_atm_table.c (issue 4).
+ * the shadow, looked up in a baked oi_atm_table (include/oi_table.h; the
+ * default tables/oi_atm_vband.c), and the check of a caller's table.
  * The whole file disappears with OI_NO_ATMOSPHERE.
  */
 #ifndef OI_NO_ATMOSPHERE
 
-#include "oi_internal.h"
-#include "oi_atm_table.h"
-
-#if OI_ATM_TABLE_FORMAT != 2
-#error "atmosphere.c: oi_atm_table format mismatch: regenerate (make bake-atm)"
-#endif
-
-#define ATM_R(x) ((oi_real)(x))
-#define ATM_HC ATM_R(OI_ATM_H_C_KM)
-#define ATM_HA ATM_R(OI_ATM_H_A_KM)
-
-/* Derived constants of the table's coordinates, written out because C has no
- * constant exp/log (tests/c/test_atmosphere.c, test_derived_constants, checks
- * the first two against the table's macros and fails if a re-bake moves them):
- *   ATM_E_MID = exp(-(OI_ATM_V_MID_KM - OI_ATM_H_C_KM) / OI_ATM_H_A_KM)
- *   ATM_C_IU  = (OI_ATM_NZ - 1) / ln(OI_ATM_Z_MAX_KM / OI_ATM_Z_MIN_KM)
- *   ATM_LN10  = ln 10 */
-#define ATM_E_MID ATM_R(4.56323900581031082406e-4)
-#define ATM_C_IU ATM_R(6.80394688315094529987)
-#define ATM_LN10 ATM_R(2.30258509299404568402)
+#include "oi_tables_internal.h"
 
 /* The ray-altitude solve (see solve_x): a Halley step whose size is below
- * ATM_X_TOL (units of OI_ATM_H_A_KM) leaves an error of order ATM_X_TOL^3
- * (cubic convergence, relative curvature of phi below 1), far below the
- * rounding of phi itself; ATM_MAX_IT bounds the loop (bisection fallback
- * halves a bracket of < 20 units to < ATM_X_TOL in ~20 steps). */
+ * ATM_X_TOL (units of h_a_km) leaves an error of order ATM_X_TOL^3 (cubic
+ * convergence, relative curvature of phi below 1), far below the rounding
+ * of phi itself; ATM_MAX_IT bounds the loop (bisection fallback halves a
+ * bracket of < 20 units to < ATM_X_TOL in ~20 steps). */
 #ifdef OI_SINGLE_PRECISION
 #define ATM_X_TOL OI_R(1e-3)
 #else
@@ -39,40 +21,21 @@
 #endif
 #define ATM_MAX_IT 40
 
-/*
- * Ray altitude of the table's coordinate map: the root x in [lo, hi] of
- *   phi(x) = H x - K exp(-x) - tp,
- * x = (v - h_c) / H, K = z alpha_c, tp = rho - rc - h_c, i.e. the v with
- * image radius rc + v - z alpha_c exp(-(v - h_c)/H) = rho (bake/atm_table.py
- * _m, _solve_v). phi is increasing and concave; lo must be a lower bound of
- * the root and hi an upper bound; e_lo is K exp(-lo) when the caller knows
- * it (else any value <= 0).
- *
- * The baker inverts the map by 48 fixed bisection steps (each an exp); here
- * safeguarded Halley iteration (one exp a step) from the largest cheap lower
- * bound: lo, x >= tp / H (as K exp(-x) > 0) and, since K exp(-x) = H x - tp
- * <= H hi - tp at the root, x >= ln(K / (H hi - tp)). At the last two
- * K exp(-x) is known without an exp (H hi - tp, e_lo), and e_lo <= H hi -
- * tp shows that the log bound is below lo without taking it. Two or three steps
- * reach the root to ~1e-13 (double); the bisection's own result is within
- * 2^-48 of its bracket of the root, so both agree to ~1e-12 km, ~1e-12
- * table cells (tests/c/test_atmosphere.c measures it against a copy of the
- * bisection). Each evaluation also narrows [lo, hi]; a step leaving it is
- * replaced by bisection, so the iteration cannot diverge.
- *
- * Reference: Halley's method, e.g. Press, W. H. et al. 2007, Numerical
- * Recipes, 3rd ed., Cambridge, section 9.4.2.
- */
-static oi_real solve_x(oi_real tp, oi_real k, oi_real lo, oi_real hi, oi_real e_lo)
+/* Largest node count along either axis of a caller's table: nz nt codes
+ * stay below INT_MAX. */
+#define ATM_N_MAX 32767
+
+/* First Halley iterate of solve_x: the largest cheap lower bound of the
+ * root (lo, tp / H, ln(K / (H hi - tp))) and K exp(-x) there in *e. */
+static oi_real solve_x_start(oi_real ha, oi_real tp, oi_real k, oi_real lo, oi_real hi,
+                             oi_real e_lo, oi_real *e_out)
 {
     oi_real x = lo, e = e_lo, den, xb;
-    int n;
-
-    if (tp / ATM_HA > x) {
-        x = tp / ATM_HA;
+    if (tp / ha > x) {
+        x = tp / ha;
         e = (oi_real)0;
     }
-    den = ATM_HA * hi - tp;
+    den = ha * hi - tp;
     /* the log bound exceeds x only if K exp(-x) > den: known when e is */
     if (den > (oi_real)0 && k > (oi_real)0 && !(e > (oi_real)0 && e <= den)) {
         xb = OI_LOG(k / den);
@@ -85,11 +48,45 @@ static oi_real solve_x(oi_real tp, oi_real k, oi_real lo, oi_real hi, oi_real e_
         x = hi;
         e = (oi_real)0;
     }
-    lo = x;
     if (!(e > (oi_real)0)) e = k * OI_EXP(-x);
+    *e_out = e;
+    return x;
+}
+
+/*
+ * Ray altitude of the table's coordinate map: the root x in [lo, hi] of
+ *   phi(x) = H x - K exp(-x) - tp,
+ * x = (v - h_c) / H, K = z alpha_c, tp = rho - rc - h_c, i.e. the v with
+ * image radius rc + v - z alpha_c exp(-(v - h_c)/H) = rho (the baker's
+ * window, bake/atmosphere). phi is increasing and concave; lo must be a
+ * lower bound of the root and hi an upper bound; e_lo is K exp(-lo) when the
+ * caller knows it (else any value <= 0).
+ *
+ * The baker inverts the map by 48 fixed bisection steps (each an exp); here
+ * safeguarded Halley iteration (one exp a step) from the largest cheap lower
+ * bound: lo, x >= tp / H (as K exp(-x) > 0) and, since K exp(-x) = H x - tp
+ * <= H hi - tp at the root, x >= ln(K / (H hi - tp)). At the last two
+ * K exp(-x) is known without an exp (H hi - tp, e_lo), and e_lo <= H hi -
+ * tp shows that the log bound is below lo without taking it. Two or three
+ * steps reach the root to ~1e-13 (double); the bisection's own result is
+ * within 2^-48 of its bracket of the root, so both agree to ~1e-12 km,
+ * ~1e-12 table cells (tests/c/test_atmosphere.c measures it against a copy
+ * of the bisection). Each evaluation also narrows [lo, hi]; a step leaving
+ * it is replaced by bisection, so the iteration cannot diverge.
+ *
+ * Reference: Halley's method, e.g. Press, W. H. et al. 2007, Numerical
+ * Recipes, 3rd ed., Cambridge, section 9.4.2.
+ */
+static oi_real solve_x(oi_real ha, oi_real tp, oi_real k, oi_real lo, oi_real hi, oi_real e_lo)
+{
+    oi_real e;
+    oi_real x = solve_x_start(ha, tp, k, lo, hi, e_lo, &e);
+    int n;
+
+    lo = x;
     for (n = 0; n < ATM_MAX_IT; ++n) {
-        oi_real phi = ATM_HA * x - e - tp;
-        oi_real d1 = ATM_HA + e;
+        oi_real phi = ha * x - e - tp;
+        oi_real d1 = ha + e;
         oi_real xn;
         int halley;
         if (phi < (oi_real)0)
@@ -114,64 +111,54 @@ static oi_real clamp01(oi_real x)
     return x < (oi_real)0 ? (oi_real)0 : (x > (oi_real)1 ? (oi_real)1 : x);
 }
 
-/* Bilinear interpolation of a [NZ][NT] table of 16-bit codes (the decoding
- * min + scale * code is linear, so it is applied after interpolating). */
-static oi_real bilinear(const unsigned short *tab, int i, int j, oi_real fu, oi_real ft)
-{
-    const unsigned short *r0 = tab + i * OI_ATM_NT + j;
-    const unsigned short *r1 = r0 + OI_ATM_NT;
-    oi_real a = ((oi_real)1 - ft) * (oi_real)r0[0] + ft * (oi_real)r0[1];
-    oi_real b = ((oi_real)1 - ft) * (oi_real)r1[0] + ft * (oi_real)r1[1];
-    return ((oi_real)1 - fu) * a + fu * b;
-}
-
 /*
  * Continuous table indices (iu along z, it along the window) of a point at
- * z (OI_ATM_Z_MIN_KM..OI_ATM_Z_MAX_KM) behind the Earth and rho < rho_hi
- * from the axis, with rc = R (1 + z/d) and a = z R_sun / d. Returns 0 when
- * the point is inside the window, -1 below it (no unblocked refracted ray:
- * fraction exactly 0). The coordinates of bake/atm_table.py (Window, coords):
+ * z (z_min_km..z_max_km) behind the Earth and rho < rho_hi from the axis,
+ * with rc = R (1 + z/d) and a = z R_sun / d. Returns 0 when the point is
+ * inside the window, -1 below it (no unblocked refracted ray: fraction
+ * exactly 0). The coordinates of the baker's window:
  *   target = max(0, M(h_c) - 1.2 a); v_lo: M(v_lo) = target, in
  *   [h_c - 60, h_c] (the root is always inside: M(h_c - 60) < target);
- *   rho_lo = M(v_lo) = target; rho_mid = M(V_MID).
+ *   rho_lo = M(v_lo) = target; rho_mid = M(v_mid).
  * Below the window costs no transcendental; segment B a log; segment A a
  * log and two solves (solve_x).
  */
-static int table_index(oi_real z, oi_real rho, oi_real rc, oi_real a, oi_real *iu,
-                       oi_real *it)
+static int table_index(const oi_atm_table *t, oi_real z, oi_real rho, oi_real rc, oi_real a,
+                       oi_real *iu, oi_real *it)
 {
-    oi_real k = z * ATM_R(OI_ATM_ALPHA_C_RAD);
+    const oi_real ha = t->h_a_km, hc = t->h_c_km;
+    oi_real k = z * t->alpha_c_rad;
     oi_real rho_lo, rho_mid, rho_hi;
 
-    rho_lo = rc + ATM_HC - k - OI_R(1.2) * a;
+    rho_lo = rc + hc - k - OI_R(1.2) * a;
     if (rho_lo < (oi_real)0) rho_lo = (oi_real)0;
     if (rho < rho_lo) return -1;
-    rho_hi = rc + a + ATM_R(OI_ATM_TOP_KM);
-    rho_mid = rc + ATM_R(OI_ATM_V_MID_KM) - k * ATM_E_MID;
+    rho_hi = rc + a + t->top_km;
+    rho_mid = rc + t->v_mid_km - k * t->e_mid;
     if (rho >= rho_mid) {
-        *it = (oi_real)(OI_ATM_NA - 1) + (rho - rho_mid) / (rho_hi - rho_mid) * (oi_real)OI_ATM_NB;
+        *it = (oi_real)(t->na - 1) + (rho - rho_mid) / (rho_hi - rho_mid) * (oi_real)t->nb;
     } else {
-        /* segment A: blend of the ray altitude and rho (bake/atm_table.py g_a),
-         * in x = (v - h_c) / H: tv = (x - x_lo) / (x_mid - x_lo) */
-        const oi_real x_mid = (ATM_R(OI_ATM_V_MID_KM) - ATM_HC) / ATM_HA;
-        oi_real tp_lo = rho_lo - rc - ATM_HC;
-        oi_real x_lo = solve_x(tp_lo, k, (oi_real)-60 / ATM_HA, (oi_real)0, (oi_real)0);
+        /* segment A: blend of the ray altitude and rho, in x = (v - h_c) /
+         * H: tv = (x - x_lo) / (x_mid - x_lo) */
+        const oi_real x_mid = (t->v_mid_km - hc) / ha;
+        oi_real tp_lo = rho_lo - rc - hc;
+        oi_real x_lo = solve_x(ha, tp_lo, k, (oi_real)-60 / ha, (oi_real)0, (oi_real)0);
         /* at x_lo, K exp(-x_lo) = H x_lo - tp_lo (its equation) */
-        oi_real x = solve_x(rho - rc - ATM_HC, k, x_lo, x_mid, ATM_HA * x_lo - tp_lo);
+        oi_real x = solve_x(ha, rho - rc - hc, k, x_lo, x_mid, ha * x_lo - tp_lo);
         oi_real tv = (x - x_lo) / (x_mid - x_lo);
         oi_real tr = (rho - rho_lo) / (rho_mid - rho_lo);
-        *it = (((oi_real)1 - ATM_R(OI_ATM_W_RHO)) * tv + ATM_R(OI_ATM_W_RHO) * tr) *
-              (oi_real)(OI_ATM_NA - 1);
+        *it = (((oi_real)1 - t->w_rho) * tv + t->w_rho * tr) * (oi_real)(t->na - 1);
     }
-    *iu = OI_LOG(z / ATM_R(OI_ATM_Z_MIN_KM)) * ATM_C_IU;
+    *iu = OI_LOG(z / t->z_min_km) * t->c_iu;
     return 0;
 }
 
 /*
- * oi__atm_coords: the table's continuous indices for a point (internal, for
- * tests: declared in tests/c/test_atmosphere.c).
+ * oi__atm_coords: the continuous indices of a point in table t (internal,
+ * for tests: declared in tests/c/test_atmosphere.c).
  *
  * Given:
+ *   t      oi_atm_table*  the table
  *   z      oi_real  distance behind the Earth's centre along the anti-Sun axis (km)
  *   rho    oi_real  distance from that axis (km)
  *   d      oi_real  Sun's distance (km), > 0
@@ -182,21 +169,115 @@ static int table_index(oi_real z, oi_real rho, oi_real rc, oi_real a, oi_real *i
  * Returned (function value):
  *   0 inside the window; -1 below it (fraction 0); +1 outside the
  *   atmosphere's reach (z <= 0 or rho >= rho_hi: geometric fraction); +2
- *   within the reach but z outside OI_ATM_Z_MIN_KM..OI_ATM_Z_MAX_KM.
+ *   within the reach but z outside z_min_km..z_max_km.
  */
-int oi__atm_coords(oi_real z, oi_real rho, oi_real d, oi_real r_e, oi_real r_s, oi_real *iu,
-                   oi_real *it);
-int oi__atm_coords(oi_real z, oi_real rho, oi_real d, oi_real r_e, oi_real r_s, oi_real *iu,
-                   oi_real *it)
+int oi__atm_coords(const oi_atm_table *t, oi_real z, oi_real rho, oi_real d, oi_real r_e,
+                   oi_real r_s, oi_real *iu, oi_real *it);
+int oi__atm_coords(const oi_atm_table *t, oi_real z, oi_real rho, oi_real d, oi_real r_e,
+                   oi_real r_s, oi_real *iu, oi_real *it)
 {
     oi_real rc, a;
     *iu = *it = (oi_real)0;
     if (!(z > (oi_real)0 && d > (oi_real)0)) return 1;
     rc = r_e * ((oi_real)1 + z / d);
     a = z * r_s / d;
-    if (rho >= rc + a + ATM_R(OI_ATM_TOP_KM)) return 1;
-    if (z < ATM_R(OI_ATM_Z_MIN_KM) || z > ATM_R(OI_ATM_Z_MAX_KM)) return 2;
-    return table_index(z, rho, rc, a, iu, it);
+    if (rho >= rc + a + t->top_km) return 1;
+    if (z < t->z_min_km || z > t->z_max_km) return 2;
+    return table_index(t, z, rho, rc, a, iu, it);
+}
+
+/* 1 when v is finite and lo <= v <= hi (NaN fails). */
+static int in_range(oi_real v, oi_real lo, oi_real hi)
+{
+    return v >= lo && v <= hi && OI_ISFINITE(v);
+}
+
+int oi__atm_table_valid(const oi_atm_table *t)
+{
+    const oi_real big = (oi_real)OI_POSITION_MAX_KM, psi_max = (oi_real)OI_ATM_PSI_MAX_RAD;
+    if (t->format != OI_ATM_FORMAT || t->kind != OI_TABLE_KIND_ATMOSPHERE) return 0;
+    if (t->q == NULL || t->psi == NULL) return 0;
+    if (t->nz < 2 || t->na < 2 || t->nb < 1 || t->nz > ATM_N_MAX || t->na > ATM_N_MAX ||
+        t->nb > ATM_N_MAX || t->nt != t->na + t->nb)
+        return 0;
+    if (!(t->z_min_km > (oi_real)0) || !in_range(t->z_max_km, t->z_min_km, big) ||
+        !(t->z_max_km > t->z_min_km) || !(t->h_a_km > (oi_real)0) ||
+        !in_range(t->h_a_km, (oi_real)0, big))
+        return 0;
+    if (!in_range(t->h_c_km, (oi_real)0, t->v_mid_km) || !(t->h_c_km < t->v_mid_km) ||
+        !in_range(t->top_km, t->v_mid_km, (oi_real)OI_ATM_TOP_MAX_KM) ||
+        !(t->top_km > t->v_mid_km) || !in_range(t->alpha_c_rad, (oi_real)0, (oi_real)1) ||
+        !in_range(t->w_rho, (oi_real)0, (oi_real)1) || !in_range(t->f_floor, (oi_real)0, (oi_real)1) ||
+        !(t->f_floor > (oi_real)0))
+        return 0;
+    if (!OI_ISFINITE(t->q_min) || !OI_ISFINITE(t->q_scale) ||
+        !in_range(t->psi_min_rad, -psi_max, psi_max) ||
+        !in_range(t->psi_min_rad + OI_R(65535.0) * t->psi_scale_rad, -psi_max, psi_max))
+        return 0;
+    return in_range(t->e_mid, (oi_real)0, (oi_real)1) && t->e_mid > (oi_real)0 &&
+           in_range(t->c_iu, (oi_real)0, big) && t->c_iu > (oi_real)0 &&
+           in_range(t->ln10, OI_R(2.3), OI_R(2.31));
+}
+
+/* Direction of the refracted light: dir (the Sun's) tilted by psi towards
+ * e_out = (point + z s) / rho, the outward normal of the axis: dir ~ dir +
+ * tan(psi) e_out, normalised. |psi| <= OI_ATM_PSI_MAX_RAD: the series of tan
+ * to psi^7 is exact to rounding (next term 62/2835 psi^9 < 5e-14 psi). */
+static void tilt(oi_real psi, const oi_real point_km[3], oi_real z, const oi_real s_hat[3],
+                 oi_real rho, oi_real dir[3])
+{
+    const oi_real p2 = psi * psi;
+    const oi_real t = psi * ((oi_real)1 +
+                             p2 * (OI_R(1.0) / OI_R(3.0) +
+                                   p2 * (OI_R(2.0) / OI_R(15.0) + p2 * (OI_R(17.0) / OI_R(315.0)))));
+    const oi_real u = t / rho;
+    oi_real n;
+    int k;
+    for (k = 0; k < 3; ++k) dir[k] += u * (point_km[k] + z * s_hat[k]);
+    n = (oi_real)1 / OI_SQRT(oi__dot(dir, dir));
+    for (k = 0; k < 3; ++k) dir[k] *= n;
+}
+
+/* Unit vector s_hat towards the Sun; returns |sun|. */
+static oi_real sun_unit(const oi_real sun_km[3], oi_real s_hat[3])
+{
+    oi_real d = oi__dot(sun_km, sun_km);
+    int k;
+    if (OI_ISFINITE(d) && d > (oi_real)1) {
+        /* no overflow or underflow in the sum of squares: plain norm */
+        oi_real inv;
+        d = OI_SQRT(d);
+        inv = (oi_real)1 / d;
+        for (k = 0; k < 3; ++k) s_hat[k] = sun_km[k] * inv;
+        return d;
+    }
+    return oi__unit(sun_km, s_hat);
+}
+
+/* A point's cell in the table: row i, column j and the fractions. */
+typedef struct atm_cell {
+    int i, j;
+    oi_real fu, ft;
+} atm_cell;
+
+/* The table's fraction (limb-darkened disc) at continuous indices iu, it,
+ * and the cell for the direction's lookup. */
+static oi_real lookup_fraction(const oi_atm_table *t, oi_real iu, oi_real it, atm_cell *c)
+{
+    oi_real q;
+    /* iu, it >= 0 up to rounding (z >= z_min, rho >= rho_lo): the cells
+     * are clamped, the fractions not (a rounding's linear extrapolation) */
+    c->i = oi__cell_floor(iu, t->nz, &c->fu);
+    c->j = oi__cell_floor(it, t->nt, &c->ft);
+    q = t->q_min + t->q_scale * oi__bilinear_u16(t->q, t->nt, c->i, c->j, c->fu, c->ft);
+    return clamp01(OI_EXP(q * t->ln10) - t->f_floor);
+}
+
+/* The table that serves a resolved model (a caller's was checked by
+ * oi__model_resolve; the default is trusted); NULL: none. */
+static const oi_atm_table *table_of(const oi_model *m)
+{
+    return m->atm_table != NULL ? m->atm_table : oi_atm_table_default();
 }
 
 /*
@@ -207,7 +288,7 @@ int oi__atm_coords(oi_real z, oi_real rho, oi_real d, oi_real r_e, oi_real r_s, 
  *   sun_km    oi_real[3]  Sun position, Earth-centred (km), finite, nonzero
  *   point_km  oi_real[3]  point position, Earth-centred (km), above the surface
  *   m         oi_model*   resolved model (oi__model_resolve): earth_radius_km,
- *                         sun_radius_km, limb_darkening are used
+ *                         sun_radius_km, limb_darkening, atm_table are used
  *   frac      oi_real     geometric visible fraction of the uniform disc
  *   frac_ld   oi_real     geometric visible fraction of the limb-darkened disc
  *                         (both as oi_sun_fraction computes them)
@@ -225,30 +306,33 @@ int oi__atm_coords(oi_real z, oi_real rho, oi_real d, oi_real r_e, oi_real r_s, 
  *                         limb); untouched elsewhere
  * Returned (function value):
  *   OI_OK                 table used, or the point outside the atmosphere's
- *                         reach (geometric fraction, exact there).
+ *                         reach (geometric fraction, exact there), or no
+ *                         table (m->atm_table and oi_atm_table_default()
+ *                         NULL: the geometric fraction).
  *   OI_WARN_TABLE_RANGE   the point is within the atmosphere's reach but its
  *                         distance behind the Earth is outside the table
- *                         (OI_ATM_Z_MIN_KM .. OI_ATM_Z_MAX_KM): the geometric
- *                         fraction is returned.
+ *                         (z_min_km .. z_max_km): the geometric fraction is
+ *                         returned.
  * Notes:
- *  1. Coordinates (bake/atm_table.py): z = -point . s (s the unit vector to
- *     the Sun), rho = |point x s|; rc = R (1 + z/d), a = z R_sun / d with d
- *     = |sun|. The window along rho runs from rho_lo (deepest point any
- *     unblocked refracted ray reaches, minus the solar disc) to rho_hi = rc +
- *     a + top; below it the fraction is exactly 0, above it the geometric
- *     one. Rows are log-spaced in z; along rho the nodes are uniform in a
- *     blend of the model ray altitude v and rho up to v = OI_ATM_V_MID_KM,
- *     then uniform in rho.
+ *  1. Coordinates (the baker's window, bake/atmosphere, docs/atmosphere.md):
+ *     z = -point . s (s the unit vector to the Sun), rho = |point x s|; rc =
+ *     R (1 + z/d), a = z R_sun / d with d = |sun|. The window along rho runs
+ *     from rho_lo (deepest point any unblocked refracted ray reaches, minus
+ *     the solar disc) to rho_hi = rc + a + top; below it the fraction is
+ *     exactly 0, above it the geometric one. Rows are log-spaced in z; along
+ *     rho the nodes are uniform in a blend of the model ray altitude v and
+ *     rho up to v = v_mid_km, then uniform in rho.
  *  2. The table holds the limb-darkened disc (Neckel & Labs 1994). With
  *     OI_LIMB_UNIFORM the geometric difference frac - frac_ld is added
  *     (exact outside the atmosphere's effect), and the sum clamped to [0, 1].
- *  3. Accuracy: see the provenance in tables/oi_atm_table.c (maximum
- *     absolute error of the fraction against the deterministic reference
- *     bake/atm_rays.py at random off-grid points). The model atmosphere
- *     (1976 U.S. Standard, clouds opaque below 10 km, stated aerosol load)
- *     is itself uncertain by far more in a real eclipse season. The ray
- *     altitude is found by Halley iteration instead of the baker's
- *     bisection (solve_x): the indices agree to ~1e-12 cells (double).
+ *  3. Accuracy: see the provenance of the table (tables/oi_atm_vband.c:
+ *     maximum absolute error of the fraction against the baker's
+ *     deterministic ray reference at random off-grid points). The model
+ *     atmosphere (1976 U.S. Standard, clouds opaque below 10 km, stated
+ *     aerosol load) is itself uncertain by far more in a real eclipse
+ *     season. The ray altitude is found by Halley iteration instead of the
+ *     baker's bisection (solve_x): the indices agree to ~1e-12 cells
+ *     (double).
  *  4. The table is baked for the default Earth and Sun radii; other model
  *     radii move the window with them (rc, a) but not the atmosphere.
  *  5. Cost (docs/atmosphere.md, "Cost"): the day side (point . sun >= 0)
@@ -266,71 +350,41 @@ int oi__atm_coords(oi_real z, oi_real rho, oi_real d, oi_real r_e, oi_real r_s, 
 int oi__atm_fraction(const oi_real sun_km[3], const oi_real point_km[3], const oi_model *m,
                      oi_real frac, oi_real frac_ld, oi_real *fraction_atm, oi_real dir[3])
 {
+    const oi_atm_table *t;
     oi_real s_hat[3], cr[3];
-    oi_real d, z, rho2, rho, rc, a, rho_hi, iu, it, fu, ft, q, psi, f;
-    int i, j, k;
+    oi_real d, z, rho2, rho, rc, a, rho_hi, iu, it, f;
+    atm_cell c;
 
     f = m->limb_darkening == OI_LIMB_DARKENED ? frac_ld : frac;
     *fraction_atm = f;
     /* the day side, known before normalising (an overflowing product is
      * +-inf or NaN: only +inf, a point far sunward, returns here) */
     if (oi__dot(point_km, sun_km) >= (oi_real)0) return OI_OK;
-    d = oi__dot(sun_km, sun_km);
-    if (OI_ISFINITE(d) && d > (oi_real)1) {
-        /* no overflow or underflow in the sum of squares: plain norm */
-        oi_real inv;
-        d = OI_SQRT(d);
-        inv = (oi_real)1 / d;
-        for (k = 0; k < 3; ++k) s_hat[k] = sun_km[k] * inv;
-    } else {
-        d = oi__unit(sun_km, s_hat);
-    }
+    t = table_of(m);
+    if (t == NULL) return OI_OK;
+    d = sun_unit(sun_km, s_hat);
     z = -oi__dot(point_km, s_hat);
     if (!(z > (oi_real)0 && d > (oi_real)0)) return OI_OK;
     rc = m->earth_radius_km * ((oi_real)1 + z / d);
     a = z * m->sun_radius_km / d;
-    rho_hi = rc + a + ATM_R(OI_ATM_TOP_KM);
+    rho_hi = rc + a + t->top_km;
     oi__cross(point_km, s_hat, cr);
     rho2 = oi__dot(cr, cr);
     if (!(rho2 < rho_hi * rho_hi)) return OI_OK;
-    if (z < ATM_R(OI_ATM_Z_MIN_KM) || z > ATM_R(OI_ATM_Z_MAX_KM)) return OI_WARN_TABLE_RANGE;
+    if (z < t->z_min_km || z > t->z_max_km) return OI_WARN_TABLE_RANGE;
     rho = OI_SQRT(rho2);
 
-    if (table_index(z, rho, rc, a, &iu, &it) < 0) {
+    if (table_index(t, z, rho, rc, a, &iu, &it) < 0) {
         *fraction_atm = (oi_real)0;
         return OI_OK;
     }
-    /* iu, it >= 0 up to rounding (z >= Z_MIN, rho >= rho_lo): truncation is
-     * the floor wherever it matters, and the clamps catch the rest */
-    i = (int)iu;
-    if (i < 0) i = 0;
-    if (i > OI_ATM_NZ - 2) i = OI_ATM_NZ - 2;
-    j = (int)it;
-    if (j < 0) j = 0;
-    if (j > OI_ATM_NT - 2) j = OI_ATM_NT - 2;
-    fu = iu - (oi_real)i;
-    ft = it - (oi_real)j;
-    q = ATM_R(OI_ATM_Q_MIN) + ATM_R(OI_ATM_Q_SCALE) * bilinear(oi__atm_q, i, j, fu, ft);
-    f = clamp01(OI_EXP(q * ATM_LN10) - ATM_R(OI_ATM_F_FLOOR));
+    f = lookup_fraction(t, iu, it, &c);
     if (m->limb_darkening != OI_LIMB_DARKENED) f = clamp01(f + (frac - frac_ld));
     *fraction_atm = f;
-
     if (dir != NULL && f > (oi_real)0 && rho > (oi_real)0) {
-        /* tilt by psi towards e_out = (point + z s) / rho, the outward
-         * normal of the axis: dir ~ dir_sun + tan(psi) e_out, normalised.
-         * |psi| <= 0.012 rad (the codes' range): the series of tan to psi^7
-         * is exact to rounding (next term 62/2835 psi^9 < 1e-18). */
-        oi_real t, p2, n, u;
-        psi = ATM_R(OI_ATM_PSI_MIN_RAD) +
-              ATM_R(OI_ATM_PSI_SCALE_RAD) * bilinear(oi__atm_psi, i, j, fu, ft);
-        p2 = psi * psi;
-        t = psi * ((oi_real)1 +
-                   p2 * (OI_R(1.0) / OI_R(3.0) +
-                         p2 * (OI_R(2.0) / OI_R(15.0) + p2 * (OI_R(17.0) / OI_R(315.0)))));
-        u = t / rho;
-        for (k = 0; k < 3; ++k) dir[k] += u * (point_km[k] + z * s_hat[k]);
-        n = (oi_real)1 / OI_SQRT(oi__dot(dir, dir));
-        for (k = 0; k < 3; ++k) dir[k] *= n;
+        const oi_real psi = t->psi_min_rad +
+                            t->psi_scale_rad * oi__bilinear_u16(t->psi, t->nt, c.i, c.j, c.fu, c.ft);
+        tilt(psi, point_km, z, s_hat, rho, dir);
     }
     return OI_OK;
 }

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* model.c: defaults and validation of oi_model, and oi_scene_defaults. */
-#include "oi_internal.h"
+#include "oi_tables_internal.h"
 
 /* The default model (every other field zero: the default options). */
 static const oi_model default_model = {
@@ -19,7 +19,7 @@ static const oi_model default_model = {
  * bounds keep every intermediate finite), is rejected. Field i has the
  * bounds bound_lo/hi[i < N_RADII ? 0 : i - N_RADII + 1]. One loop over these
  * tables instead of six unrolled checks: the Sun-only build must fit 4 KiB of
- * flash (issue 6, docs/performance.md). */
+ * flash (docs/performance.md). */
 #define N_RADII 3
 #define N_FIELDS 6
 static const unsigned char field_offset[N_FIELDS] = {
@@ -69,12 +69,19 @@ int oi__model_resolve(const oi_model *in, oi_model *out)
     /* the limb-darkened disc is compiled out (include/oi_config.h) */
     if (in->limb_darkening == OI_LIMB_DARKENED) return OI_ERR_MODEL;
 #endif
+#ifndef OI_NO_ATMOSPHERE
+    /* a caller's atmosphere table, where it would be used (the default is
+     * trusted; the earthshine table is checked by oi_earthshine) */
+    if (in->atm_table != NULL && in->no_atmosphere == 0 && !oi__atm_table_valid(in->atm_table))
+        return OI_ERR_MODEL;
+#endif
     for (i = 0; i < N_FIELDS; i++) *(oi_real *)(void *)((char *)out + field_offset[i]) = v[i];
     out->earth_model = in->earth_model;
     out->moon_model = in->moon_model;
     out->limb_darkening = in->limb_darkening;
     out->no_atmosphere = in->no_atmosphere != 0;
     out->earth_table = in->earth_table;
+    out->atm_table = in->atm_table;
     return OI_OK;
 }
 
