@@ -18,7 +18,7 @@
 #include "oi_earth_leo.h"
 #include "ref_earthshine.h"
 
-/* The accuracy goal of issue 3: relative error <= 1e-3 where phi >= 1% of the
+/* The accuracy goal of the default table: relative error <= 1e-3 where phi >= 1% of the
  * subsolar value phi0 at that altitude, absolute error <= 1e-5 phi0 elsewhere;
  * psi within 1e-3 rad where phi >= 1% phi0. In single precision the inputs
  * theta and h are rounded to float (theta by up to 1.9e-7 rad): near the
@@ -474,11 +474,10 @@ static void test_huge_altitude(void **state)
     assert_true(phi >= 0 && (double)phi < 1e-20 && psi == 0);
 }
 
-/* ---- Agreement with the previous implementation (before the issue-6 speed-up).
- * old_* is a verbatim copy of the lookup of src/earthshine.c at commit
- * d4f6768 (separate q and psi interpolations, atan2 for w and psi, pow for the
- * terminator map, sinh by two exponentials), a different code path from the
- * shared-stencil lookup: the new code must agree to within rounding. */
+/* ---- Agreement with a straightforward lookup. old_* (the reference lookup)
+ * does separate q and psi interpolations, atan2 for w and psi, pow for the
+ * terminator map, sinh by two exponentials: a different code path from the
+ * runtime's shared-stencil lookup, which must agree to within rounding. */
 #include "oi_port.h"
 #include "oi_earth_diffuse.h"
 
@@ -675,7 +674,7 @@ static double agree_tol(oi_real th, oi_real h, oi_real R, const oi_earth_table *
 /* New lookup (oi_earthshine with model m) against the old one over npts
  * random points, h log-uniform in [hlo, hhi] km, theta uniform in [0, pi]
  * or, for a quarter each, in the terminator band pi/2 +- w and next to its
- * far edge pi/2 + w (the arctangent-free test of src/earthshine.c); returns the
+ * far edge pi/2 + w (the arctangent-free test of src/earthshine_table.c); returns the
  * number of disagreements (printed); *worst = max |new - old| / tol. */
 static int agreement(const oi_earth_table *t, const oi_model *m, oi_real R, double hlo,
                      double hhi, int npts, double *worst)
@@ -718,11 +717,11 @@ static int agreement(const oi_earth_table *t, const oi_model *m, oi_real R, doub
     return bad;
 }
 
-/* The shared-stencil lookup agrees with the previous implementation to
- * rounding: default table (its compile-time grid), the same table passed as
+/* The shared-stencil lookup agrees with the reference lookup to
+ * rounding: default table (the trusted default), the same table passed as
  * a caller's table (the validated, converted path), the LEO scene table
  * (another grid, w_min > 0) and a model radius other than the default. */
-static void test_agrees_with_previous(void **state)
+static void test_agrees_with_reference_lookup(void **state)
 {
     oi_earth_table copy = oi_earth_diffuse;
     oi_model m;
@@ -739,10 +738,9 @@ static void test_agrees_with_previous(void **state)
     assert_int_equal(agreement(&oi_earth_diffuse, &m, OI_R(1737.4), 1e-3, 1e6, 30000, &worst), 0);
 }
 
-/* The default table's grid is compiled into src/earthshine.c (it skips
- * validation and double conversion per call): the table must still hold that
- * grid, and the lookup through it must equal, bit for bit, the lookup of the
- * same table passed as a caller's table (validated, fields converted). */
+/* The default table (oi_earth_table_default, trusted: not checked) and the
+ * same table passed as a caller's table (checked) must give the same
+ * lookup, bit for bit. */
 static void test_default_grid_constants(void **state)
 {
     oi_earth_table copy = oi_earth_diffuse;
@@ -750,8 +748,10 @@ static void test_default_grid_constants(void **state)
     uint64_t st = 7u;
     int k;
     (void)state;
+    assert_true(oi_earth_table_default() == &oi_earth_diffuse);
     assert_true(oi_earth_diffuse.w_min == 0.0 && oi_earth_diffuse.w_max == 1.5707963267948966);
     assert_true(oi_earth_diffuse.term_k0 == 2.0 && oi_earth_diffuse.term_kp == 8.0);
+    assert_true(oi_earth_diffuse.kind == 0 || oi_earth_diffuse.kind == OI_TABLE_KIND_EARTHSHINE);
     memset(&m, 0, sizeof m);
     m.earth_table = &copy;
     for (k = 0; k < 50000; k++) {
@@ -768,7 +768,7 @@ static void test_default_grid_constants(void **state)
     }
 }
 
-/* A caller's table is validated field by field (src/earthshine.c compares the
+/* A caller's table is validated field by field (src/earthshine_table.c compares the
  * double fields by their bit patterns): boundaries of every check. */
 static void test_table_validation(void **state)
 {
@@ -858,7 +858,7 @@ int main(void)
         cmocka_unit_test(test_scene_table_leo),
         cmocka_unit_test(test_errors),
         cmocka_unit_test(test_huge_altitude),
-        cmocka_unit_test(test_agrees_with_previous),
+        cmocka_unit_test(test_agrees_with_reference_lookup),
         cmocka_unit_test(test_default_grid_constants),
         cmocka_unit_test(test_table_validation),
     };

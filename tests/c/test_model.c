@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "oi_internal.h"
+#include "oi_atm_vband.h"
 
 /* the fields, by name, for the loops below */
 enum { F_TSI, F_AU, F_SUN_R, F_EARTH_R, F_MOON_R, F_ALBEDO, N_F };
@@ -58,7 +59,7 @@ static int check_default(const oi_model *m)
              m->moon_radius_km == (oi_real)OI_MOON_RADIUS_KM &&
              m->moon_albedo == (oi_real)OI_MOON_ALBEDO_DEFAULT && m->earth_model == 0 &&
              m->moon_model == 0 && m->limb_darkening == 0 && m->no_atmosphere == 0 &&
-             m->earth_table == NULL;
+             m->earth_table == NULL && m->atm_table == NULL;
     if (!ok)
         printf("not the default model: tsi %.17g au %.17g rs %.17g re %.17g rm %.17g alb %.17g "
                "opts %d %d %d %d\n",
@@ -97,6 +98,7 @@ static void test_null_and_zero_are_default(void **state)
 static void test_values_are_kept(void **state)
 {
     static const oi_earth_table *const tab = (const oi_earth_table *)&tab;
+    static const oi_atm_table *const atm = (const oi_atm_table *)&atm;
     oi_model in, out;
     int f;
     (void)state;
@@ -106,6 +108,7 @@ static void test_values_are_kept(void **state)
     in.moon_model = OI_MOON_LAMBERT;
     in.no_atmosphere = 7;
     in.earth_table = tab;
+    in.atm_table = atm; /* not checked: the atmosphere is off */
     assert_int_equal(oi__model_resolve(&in, &out), OI_OK);
     for (f = 0; f < N_F; f++) {
         oi_real want = *field(&in, f), got = *field(&out, f);
@@ -117,6 +120,7 @@ static void test_values_are_kept(void **state)
     assert_int_equal(out.limb_darkening, OI_LIMB_UNIFORM);
     assert_int_equal(out.no_atmosphere, 1);
     assert_true(out.earth_table == tab);
+    assert_true(out.atm_table == atm);
     /* the upper bounds are accepted too */
     for (f = 0; f < N_F; f++) *field(&in, f) = hi_of(f);
     assert_int_equal(oi__model_resolve(&in, &out), OI_OK);
@@ -208,9 +212,34 @@ static void test_options(void **state)
 #endif
 }
 
+/* A caller's atmosphere table is checked where it is used (atmosphere on)
+ * and kept; one that fails its check gives OI_ERR_MODEL and the default
+ * model (each failing field: tests/c/test_atmosphere.c). */
+static void test_atm_table(void **state)
+{
+#ifdef OI_NO_ATMOSPHERE
+    (void)state;
+    printf("test_atm_table: OI_NO_ATMOSPHERE, the table is never used or checked\n");
+#else
+    oi_atm_table t = oi_atm_vband;
+    oi_model in, out;
+    (void)state;
+    memset(&in, 0, sizeof in);
+    in.atm_table = &t;
+    assert_int_equal(oi__model_resolve(&in, &out), OI_OK);
+    assert_true(out.atm_table == &t);
+    t.nt = t.na; /* nt != na + nb */
+    expect(&in, OI_ERR_MODEL, "atm_table with nt != na + nb");
+    in.no_atmosphere = 1; /* off: not used, not checked */
+    assert_int_equal(oi__model_resolve(&in, &out), OI_OK);
+    assert_true(out.atm_table == &t);
+#endif
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_atm_table),
         cmocka_unit_test(test_null_and_zero_are_default),
         cmocka_unit_test(test_values_are_kept),
         cmocka_unit_test(test_each_field_rejected),
