@@ -3,7 +3,8 @@
 """size_report.py: flash and RAM of the runtime per configuration and option set.
 
 Reads the GNU ld map files of the small programs that `make size` links with
---gc-sections (target/size_full.c, target/size_sun.c) and attributes every
+--gc-sections (target/size_full.c, target/size_sun.c; with --kinds the
+program kinds of examples/size/, mk/size.mk) and attributes every
 retained input section to its owner: the runtime (liborbillum.a), libm, libc,
 libgcc, the stubs of missing functions, or the harness (startup, main).
 
@@ -13,6 +14,7 @@ libgcc, the stubs of missing functions, or the harness (startup, main).
 Prints `name value unit` lines; goals are checked on the library alone
 (libm, libc and libgcc are reported on their own lines).
 Usage: tools/size_report.py --objdir build/cross --cfgs "m4f-Os ..." --sets "full ..."
+       tools/size_report.py --kinds "sun_noatm ..." --kinddir build/size --kindcfgs "host m4f-Os"
 """
 import argparse
 import os
@@ -106,13 +108,52 @@ def get(t, owner, kind):
     return t.get((owner, kind), 0)
 
 
+# archive members that are baked tables (tables/*.c)
+TABLE_MEMBER = re.compile(r"^oi_(earth|atm)_\w+\.o$")
+
+
+def report_kinds(args):
+    """Bytes linked from the library per program kind: flash of the runtime
+    (text + rodata + data), of which the baked tables, and libm."""
+    kinds = args.kinds.split()
+    rows = {}
+    for cfg in args.kindcfgs.split():
+        for k in kinds:
+            base = os.path.join(args.kinddir, cfg, k)
+            path = base + ".map" if cfg == "host" else base + ".elf.map"
+            t, members, _ = parse_map(path)
+            flash = sum(get(t, "lib", x) for x in ("text", "rodata", "data"))
+            tables = sum(v for m, v in members.items() if TABLE_MEMBER.match(m))
+            libm = sum(get(t, "libm", x) for x in ("text", "rodata", "data"))
+            p = "size.kind.%s.%s" % (cfg, k)
+            print("%s.lib.flash %d bytes" % (p, flash))
+            print("%s.lib.tables %d bytes  # %s" % (
+                p, tables, " ".join(sorted(m for m in members if TABLE_MEMBER.match(m))) or "none"))
+            print("%s.lib.code %d bytes" % (p, flash - tables))
+            if cfg != "host":
+                print("%s.libm.flash %d bytes" % (p, libm))
+            rows[(cfg, k)] = (flash, tables)
+    print("# bytes linked from liborbillum.a per program kind (--gc-sections): total (tables)")
+    print("# %-7s %s" % ("cfg", " ".join("%17s" % k for k in kinds)))
+    for cfg in args.kindcfgs.split():
+        print("# %-7s %s" % (cfg, " ".join("%17s" % ("%d (%d)" % rows[(cfg, k)]) for k in kinds)))
+    return 0
+
+
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("--objdir", required=True)
-    ap.add_argument("--cfgs", required=True)
-    ap.add_argument("--sets", required=True)
+    ap.add_argument("--objdir")
+    ap.add_argument("--cfgs")
+    ap.add_argument("--sets")
     ap.add_argument("--nm", default="arm-none-eabi-nm")
+    ap.add_argument("--kinds", help="program kinds (examples/size/<kind>.c)")
+    ap.add_argument("--kinddir", help="their build folder: <kinddir>/<cfg>/<kind>[.elf].map")
+    ap.add_argument("--kindcfgs", default="host", help="host and/or cross configurations")
     args = ap.parse_args()
+    if args.kinds:
+        return report_kinds(args)
+    if not (args.objdir and args.cfgs and args.sets):
+        ap.error("--objdir, --cfgs and --sets (or --kinds)")
     ok = True
     goals = []
     table = {}
@@ -151,7 +192,7 @@ def main():
                 goals.append("goal.zero_data_bss.%s.%s missed (%d bytes of .data/.bss in the library)"
                              % (cfg, s, data + bss))
             # the runtime's own math functions (src/atan2.c, src/sincos.c: what
-            # libm provides, in the library since issue 6), listed apart
+            # libm provides, in the library), listed apart
             math = sum(members.get(k, 0) for k in MATH_MEMBERS)
             print("%s.lib.math_kernels %d bytes  # %s" % (p, math, " ".join(MATH_MEMBERS)))
             if s in ("sun_only", "sun_uniform"):
