@@ -91,7 +91,7 @@ int oi__earth_lookup(const oi_earth_table *t, oi_real theta, oi_real cos_theta,
                      oi_real sin_theta, oi_real x, oi_real s, oi_real R, oi_real *phi,
                      oi_real *psi);
 
-/* ---------------------------------------------------------------- atmosphere.c */
+/* ---------------------------------------------------------------- atm_table_check.c */
 #ifndef OI_NO_ATMOSPHERE
 /* 1 when a caller's atmosphere table has the format, kind, sizes and grid
  * constants the lookup can use (include/orbillum.h, oi_model.atm_table),

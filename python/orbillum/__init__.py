@@ -99,8 +99,8 @@ def _model(model):
         return None
     m = L.oi_model()
     for k, v in dict(model).items():
-        if k == "earth_table":
-            raise ValueError("earth_table cannot be set from Python")
+        if k in ("earth_table", "atm_table"):
+            raise ValueError(f"{k} cannot be set from Python")
         if not any(k == f[0] for f in L.oi_model._fields_):
             raise ValueError(f"unknown model field {k!r}")
         if isinstance(v, str):

@@ -49,7 +49,7 @@ class oi_model(ctypes.Structure):
         ("tsi_w_m2", real), ("au_km", real), ("sun_radius_km", real),
         ("earth_radius_km", real), ("moon_radius_km", real), ("moon_albedo", real),
         ("earth_model", c_int), ("moon_model", c_int), ("limb_darkening", c_int),
-        ("no_atmosphere", c_int), ("earth_table", c_void_p),
+        ("no_atmosphere", c_int), ("earth_table", c_void_p), ("atm_table", c_void_p),
     ]
 
 

@@ -20,7 +20,7 @@ class Model(C.Structure):
                 ("moon_radius_km", C.c_double), ("moon_albedo", C.c_double),
                 ("earth_model", C.c_int), ("moon_model", C.c_int),
                 ("limb_darkening", C.c_int), ("no_atmosphere", C.c_int),
-                ("earth_table", C.c_void_p)]
+                ("earth_table", C.c_void_p), ("atm_table", C.c_void_p)]
 
 
 class Shadow(C.Structure):
