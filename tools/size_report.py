@@ -120,7 +120,7 @@ def report_kinds(args):
     for cfg in args.kindcfgs.split():
         for k in kinds:
             base = os.path.join(args.kinddir, cfg, k)
-            path = base + ".map" if cfg == "host" else base + ".elf.map"
+            path = base + ".map"
             t, members, _ = parse_map(path)
             flash = sum(get(t, "lib", x) for x in ("text", "rodata", "data"))
             tables = sum(v for m, v in members.items() if TABLE_MEMBER.match(m))
@@ -147,7 +147,7 @@ def main():
     ap.add_argument("--sets")
     ap.add_argument("--nm", default="arm-none-eabi-nm")
     ap.add_argument("--kinds", help="program kinds (examples/size/<kind>.c)")
-    ap.add_argument("--kinddir", help="their build folder: <kinddir>/<cfg>/<kind>[.elf].map")
+    ap.add_argument("--kinddir", help="their build folder: <kinddir>/<cfg>/<kind>.map")
     ap.add_argument("--kindcfgs", default="host", help="host and/or cross configurations")
     args = ap.parse_args()
     if args.kinds:
