@@ -9,14 +9,6 @@
 
 #define HALF_PI_R ((oi_real)(0.5 * OI_PI))
 
-/* The grid of one table in oi_real, converted once per call from the
- * table's double fields. */
-typedef struct oi__earth_grid {
-    const oi_earth_table *t; /* payload and sizes */
-    int surf;                /* w_min = 0: the first row is the surface */
-    int full;                /* w_min = 0 and w_max = pi/2: every h > 0 is inside */
-    oi_real w_min, w_max, k0, kp;
-} oi__earth_grid;
 
 /* Tolerance (in grid cells) for points on the altitude range's ends that
  * rounding puts just outside: they are clamped onto the end node. */
@@ -27,6 +19,26 @@ typedef struct oi__earth_grid {
 #define EDGE_TOL_CELLS OI_R(1e-9)
 #define BOUND_MARGIN OI_R(3.5527136788005009e-15) /* 16 DBL_EPSILON */
 #endif
+
+/* The check of a caller's table without double arithmetic (the
+ * single-precision build must not pull in software double compares): the
+ * double fields are compared by their IEEE 754 binary64 bit patterns, which,
+ * read as unsigned integers, order like the values for non-negative doubles
+ * (+inf above every finite value, NaN above +inf). -0 is read as +0. The
+ * checks are those of the double comparisons they replace (w_min >= 0,
+ * w_max > w_min, w_max <= (pi/2)(1 + 1e-15), k0 in [0, 20], kp in [0, 100]). */
+typedef unsigned long long es_bits;
+typedef char es_bits_hold_a_double[sizeof(es_bits) == sizeof(double) ? 1 : -1];
+#define ES_SIGN_BIT 0x8000000000000000ULL
+#define ES_INF_BITS 0x7FF0000000000000ULL
+
+/* Bits of d with -0 as +0; values above ES_INF_BITS are NaN or negative. */
+static es_bits nonneg_bits(double d)
+{
+    es_bits u;
+    memcpy(&u, &d, sizeof u);
+    return u == ES_SIGN_BIT ? 0ULL : u;
+}
 
 /* Catmull-Rom along theta in one segment row: p points at column i of the
  * row; lo (i = 0) and hi (i = n - 2) replace the columns outside the segment
@@ -50,13 +62,14 @@ static oi_real row_interior(const float *p, const oi_real wa[4])
 
 /* Ghost rows of one 4-row stencil (the theta spline is linear in the rows):
  * quadratic below a surface row (w_min = 0, n_alt >= 3, so that row 2
- * exists), else linear; then the Catmull-Rom sum in w. r[1], r[2] are rows
+ * exists; decided here, where it is needed), else linear; then the Catmull-Rom sum in w. r[1], r[2] are rows
  * j, j + 1; r[0], r[3] rows j - 1, j + 2 where they exist. */
-static oi_real alt_sum(oi_real r[4], int j, int n_alt, int surf, const oi_real wb[4])
+static oi_real alt_sum(oi_real r[4], int j, const oi_earth_table *t, const oi_real wb[4])
 {
+    const int n_alt = t->n_alt;
     if (j + 2 >= n_alt) r[3] = OI_R(2.0) * r[2] - r[1];
     if (j - 1 < 0) {
-        if (surf && n_alt >= 3) r[0] = OI_R(3.0) * (r[1] - r[2]) + r[3];
+        if (nonneg_bits(t->w_min) == 0ULL && n_alt >= 3) r[0] = OI_R(3.0) * (r[1] - r[2]) + r[3];
         else r[0] = OI_R(2.0) * r[1] - r[2];
     }
     return wb[0] * r[0] + wb[1] * r[1] + wb[2] * r[2] + wb[3] * r[3];
@@ -66,11 +79,10 @@ static oi_real alt_sum(oi_real r[4], int j, int n_alt, int surf, const oi_real w
  * (columns off..off+n-1) at fractional indices fv (theta) and fw (altitude):
  * one stencil (cells, weights, ghost flags, rows inside the table) serves
  * both tables. */
-static void seg_interp(const oi__earth_grid *g, int off, int n, oi_real fv, oi_real fw,
+static void seg_interp(const oi_earth_table *t, int off, int n, oi_real fv, oi_real fw,
                        oi_real *vq, oi_real *vp)
 {
     oi_real wa[4], wb[4], rq[4], rp[4], fa, fb;
-    const oi_earth_table *t = g->t;
     const int i = oi__cell_clamped(fv, n, &fa);
     const int j = oi__cell_clamped(fw, t->n_alt, &fb);
     const int lo = i == 0, hi = i + 2 >= n;
@@ -105,8 +117,8 @@ static void seg_interp(const oi__earth_grid *g, int off, int n, oi_real fv, oi_r
             }
         }
     }
-    *vq = alt_sum(rq, j, t->n_alt, g->surf, wb);
-    *vp = alt_sum(rp, j, t->n_alt, g->surf, wb);
+    *vq = alt_sum(rq, j, t, wb);
+    *vp = alt_sum(rp, j, t, wb);
 }
 
 /* asinh(z) without cancellation for small |z|: series z (1 - z^2/6 + 3 z^4/40
@@ -150,39 +162,20 @@ static oi_real sinh_r(oi_real k)
 /* Position t in [-1, 1] of m = (theta - pi/2) / w on the terminator map
  * m = sinh(k t) / sinh(k), k = k0 x^kp (the baker's grid, bake/earthshine).
  * x^8 (the default table's kp) by three squarings instead of pow. */
-static oi_real term_t(oi_real m, oi_real x, const oi__earth_grid *g)
+static oi_real term_t(oi_real m, oi_real x, const oi_earth_table *t)
 {
+    const oi_real k0 = (oi_real)t->term_k0, kp = (oi_real)t->term_kp;
     oi_real k;
-    if (!(g->k0 > (oi_real)0)) return m;
-    if (g->kp == OI_R(8.0)) {
+    if (!(k0 > (oi_real)0)) return m;
+    if (kp == OI_R(8.0)) {
         const oi_real x2 = x * x;
         const oi_real x4 = x2 * x2;
-        k = g->k0 * (x4 * x4);
+        k = k0 * (x4 * x4);
     } else {
-        k = g->k0 * OI_POW(x, g->kp);
+        k = k0 * OI_POW(x, kp);
     }
     if (k < OI_R(1e-4)) return m; /* the map deviates from m by ~k^2/6 */
     return asinh_r(m * sinh_r(k)) / k;
-}
-
-/* The check of a caller's table without double arithmetic (the
- * single-precision build must not pull in software double compares): the
- * double fields are compared by their IEEE 754 binary64 bit patterns, which,
- * read as unsigned integers, order like the values for non-negative doubles
- * (+inf above every finite value, NaN above +inf). -0 is read as +0. The
- * checks are those of the double comparisons they replace (w_min >= 0,
- * w_max > w_min, w_max <= (pi/2)(1 + 1e-15), k0 in [0, 20], kp in [0, 100]). */
-typedef unsigned long long es_bits;
-typedef char es_bits_hold_a_double[sizeof(es_bits) == sizeof(double) ? 1 : -1];
-#define ES_SIGN_BIT 0x8000000000000000ULL
-#define ES_INF_BITS 0x7FF0000000000000ULL
-
-/* Bits of d with -0 as +0; values above ES_INF_BITS are NaN or negative. */
-static es_bits nonneg_bits(double d)
-{
-    es_bits u;
-    memcpy(&u, &d, sizeof u);
-    return u == ES_SIGN_BIT ? 0ULL : u;
 }
 
 int oi__earth_table_valid(const oi_earth_table *t)
@@ -199,18 +192,6 @@ int oi__earth_table_valid(const oi_earth_table *t)
     }
     return nonneg_bits(t->term_k0) <= nonneg_bits(20.0) &&
            nonneg_bits(t->term_kp) <= nonneg_bits(100.0);
-}
-
-/* The grid of a valid table in oi_real (converted once per call). */
-static void grid_of(const oi_earth_table *t, oi__earth_grid *g)
-{
-    g->t = t;
-    g->surf = nonneg_bits(t->w_min) == 0ULL;
-    g->w_min = (oi_real)t->w_min;
-    g->w_max = (oi_real)t->w_max;
-    g->k0 = (oi_real)t->term_k0;
-    g->kp = (oi_real)t->term_kp;
-    g->full = g->surf && g->w_max >= HALF_PI_R;
 }
 
 /* 1 when theta > pi/2 lies certainly beyond the cap's far edge, theta >=
@@ -233,11 +214,10 @@ static int beyond_far_edge(oi_real theta, oi_real z)
 }
 
 /* The lookup at w = acos(x) inside the table's altitude range: phi, psi. */
-static void lookup_inside(const oi__earth_grid *g, oi_real theta, oi_real cos_theta,
+static void lookup_inside(const oi_earth_table *t, oi_real theta, oi_real cos_theta,
                           oi_real sin_theta, oi_real x, oi_real w, oi_real fw, oi_real *phi,
                           oi_real *psi)
 {
-    const oi_earth_table *t = g->t;
     const oi_real tb = HALF_PI_R - w;
     oi_real q, p, fv;
     if (theta <= tb && tb > (oi_real)0) {
@@ -246,7 +226,7 @@ static void lookup_inside(const oi__earth_grid *g, oi_real theta, oi_real cos_th
         oi_real ct = cos_theta, st = sin_theta;
         if (cos_theta > (oi_real)1) OI_SINCOS(theta, &st, &ct);
         fv = theta / tb * (oi_real)(t->n_lit - 1);
-        seg_interp(g, 0, t->n_lit, fv, fw, &q, &p);
+        seg_interp(t, 0, t->n_lit, fv, fw, &q, &p);
         q *= ct;
         p = OI_ATAN2(p * w * st, ct);
     } else {
@@ -254,8 +234,8 @@ static void lookup_inside(const oi__earth_grid *g, oi_real theta, oi_real cos_th
         oi_real mm = (theta - HALF_PI_R) / w;
         if (mm > OI_R(1.0)) mm = OI_R(1.0);
         if (mm < OI_R(-1.0)) mm = OI_R(-1.0);
-        fv = OI_R(0.5) * (term_t(mm, x, g) + OI_R(1.0)) * (oi_real)(t->n_term - 1);
-        seg_interp(g, t->n_lit, t->n_term, fv, fw, &q, &p);
+        fv = OI_R(0.5) * (term_t(mm, x, t) + OI_R(1.0)) * (oi_real)(t->n_term - 1);
+        seg_interp(t, t->n_lit, t->n_term, fv, fw, &q, &p);
         q *= w;
     }
     if (q < (oi_real)0) q = (oi_real)0;
@@ -269,23 +249,25 @@ int oi__earth_lookup(const oi_earth_table *t, oi_real theta, oi_real cos_theta,
                      oi_real sin_theta, oi_real x, oi_real s, oi_real R, oi_real *phi,
                      oi_real *psi)
 {
-    oi__earth_grid g;
+    /* the grid in oi_real, converted once per call */
+    const oi_real w_min = (oi_real)t->w_min, w_max = (oi_real)t->w_max;
     oi_real w, cells, fw;
-    grid_of(t, &g);
-    /* a table covering every altitude: beyond the cap's far edge without
-     * the arctangent (z = s / R = tan(w), may be +inf) */
-    if (g.full && theta > HALF_PI_R && beyond_far_edge(theta, s / R)) {
+    /* a table covering every altitude (w_min = 0, w_max = pi/2): beyond the
+     * cap's far edge without the arctangent (z = s / R = tan(w), may be
+     * +inf) */
+    if (theta > HALF_PI_R && nonneg_bits(t->w_min) == 0ULL && w_max >= HALF_PI_R &&
+        beyond_far_edge(theta, s / R)) {
         *phi = *psi = (oi_real)0;
         return 1;
     }
     w = OI_ATAN2(s, R); /* = acos(x), no cancellation at low altitude */
     cells = (oi_real)(t->n_alt - 1);
-    fw = (w - g.w_min) / (g.w_max - g.w_min) * cells;
+    fw = (w - w_min) / (w_max - w_min) * cells;
     if (!(fw >= -EDGE_TOL_CELLS && fw <= cells + EDGE_TOL_CELLS)) return 0;
     if (theta >= HALF_PI_R + w) {
         *phi = *psi = (oi_real)0; /* nothing lit is visible */
         return 1;
     }
-    lookup_inside(&g, theta, cos_theta, sin_theta, x, w, fw, phi, psi);
+    lookup_inside(t, theta, cos_theta, sin_theta, x, w, fw, phi, psi);
     return 1;
 }
