@@ -1,4 +1,4 @@
 # SPDX-License-Identifier: MIT
 """orbillum baker: earthshine reference, tables, emitter (python -m bake)."""
 
-__version__ = "1.0.0"
+__version__ = "2.0.0"

@@ -32,14 +32,13 @@ bisection: the two agree to ~1e-12 of a cell (tests/c/test_atmosphere.c).
 """
 from __future__ import annotations
 
-import hashlib
-import json
 import os
 
 import numpy as np
 
 from . import atm_profile as ap
 from . import atm_rays as ar
+from .common.emit import round_sig
 
 Z_MIN = 500.0            # km behind the Earth's centre
 Z_MAX = 5.0e5            # km (beyond the Moon's apogee, 4.07e5 km)
@@ -53,7 +52,7 @@ W_RHO = 0.5              # weight of the uniform-in-rho part of segment A's coor
 NZ, NA, NB = 48, 72, 13  # rows in z; nodes in segment A (incl. both ends), B
 NT = NA + NB
 ND = 1
-TABLE_FORMAT = 2         # OI_ATM_TABLE_FORMAT in the generated header
+MEASURE_SEED = 1         # seed of the measurement points
 Q_MIN, Q_MAX = np.log10(F_FLOOR), 1e-3   # range of the stored q (16-bit codes)
 U16 = 65535
 N_BISECT = 48
@@ -208,7 +207,7 @@ def lookup(q, psi, alpha_c, h_c, z, rho, d):
     return min(F, 1.0), pv, 0
 
 
-def measure(rays, q, psi, alpha_c, h_c, n=400, seed=1, progress=False):
+def measure(rays, q, psi, alpha_c, h_c, n=400, seed=MEASURE_SEED, progress=False):
     """Errors of the lookup against the reference at random off-grid points
     (fixed seed): z log-uniform, rho uniform in the window, d uniform."""
     rng = np.random.default_rng(seed)
@@ -236,12 +235,14 @@ def measure(rays, q, psi, alpha_c, h_c, n=400, seed=1, progress=False):
     rel = np.abs(Fl[big] - F[big]) / F[big]
     w = F > 1e-3
     psi_err = np.abs(a[w, 6] - a[w, 5])
+    # rounded: the text of the provenance must not depend on libm's last bits
+    r = round_sig
     return {
         "n_points": int(n),
-        "max_abs_error": float(abs_err.max()),
-        "rms_abs_error": float(np.sqrt(np.mean(abs_err ** 2))),
-        "max_rel_error_F_gt_1e-4": float(rel.max()) if rel.size else 0.0,
-        "max_psi_error_rad_F_gt_1e-3": float(psi_err.max()) if psi_err.size else 0.0,
+        "max_abs_error": r(abs_err.max()),
+        "rms_abs_error": r(np.sqrt(np.mean(abs_err ** 2))),
+        "max_rel_error_F_gt_1e-4": r(rel.max()) if rel.size else 0.0,
+        "max_psi_error_rad_F_gt_1e-3": r(psi_err.max()) if psi_err.size else 0.0,
     }, a
 
 
@@ -265,116 +266,126 @@ def quantise(q, psi):
 
 # ---------------------------------------------------------------- emitter
 
-BASENAME = "oi_atm_table"
+NAME = "oi_atm_vband"
+TABLE_FORMAT = 3         # OI_ATM_FORMAT in include/oi_table.h
+GENERATOR = "bake.atmosphere"
+GOAL_ABS_F = 1e-2        # goal: max |F error| of the lookup (absolute fraction)
+# Transitional: tables/oi_atm_table.h with the former macros, read by
+# src/atmosphere.c and tests/c/test_atmosphere.c until they take the struct.
+COMPAT_HEADER = True
+LAYOUT = ("format", "kind", "info", "nz", "nt", "na", "nb", "z_min_km", "z_max_km", "h_a_km",
+          "v_mid_km", "alpha_c_rad", "h_c_km", "top_km", "w_rho", "f_floor", "earth_radius_km",
+          "sun_radius_km", "au_km", "q_min", "q_scale", "psi_min_rad", "psi_scale_rad", "e_mid",
+          "c_iu", "ln10", "q", "psi")
 
 
-def _c_u16(name, values, per_line=12):
-    vals = ["%d" % int(v) for v in np.asarray(values).ravel()]
-    lines = ["    " + ", ".join(vals[k:k + per_line]) + "," for k in range(0, len(vals), per_line)]
-    return "const unsigned short %s[%d] = {\n%s\n};\n" % (name, len(vals), "\n".join(lines))
+def derived_constants(nz, z_min, z_max, v_mid, h_c, h_a):
+    """e_mid, c_iu, ln10 correctly rounded (mpmath at 200 bits from the exact
+    doubles): their printed value does not depend on any libm."""
+    import mpmath
+    with mpmath.workprec(200):
+        e_mid = mpmath.exp(-(mpmath.mpf(v_mid) - mpmath.mpf(h_c)) / mpmath.mpf(h_a))
+        c_iu = mpmath.mpf(nz - 1) / mpmath.log(mpmath.mpf(z_max) / mpmath.mpf(z_min))
+        ln10 = mpmath.log(10)
+        return float(e_mid), float(c_iu), float(ln10)
 
 
-def _c_double(v):
-    from .emit import c_double
-    return c_double(v)
-
-
-def emit(outdir, uq, up, scales, alpha_c, h_c, err, profile: ap.Profile):
-    """Write tables/oi_atm_table.{c,h,json}: byte-for-byte reproducible."""
+def table(uq, up, scales, alpha_c, h_c, err, profile: ap.Profile):
+    """The Table of the atmosphere bake (bake/common/emit.py)."""
     from . import __version__
+    from .common import emit as cemit
     uq, up = uq[0], up[0]
-    h = hashlib.sha256()
-    h.update(uq.astype("<u2").tobytes())
-    h.update(up.astype("<u2").tobytes())
-    sha = h.hexdigest()
-    consts = {
-        "NZ": NZ, "NT": NT, "NA": NA, "NB": NB, "N_BISECT": N_BISECT,
-    }
-    reals = {
-        "Z_MIN_KM": Z_MIN, "Z_MAX_KM": Z_MAX, "H_A_KM": H_A, "V_MID_KM": V_MID,
-        "ALPHA_C_RAD": alpha_c, "H_C_KM": h_c, "TOP_KM": profile.top_km, "W_RHO": W_RHO,
-        "F_FLOOR": F_FLOOR, "EARTH_RADIUS_KM": profile.earth_radius_km,
-        "SUN_RADIUS_KM": ar.SUN_RADIUS_KM, "AU_KM": ar.AU_KM,
-        "Q_MIN": scales["Q_MIN"], "Q_SCALE": scales["Q_SCALE"],
-        "PSI_MIN_RAD": scales["PSI_MIN"], "PSI_SCALE_RAD": scales["PSI_SCALE"],
-    }
+    e_mid, c_iu, ln10 = derived_constants(NZ, Z_MIN, Z_MAX, V_MID, h_c, H_A)
+    reals = [
+        ("z_min_km", Z_MIN), ("z_max_km", Z_MAX), ("h_a_km", H_A), ("v_mid_km", V_MID),
+        ("alpha_c_rad", alpha_c), ("h_c_km", h_c), ("top_km", profile.top_km), ("w_rho", W_RHO),
+        ("f_floor", F_FLOOR), ("earth_radius_km", profile.earth_radius_km),
+        ("sun_radius_km", ar.SUN_RADIUS_KM), ("au_km", ar.AU_KM),
+        ("q_min", scales["Q_MIN"]), ("q_scale", scales["Q_SCALE"]),
+        ("psi_min_rad", scales["PSI_MIN"]), ("psi_scale_rad", scales["PSI_SCALE"]),
+        ("e_mid", e_mid), ("c_iu", c_iu), ("ln10", ln10)]
+    ints = [("nz", NZ), ("nt", NT), ("na", NA), ("nb", NB)]
+    prof = {k: getattr(profile, k) for k in (
+        "kind", "n0", "top_km", "extinction", "cloud_top_km", "ozone_du",
+        "aer_trop_tau", "aer_strat_tau")}
+    params = {"profile": prof, "n_bisect": N_BISECT,
+              "grid": {"nz": NZ, "na": NA, "nb": NB, "z_min_km": Z_MIN, "z_max_km": Z_MAX,
+                       "h_a_km": H_A, "v_mid_km": V_MID, "w_rho": W_RHO, "f_floor": F_FLOOR},
+              "measure": {"n_points": err["n_points"], "seed": MEASURE_SEED},
+              "goal_abs_f": GOAL_ABS_F}
     prov = [
-        f"generator: bake.atm_table (orbillum bake {__version__}), table format {TABLE_FORMAT}",
-        f"profile: {profile.kind} (1976 U.S. Standard Atmosphere density, N_s = {profile.n0:.6g} at 550 nm),",
+        "Sunlight through the atmosphere into the Earth's shadow: fraction F of",
+        "unobstructed sunlight and its mean direction psi (docs/atmosphere.md).",
+        f"Profile: {profile.kind} (1976 U.S. Standard Atmosphere density, N_s = {profile.n0:.6g} at 550 nm),",
         f"  top {profile.top_km:g} km; extinction {'on' if profile.extinction else 'off'}: Rayleigh (Bodhaine 1999),",
         f"  ozone {profile.ozone_du:g} DU (Chappuis), aerosol tau {profile.aer_trop_tau:g} (trop.) +"
         f" {profile.aer_strat_tau:g} (strat.) at 550 nm;",
         f"  clouds opaque below {profile.cloud_top_km:g} km; V band (Bessell 1990) x 5772 K black body;",
         "  solar disc: Neckel & Labs (1994) limb darkening at 559.95 nm.",
-        f"grid: z = {Z_MIN:g} .. {Z_MAX:g} km behind the Earth's centre, {NZ} rows log-spaced;",
+        f"Grid: z = {Z_MIN:g} .. {Z_MAX:g} km behind the Earth's centre, {NZ} rows log-spaced;",
         f"  along rho {NT} nodes: {NA} uniform in a blend ({1 - W_RHO:g} : {W_RHO:g}) of the model ray altitude",
-        f"  v (H_A = {H_A:g} km, alpha_c = {alpha_c:.9g} rad at h_c = {h_c:g} km) and rho, up to",
-        f"  v = {V_MID:g} km, then {NB} uniform in rho",
-        "  up to rc + a + top (see bake/atm_table.py); the Sun's distance enters through the window",
-        "  (table baked at 1 AU).",
-        "values: q = log10(F + F_FLOOR), psi (rad): mean direction of the light from the Sun's centre,",
-        "  positive away from the Earth's centre; stored as 16-bit codes, value = MIN + SCALE * code",
+        f"  v (h_a = {H_A:g} km, alpha_c = {alpha_c:.9g} rad at h_c = {h_c:g} km) and rho, up to",
+        f"  v = {V_MID:g} km, then {NB} uniform in rho up to rc + a + top; the Sun's distance",
+        "  enters through the window (table baked at 1 AU).",
+        "Values: q = log10(F + f_floor), psi (rad): mean direction of the light from the Sun's centre,",
+        "  positive away from the Earth's centre; stored as 16-bit codes, value = min + scale * code",
         "  (q step 1.2e-4 dex, i.e. 2.8e-4 relative in F).",
-        f"measured against bake.atm_rays.fraction at {err['n_points']} random off-grid points (seed 1,",
+        f"Measured against the ray reference at {err['n_points']} random off-grid points (seed {MEASURE_SEED},",
         "  z log-uniform, rho uniform along the nodes, d in [0.9832, 1.0168] AU), bilinear lookup:",
-        f"  max |F error| {err['max_abs_error']:.3e}, rms {err['rms_abs_error']:.3e},",
+        f"  max |F error| {err['max_abs_error']:.3e} (goal {GOAL_ABS_F:g}), rms {err['rms_abs_error']:.3e},",
         f"  max relative error where F > 1e-4: {err['max_rel_error_F_gt_1e-4']:.3e},",
         f"  max psi error where F > 1e-3: {err['max_psi_error_rad_F_gt_1e-3']:.3e} rad.",
-        f"payload sha256 (q then psi codes, little-endian uint16): {sha}",
     ]
-    guard = BASENAME.upper() + "_H"
-    hdr = [
-        "/* SPDX-License-Identifier: MIT */",
-        "/*",
-        f" * {BASENAME}.h: generated by bake/atm_table.py (make bake-atm); do not edit.",
-        " * Sunlight through the atmosphere into the Earth's shadow (issue 4).",
-        " */",
-        f"#ifndef {guard}",
-        f"#define {guard}",
-        "",
-        f"#define OI_ATM_TABLE_FORMAT {TABLE_FORMAT}",
-    ]
-    for k, v in consts.items():
-        hdr.append(f"#define OI_ATM_{k} ({v})")
-    for k, v in reals.items():
-        hdr.append(f"#define OI_ATM_{k} ({_c_double(v)})")
-    hdr += [
-        "",
-        "#ifndef OI_NO_ATMOSPHERE",
-        "/* Codes of q = log10(fraction + OI_ATM_F_FLOOR) = OI_ATM_Q_MIN + OI_ATM_Q_SCALE * code",
-        " * and psi (rad) = OI_ATM_PSI_MIN_RAD + OI_ATM_PSI_SCALE_RAD * code, row-major [NZ][NT]. */",
-        f"extern const unsigned short oi__atm_q[{NZ * NT}];",
-        f"extern const unsigned short oi__atm_psi[{NZ * NT}];",
-        "#endif",
-        "",
-        f"#endif /* {guard} */",
-        "",
-    ]
-    src = ["/* SPDX-License-Identifier: MIT */", "/*"]
-    src += [f" * {line}" for line in prov]
-    src += [" */", f'#include "{BASENAME}.h"', "", "#ifndef OI_NO_ATMOSPHERE",
-            f"#if OI_ATM_TABLE_FORMAT != {TABLE_FORMAT}",
-            '#error "oi_atm_table: format mismatch: regenerate (make bake-atm)"',
-            "#endif", "", _c_u16("oi__atm_q", uq), _c_u16("oi__atm_psi", up),
-            "#else", "typedef int oi__atm_table_removed; /* no empty translation unit */",
-            "#endif /* OI_NO_ATMOSPHERE */", ""]
-    meta = {
-        "generator": "bake.atm_table", "version": __version__, "table_format": TABLE_FORMAT,
-        "grid": consts, "constants": reals, "measured_error": err, "sha256": sha,
-        "bytes": int(uq.nbytes + up.nbytes),
-        "profile": {k: getattr(profile, k) for k in (
-            "kind", "n0", "top_km", "extinction", "cloud_top_km", "ozone_du",
-            "aer_trop_tau", "aer_strat_tau")},
-    }
-    os.makedirs(outdir, exist_ok=True)
-    with open(os.path.join(outdir, BASENAME + ".h"), "w") as f:
-        f.write("\n".join(hdr))
-    with open(os.path.join(outdir, BASENAME + ".c"), "w") as f:
-        f.write("\n".join(src))
-    with open(os.path.join(outdir, BASENAME + ".json"), "w") as f:
-        json.dump(meta, f, indent=1, sort_keys=True)
-        f.write("\n")
-    return meta
+    grid = dict(ints + reals[:12])
+    compat = None
+    if COMPAT_HEADER:
+        compat = True
+    t = cemit.Table(
+        name=NAME, kind="atmosphere", ctype="oi_atm_table", format=("OI_ATM_FORMAT", TABLE_FORMAT),
+        summary="baked atmosphere table (V band): sunlight refracted into the shadow.",
+        fields=[(k, v, "int") for k, v in ints] + [(k, v, "real") for k, v in reals],
+        arrays=[("q", uq, "u16"), ("psi", up, "u16")], layout=LAYOUT,
+        generator=GENERATOR, version=__version__, parameters=params, seed=MEASURE_SEED,
+        goal=GOAL_ABS_F, max_error=cemit.round_sig(err["max_abs_error"] / GOAL_ABS_F),
+        measured=err, grid=grid, provenance=prov)
+    t.compat = compat and dict(ints + reals)
+    return t
+
+
+def compat_header(t):
+    """Text of the transitional tables/oi_atm_table.h (the former macros)."""
+    from .common.emit import c_double
+    c = t.compat
+    lines = ["/* SPDX-License-Identifier: MIT */",
+             "/*",
+             " * oi_atm_table.h: transitional names of the atmosphere table %s" % t.name,
+             " * for src/atmosphere.c and tests/c/test_atmosphere.c until they read the",
+             " * struct (generated with it by `python -m bake atmosphere`; do not edit).",
+             " */",
+             "#ifndef OI_ATM_TABLE_H", "#define OI_ATM_TABLE_H", "",
+             '#include "%s.h"' % t.name, "",
+             "#define OI_ATM_TABLE_FORMAT 2",
+             "#define OI_ATM_NZ (%d)" % c["nz"], "#define OI_ATM_NT (%d)" % c["nt"],
+             "#define OI_ATM_NA (%d)" % c["na"], "#define OI_ATM_NB (%d)" % c["nb"],
+             "#define OI_ATM_N_BISECT (%d)" % N_BISECT]
+    for k in ("z_min_km", "z_max_km", "h_a_km", "v_mid_km", "alpha_c_rad", "h_c_km", "top_km",
+              "w_rho", "f_floor", "earth_radius_km", "sun_radius_km", "au_km", "q_min", "q_scale",
+              "psi_min_rad", "psi_scale_rad"):
+        lines.append("#define OI_ATM_%s (%s)" % (k.upper(), c_double(c[k])))
+    lines += ["#define oi__atm_q (%s.q)" % t.name, "#define oi__atm_psi (%s.psi)" % t.name,
+              "", "#endif /* OI_ATM_TABLE_H */", ""]
+    return "\n".join(lines)
+
+
+def emit(outdir, uq, up, scales, alpha_c, h_c, err, profile: ap.Profile):
+    """Write tables/oi_atm_vband.{c,h,json}: byte-for-byte reproducible."""
+    from .common import emit as cemit
+    t = table(uq, up, scales, alpha_c, h_c, err, profile)
+    cemit.write(outdir, t)
+    if t.compat:
+        with open(os.path.join(outdir, "oi_atm_table.h"), "w", encoding="ascii", newline="\n") as f:
+            f.write(compat_header(t))
+    return {"bytes": t.payload_bytes(), "sha256": t.payload_sha256()}
 
 
 def main(argv=None):
@@ -396,7 +407,7 @@ def main(argv=None):
     if args.vectors:
         write_vectors(args.vectors, rays, q, psi, alpha_c, h_c)
     print(f"atm table: {meta['bytes']} bytes, max |dF| {err['max_abs_error']:.2e}, "
-          f"{time.time() - t0:.0f} s -> {args.out}/{BASENAME}.*")
+          f"{time.time() - t0:.0f} s -> {args.out}/{NAME}.*")
 
 
 # ---------------------------------------------------------------- C test vectors
@@ -441,21 +452,16 @@ def write_vectors(path, rays, q, psi, alpha_c, h_c, n_per_z=6, seed=7):
 
 
 def load_table(tables_dir="tables"):
-    """Read the committed table back from its generated C source and JSON:
-    (q, psi, alpha_c, h_c) decoded, shaped (1, NZ, NT), for the Python mirror."""
-    with open(os.path.join(tables_dir, BASENAME + ".json")) as f:
-        meta = json.load(f)
-    src = open(os.path.join(tables_dir, BASENAME + ".c")).read()
-    c = meta["constants"]
-    nz, nt = meta["grid"]["NZ"], meta["grid"]["NT"]
-
-    def codes(name):
-        body = src.split(name + "[")[1].split("{", 1)[1].split("}", 1)[0]
-        return np.array([int(v) for v in body.replace("\n", " ").split(",") if v.strip()], dtype=float)
-
-    q = c["Q_MIN"] + c["Q_SCALE"] * codes("oi__atm_q")
-    psi = c["PSI_MIN_RAD"] + c["PSI_SCALE_RAD"] * codes("oi__atm_psi")
-    return q.reshape(1, nz, nt), psi.reshape(1, nz, nt), c["ALPHA_C_RAD"], c["H_C_KM"]
+    """Read the committed table back from its generated C source: (q, psi,
+    alpha_c, h_c) decoded, shaped (1, NZ, NT), for the Python mirror."""
+    from .common import emit as cemit
+    with open(os.path.join(tables_dir, NAME + ".c"), encoding="ascii") as f:
+        parsed = cemit.parse_c(f.read())
+    t = parsed["structs"][NAME]["fields"]
+    nz, nt = t["nz"], t["nt"]
+    q = t["q_min"] + t["q_scale"] * parsed["arrays"][NAME + "_q"].astype(float)
+    psi = t["psi_min_rad"] + t["psi_scale_rad"] * parsed["arrays"][NAME + "_psi"].astype(float)
+    return q.reshape(1, nz, nt), psi.reshape(1, nz, nt), t["alpha_c_rad"], t["h_c_km"]
 
 
 if __name__ == "__main__":

@@ -174,7 +174,7 @@ def section(outdir) -> str:
     F_atm = np.array([ar.fraction(rays, zz, [rr], want_psi=False, n_mu=24)[0][0] for zz, rr in zip(z, rh)])
     F_seed = np.array([ar.fraction(rays_seed, zz, [rr], want_psi=False, n_mu=24)[0][0]
                        for zz, rr in zip(z, rh)])
-    meta = json.load(open(os.path.join(ROOT, "tables", "oi_atm_table.json")))
+    meta = json.load(open(os.path.join(ROOT, "tables", "oi_atm_vband.json")))
     q, psi_t, alpha_c, h_c = at.load_table(os.path.join(ROOT, "tables"))
     F_lut = []
     for zz, rr, fg in zip(z, rh, F_geo):
@@ -377,8 +377,8 @@ def section(outdir) -> str:
 
     # ---------------------------------------------------------- 5. table
     out.append("### Runtime table\n")
-    me = meta["measured_error"]
-    out.append(f"`tables/oi_atm_table.c`: {meta['bytes']} bytes (16-bit codes, {at.NZ} x {at.NT} x 2), "
+    me = meta["measured"]
+    out.append(f"`tables/oi_atm_vband.c`: {meta['payload_bytes']} bytes (16-bit codes, {at.NZ} x {at.NT} x 2), "
                f"z = {at.Z_MIN:g}..{at.Z_MAX:g} km behind the Earth, nodes following the shadow "
                "(bake/atm_table.py). Measured against the reference at "
                f"{me['n_points']} random off-grid points: max |dF| = {me['max_abs_error']:.2e}, "

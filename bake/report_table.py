@@ -27,22 +27,8 @@ TABLE = "oi_earth_diffuse"
 def _load_default():
     from . import emit
 
-    with open(os.path.join(ROOT, "tables", TABLE + ".c"), encoding="ascii") as f:
-        c = f.read()
-    with open(os.path.join(ROOT, "tables", TABLE + ".h"), encoding="ascii") as f:
-        h = f.read()
-    with open(os.path.join(ROOT, "tables", TABLE + ".json"), encoding="ascii") as f:
-        side = json.load(f)
-    p = emit.parse_c(c, h)
-    up = TABLE.upper()
-    d = p["defines"]
-    f = p["fields"]
-    spec = grid.TableSpec(d[up + "_N_LIT"], d[up + "_N_TERM"], d[up + "_N_ALT"],
-                          float(f["w_min"]), float(f["w_max"]), float(f["term_k0"]),
-                          float(f["term_kp"]))
-    q = p["arrays"][TABLE + "_q"].reshape(spec.n_alt, spec.n_theta).astype(float)
-    psi = p["arrays"][TABLE + "_psi"].reshape(spec.n_alt, spec.n_theta).astype(float)
-    return spec, q, psi, side
+    spec, q, psi, side, _ = emit.load(os.path.join(ROOT, "tables"), TABLE)
+    return spec, q.astype(float), psi.astype(float), side
 
 
 def _fig_image(spec, q, psi, path, plt):

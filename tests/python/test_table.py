@@ -22,22 +22,7 @@ TABLES = os.path.join(ROOT, "tables")
 
 
 def load_table(name):
-    with open(os.path.join(TABLES, name + ".c"), encoding="ascii") as f:
-        c = f.read()
-    with open(os.path.join(TABLES, name + ".h"), encoding="ascii") as f:
-        h = f.read()
-    with open(os.path.join(TABLES, name + ".json"), encoding="ascii") as f:
-        side = json.load(f)
-    parsed = emit.parse_c(c, h)
-    up = name.upper()
-    d = parsed["defines"]
-    f = parsed["fields"]
-    spec = grid.TableSpec(d[up + "_N_LIT"], d[up + "_N_TERM"], d[up + "_N_ALT"],
-                          float(f["w_min"]), float(f["w_max"]), float(f["term_k0"]),
-                          float(f["term_kp"]))
-    q = parsed["arrays"][name + "_q"].reshape(spec.n_alt, spec.n_theta)
-    psi = parsed["arrays"][name + "_psi"].reshape(spec.n_alt, spec.n_theta)
-    return spec, q, psi, side, c
+    return emit.load(TABLES, name)
 
 
 @pytest.fixture(scope="module")
@@ -58,7 +43,7 @@ def test_budget_and_range(default_table):
     # the surface (w = 0, the limit row) to infinity
     assert spec.w_min == 0.0
     assert spec.w_max == math.pi / 2
-    assert side["h_max_km"] is None and side["h_min_km"] == 0.0
+    assert side["grid"]["h_max_km"] is None and side["grid"]["h_min_km"] == 0.0
     # the surface row: lit q0 = 2, G / w = 0; terminator q / w = 2 max(0, -m)
     assert np.all(q[0, :spec.n_lit] == 2.0) and np.all(psi[0, :spec.n_lit] == 0.0)
     t = 2.0 * np.linspace(0, 1, spec.n_term) - 1.0
@@ -68,8 +53,8 @@ def test_budget_and_range(default_table):
 
 def test_sidecar_facts(default_table):
     spec, q, psi, side, c = default_table
-    assert side["sha256"] == emit.payload_sha256(q, psi)
-    assert side["sha256"] in c
+    assert side["payload_sha256"] == emit.payload_sha256(q, psi)
+    assert side["payload_sha256"] in c
     g = side["grid"]
     assert (g["n_lit"], g["n_term"], g["n_alt"]) == (spec.n_lit, spec.n_term, spec.n_alt)
     assert side["measured"]["max_score"] <= 1.0
