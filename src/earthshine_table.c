@@ -40,6 +40,20 @@ static es_bits nonneg_bits(double d)
     return u == ES_SIGN_BIT ? 0ULL : u;
 }
 
+/* A grid value d in oi_real. In single precision the default table's value
+ * c (recognised by its bits) gives its float c_r without the software
+ * double-to-float conversion a Cortex-M4F would call; in double a load. */
+static oi_real real_of(double d, double c, oi_real c_r)
+{
+#ifdef OI_SINGLE_PRECISION
+    if (nonneg_bits(d) == nonneg_bits(c)) return c_r;
+#else
+    (void)c;
+    (void)c_r;
+#endif
+    return (oi_real)d;
+}
+
 /* Catmull-Rom along theta in one segment row: p points at column i of the
  * row; lo (i = 0) and hi (i = n - 2) replace the columns outside the segment
  * by linear extrapolation, 2 v(0) - v(1) and 2 v(n-1) - v(n-2). */
@@ -164,7 +178,8 @@ static oi_real sinh_r(oi_real k)
  * x^8 (the default table's kp) by three squarings instead of pow. */
 static oi_real term_t(oi_real m, oi_real x, const oi_earth_table *t)
 {
-    const oi_real k0 = (oi_real)t->term_k0, kp = (oi_real)t->term_kp;
+    const oi_real k0 = real_of(t->term_k0, 2.0, OI_R(2.0));
+    const oi_real kp = real_of(t->term_kp, 8.0, OI_R(8.0));
     oi_real k;
     if (!(k0 > (oi_real)0)) return m;
     if (kp == OI_R(8.0)) {
@@ -250,13 +265,13 @@ int oi__earth_lookup(const oi_earth_table *t, oi_real theta, oi_real cos_theta,
                      oi_real *psi)
 {
     /* the grid in oi_real, converted once per call */
-    const oi_real w_min = (oi_real)t->w_min, w_max = (oi_real)t->w_max;
+    const int surf = nonneg_bits(t->w_min) == 0ULL;
+    const oi_real w_min = surf ? (oi_real)0 : (oi_real)t->w_min;
+    const oi_real w_max = real_of(t->w_max, 0.5 * OI_PI, HALF_PI_R);
     oi_real w, cells, fw;
-    /* a table covering every altitude (w_min = 0, w_max = pi/2): beyond the
-     * cap's far edge without the arctangent (z = s / R = tan(w), may be
-     * +inf) */
-    if (theta > HALF_PI_R && nonneg_bits(t->w_min) == 0ULL && w_max >= HALF_PI_R &&
-        beyond_far_edge(theta, s / R)) {
+    /* every altitude: beyond the cap's far edge without the arctangent
+     * (z = s / R = tan(w), may be +inf) */
+    if (theta > HALF_PI_R && surf && w_max >= HALF_PI_R && beyond_far_edge(theta, s / R)) {
         *phi = *psi = (oi_real)0;
         return 1;
     }
