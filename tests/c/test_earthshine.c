@@ -23,7 +23,7 @@
  * NULL when it is the library's default; otherwise (OI_NO_EARTH_TABLE: no
  * default; -DOI_EARTH_TABLE_DEFAULT=another table) those tests pass
  * oi_earth_diffuse as a caller's table: the same lookup
- * (test_default_grid_constants shows it bit for bit where it is the
+ * (test_default_same_as_caller_table shows it bit for bit where it is the
  * default) and the same expected values. */
 static oi_model def_model_storage;
 static const oi_model *def_model(void)
@@ -765,7 +765,7 @@ static void test_agrees_with_reference_lookup(void **state)
 /* The default table (oi_earth_table_default, trusted: not checked) and the
  * same table passed as a caller's table (checked) must give the same
  * lookup, bit for bit. */
-static void test_default_grid_constants(void **state)
+static void test_default_same_as_caller_table(void **state)
 {
     oi_earth_table copy = oi_earth_diffuse;
     oi_model m;
@@ -773,7 +773,7 @@ static void test_default_grid_constants(void **state)
     int k;
     (void)state;
     if (oi_earth_table_default() != &oi_earth_diffuse) {
-        printf("test_default_grid_constants: oi_earth_diffuse is not the default, nothing to "
+        printf("test_default_same_as_caller_table: oi_earth_diffuse is not the default, nothing to "
                "compare\n");
         return;
     }
@@ -887,7 +887,7 @@ int main(void)
         cmocka_unit_test(test_errors),
         cmocka_unit_test(test_huge_altitude),
         cmocka_unit_test(test_agrees_with_reference_lookup),
-        cmocka_unit_test(test_default_grid_constants),
+        cmocka_unit_test(test_default_same_as_caller_table),
         cmocka_unit_test(test_table_validation),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

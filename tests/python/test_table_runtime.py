@@ -82,15 +82,18 @@ int main(void)
 @pytest.mark.skipif(shutil.which("cc") is None, reason="needs cc")
 @pytest.mark.parametrize("defs", [[], ["-DOI_SINGLE_PRECISION"]])
 def test_no_earth_table_falls_back_to_far_field(tmp_path, defs):
-    """-DOI_NO_EARTH_TABLE: the generated table compiles to nothing and
-    oi_earthshine uses the Lambert far field with OI_WARN_TABLE_RANGE (1)."""
+    """-DOI_NO_EARTH_TABLE: the default (src/earth_table_default.c) is NULL and
+    refers to no table, and oi_earthshine uses the Lambert far field with
+    OI_WARN_TABLE_RANGE (1)."""
     src = tmp_path / "nt.c"
     src.write_text(PROG_NO_TABLE)
     exe = str(tmp_path / "nt")
     warn = ["-std=c99", "-Wall", "-Wextra", "-Wpedantic", "-Wconversion", "-Wshadow",
             "-Wdouble-promotion", "-Werror"]
-    files = [os.path.join(ROOT, f) for f in ("src/earthshine.c", "src/model.c", "src/phase.c", "src/atan2.c", "src/sincos.c", "src/vector.c",
-                                             "tables/oi_earth_diffuse.c")]
+    files = [os.path.join(ROOT, f) for f in ("src/earthshine.c", "src/earthshine_table.c",
+                                             "src/earth_table_default.c", "src/interp.c",
+                                             "src/atm_table_check.c", "src/model.c", "src/phase.c",
+                                             "src/atan2.c", "src/sincos.c", "src/vector.c")]
     inc = ["-I" + os.path.join(ROOT, d) for d in ("include", "src", "tables")]
     subprocess.run(["cc"] + warn + ["-O2", "-DOI_NO_EARTH_TABLE"] + defs + inc + files +
                    [str(src), "-lm", "-o", exe], check=True)
