@@ -218,25 +218,6 @@ static oi_real sun_unit(const oi_real sun_km[3], oi_real s_hat[3])
     return oi__unit(sun_km, s_hat);
 }
 
-/* A point's cell in the table: row i, column j and the fractions. */
-typedef struct atm_cell {
-    int i, j;
-    oi_real fu, ft;
-} atm_cell;
-
-/* The table's fraction (limb-darkened disc) at continuous indices iu, it,
- * and the cell for the direction's lookup. */
-static oi_real lookup_fraction(const oi_atm_table *t, oi_real iu, oi_real it, atm_cell *c)
-{
-    oi_real q;
-    /* iu, it >= 0 up to rounding (z >= z_min, rho >= rho_lo): the cells
-     * are clamped, the fractions not (a rounding's linear extrapolation) */
-    c->i = oi__cell_floor(iu, t->nz, &c->fu);
-    c->j = oi__cell_floor(it, t->nt, &c->ft);
-    q = t->q_min + t->q_scale * oi__bilinear_u16(t->q, t->nt, c->i, c->j, c->fu, c->ft);
-    return clamp01(OI_EXP(q * t->ln10) - t->f_floor);
-}
-
 /* The table that serves a resolved model (a caller's was checked by
  * oi__model_resolve; the default is trusted); NULL: none. */
 static const oi_atm_table *table_of(const oi_model *m)
@@ -316,8 +297,8 @@ int oi__atm_fraction(const oi_real sun_km[3], const oi_real point_km[3], const o
 {
     const oi_atm_table *t;
     oi_real s_hat[3], cr[3];
-    oi_real d, z, rho2, rho, rc, a, rho_hi, iu, it, f;
-    atm_cell c;
+    oi_real d, z, rho2, rho, rc, a, rho_hi, iu, it, fu, ft, q, f;
+    int i, j;
 
     f = m->limb_darkening == OI_LIMB_DARKENED ? frac_ld : frac;
     *fraction_atm = f;
@@ -342,14 +323,18 @@ int oi__atm_fraction(const oi_real sun_km[3], const oi_real point_km[3], const o
         *fraction_atm = (oi_real)0;
         return OI_OK;
     }
-    f = lookup_fraction(t, iu, it, &c);
+    /* iu, it >= 0 up to rounding (z >= z_min, rho >= rho_lo): the cells
+     * are clamped, the fractions not (a rounding's linear extrapolation) */
+    i = oi__cell_floor(iu, t->nz, &fu);
+    j = oi__cell_floor(it, t->nt, &ft);
+    /* the table's fraction (limb-darkened disc): q = log10(F + f_floor) */
+    q = t->q_min + t->q_scale * oi__bilinear_u16(t->q, t->nt, i, j, fu, ft);
+    f = clamp01(OI_EXP(q * t->ln10) - t->f_floor);
     if (m->limb_darkening != OI_LIMB_DARKENED) f = clamp01(f + (frac - frac_ld));
     *fraction_atm = f;
-    if (dir != NULL && f > (oi_real)0 && rho > (oi_real)0) {
-        const oi_real psi = t->psi_min_rad +
-                            t->psi_scale_rad * oi__bilinear_u16(t->psi, t->nt, c.i, c.j, c.fu, c.ft);
-        tilt(psi, point_km, z, s_hat, rho, dir);
-    }
+    if (dir != NULL && f > (oi_real)0 && rho > (oi_real)0)
+        tilt(t->psi_min_rad + t->psi_scale_rad * oi__bilinear_u16(t->psi, t->nt, i, j, fu, ft),
+             point_km, z, s_hat, rho, dir);
     return OI_OK;
 }
 
