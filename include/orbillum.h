@@ -129,13 +129,16 @@ typedef struct oi_model {
  *   defined); ignored otherwise. NULL: oi_atm_table_default(). A caller's
  *   table is checked by every function that takes the model: format
  *   OI_ATM_FORMAT, kind OI_TABLE_KIND_ATMOSPHERE, nz, na >= 2, nb >= 1, each
- *   <= 32767, nt = na + nb, q and psi not NULL, 0 < z_min_km < z_max_km,
- *   h_a_km > 0, 0 <= h_c_km < v_mid_km < top_km <= OI_ATM_TOP_MAX_KM,
- *   alpha_c_rad >= 0, w_rho in [0, 1], f_floor > 0, q_scale and
- *   psi_scale_rad finite, psi codes within +-OI_ATM_PSI_MAX_RAD, e_mid,
- *   c_iu, ln10 > 0 and finite (every real field finite); otherwise
- *   OI_ERR_MODEL, outputs zeroed. The table must be compiled in the
- *   caller's precision (its grid is oi_real).
+ *   <= 32767, nt = na + nb, q and psi not NULL, 0 < z_min_km < z_max_km <=
+ *   OI_POSITION_MAX_KM, 0 < h_a_km <= OI_POSITION_MAX_KM, 0 <= h_c_km <
+ *   v_mid_km < top_km <= OI_ATM_TOP_MAX_KM, alpha_c_rad and w_rho in [0, 1],
+ *   f_floor in (0, 1], q_min and q_scale finite, psi_min_rad and psi_min_rad
+ *   + 65535 psi_scale_rad within +-OI_ATM_PSI_MAX_RAD, e_mid in (0, 1],
+ *   c_iu in (0, OI_POSITION_MAX_KM], ln10 in [2.3, 2.31] (NaN fails every
+ *   check); otherwise OI_ERR_MODEL, outputs zeroed. The fields the lookup
+ *   does not read (earth_radius_km, sun_radius_km, au_km, info) are not
+ *   checked. The table must be compiled in the caller's precision (its
+ *   grid is oi_real).
  *
  * Defaults: each is returned by a function of its own translation unit
  * (src/earth_table_default.c, src/atm_table_default.c), the only reference
@@ -229,7 +232,7 @@ int oi_sun_fraction(const oi_real sun_km[3], const oi_real point_km[3],
  * Given:   theta  angle at the Earth's centre between Sun and point (rad, [0, pi])
  *          h_km   altitude above the model's Earth radius (km, > 0)
  *          model  NULL or model (earth_model, earth_table, earth_radius_km;
-                 tables: see oi_model)
+ *                 tables: see oi_model)
  * Returned: phi   normalised scalar irradiance (>= 0)
  *           psi   mean incidence direction: angle from the nadir (point to Earth
  *                 centre) towards the Sun side, in the Sun-Earth-point plane (rad)
