@@ -1,8 +1,22 @@
 /* SPDX-License-Identifier: MIT */
 /* earthshine.c: oi_earthshine, diffuse earthshine: its checks, which table
- * serves the call, the Lambert far field beyond the table. The lookup
- * itself: src/earthshine_table.c; table layout: include/oi_table.h. */
+ * serves the call, the table's altitude range and the Lambert far field
+ * beyond it. The interpolation inside the table: src/earthshine_table.c;
+ * table layout: include/oi_table.h. */
 #include "oi_tables_internal.h"
+
+#define HALF_PI_R ((oi_real)(0.5 * OI_PI))
+
+/* Tolerance (in grid cells) for points on the altitude range's ends that
+ * rounding puts just outside: they are clamped onto the end node; margin of
+ * the far-edge bound (16 epsilon). */
+#ifdef OI_SINGLE_PRECISION
+#define EDGE_TOL_CELLS OI_R(1e-3)
+#define BOUND_MARGIN OI_R(1.9073486328125e-06) /* 16 FLT_EPSILON */
+#else
+#define EDGE_TOL_CELLS OI_R(1e-9)
+#define BOUND_MARGIN OI_R(3.5527136788005009e-15) /* 16 DBL_EPSILON */
+#endif
 
 /*
  * oi_earthshine: diffuse earthshine per unit albedo and unit solar
@@ -91,6 +105,54 @@ int oi_earthshine(oi_real theta, oi_real h_km, const oi_model *model,
     return oi__earthshine(theta, (oi_real)2, (oi_real)0, h_km, &m, phi, psi);
 }
 
+/* 1 when theta > pi/2 lies certainly beyond the cap's far edge, theta >=
+ * pi/2 + w (nothing lit is visible), decided without the arctangent from an
+ * upper bound of w = atan(z) (alternating series, z <= 1: z - z^3/3 + z^5/5;
+ * z > 1: pi/2 - 1/z + 1/(3 z^3)) with a margin of 16 epsilon for rounding.
+ * 0: not certain (the exact test follows). */
+static int beyond_far_edge(oi_real theta, oi_real z)
+{
+    const oi_real d = theta - HALF_PI_R;
+    oi_real ub;
+    if (z <= OI_R(1.0)) {
+        const oi_real z2 = z * z;
+        ub = z * (OI_R(1.0) - z2 * (OI_R(1.0) / OI_R(3.0) - z2 / OI_R(5.0)));
+    } else {
+        const oi_real u = OI_R(1.0) / z;
+        ub = HALF_PI_R - u * (OI_R(1.0) - u * u / OI_R(3.0));
+    }
+    return d >= ub * (OI_R(1.0) + BOUND_MARGIN) + BOUND_MARGIN;
+}
+
+/* phi and psi from table t at theta and the altitude given by x = R / r and
+ * s = sqrt(h (2R + h)); 1 with *phi, *psi set when the altitude is inside
+ * the table's range, 0 (outputs untouched) when it is not. */
+static int table_phi(const oi_earth_table *t, oi_real theta, oi_real cos_theta, oi_real sin_theta,
+                     oi_real x, oi_real s, oi_real R, oi_real *phi, oi_real *psi)
+{
+    /* the grid in oi_real, converted once per call */
+    const int surf = oi__nonneg_bits(t->w_min) == 0ULL;
+    const oi_real w_min = surf ? (oi_real)0 : (oi_real)t->w_min;
+    const oi_real w_max = oi__real_of(t->w_max, 0.5 * OI_PI, HALF_PI_R);
+    oi_real w, cells, fw;
+    /* every altitude: beyond the cap's far edge without the arctangent
+     * (z = s / R = tan(w), may be +inf) */
+    if (theta > HALF_PI_R && surf && w_max >= HALF_PI_R && beyond_far_edge(theta, s / R)) {
+        *phi = *psi = (oi_real)0;
+        return 1;
+    }
+    w = OI_ATAN2(s, R); /* = acos(x), no cancellation at low altitude */
+    cells = (oi_real)(t->n_alt - 1);
+    fw = (w - w_min) / (w_max - w_min) * cells;
+    if (!(fw >= -EDGE_TOL_CELLS && fw <= cells + EDGE_TOL_CELLS)) return 0;
+    if (theta >= HALF_PI_R + w) {
+        *phi = *psi = (oi_real)0; /* nothing lit is visible */
+        return 1;
+    }
+    oi__earth_interp(t, theta, cos_theta, sin_theta, x, w, fw, phi, psi);
+    return 1;
+}
+
 /* The table that serves a resolved model in *t (NULL: none, the far
  * field); OI_ERR_MODEL for a caller's table that fails its check. The
  * default (oi_earth_table_default) is trusted. */
@@ -128,7 +190,7 @@ int oi__earthshine(oi_real theta, oi_real cos_theta, oi_real sin_theta, oi_real 
     R = resolved->earth_radius_km;
     x = R / (R + h_km);
     s = OI_SQRT(h_km) * OI_SQRT(OI_R(2.0) * R + h_km); /* no overflow for huge h */
-    if (t != NULL && oi__earth_lookup(t, theta, cos_theta, sin_theta, x, s, R, phi, psi))
+    if (t != NULL && table_phi(t, theta, cos_theta, sin_theta, x, s, R, phi, psi))
         return OI_OK;
 
     /* Lambert far field: explicit model, no table, or outside its range */

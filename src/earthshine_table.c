@@ -1,58 +1,15 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * earthshine_table.c: the earthshine table lookup: the check of a caller's
- * table, its grid in oi_real, and phi and psi by bicubic Catmull-Rom per
- * theta segment. Table layout and coordinates: include/oi_table.h,
- * docs/earthshine-table.md; the public function: src/earthshine.c.
+ * table, and phi and psi inside its altitude range by bicubic Catmull-Rom
+ * per theta segment. Table layout and coordinates: include/oi_table.h,
+ * docs/earthshine-table.md; which table and which regime: src/earthshine.c.
  */
 #include "oi_tables_internal.h"
 
 #define HALF_PI_R ((oi_real)(0.5 * OI_PI))
 
 
-/* Tolerance (in grid cells) for points on the altitude range's ends that
- * rounding puts just outside: they are clamped onto the end node. */
-#ifdef OI_SINGLE_PRECISION
-#define EDGE_TOL_CELLS OI_R(1e-3)
-#define BOUND_MARGIN OI_R(1.9073486328125e-06) /* 16 FLT_EPSILON */
-#else
-#define EDGE_TOL_CELLS OI_R(1e-9)
-#define BOUND_MARGIN OI_R(3.5527136788005009e-15) /* 16 DBL_EPSILON */
-#endif
-
-/* The check of a caller's table without double arithmetic (the
- * single-precision build must not pull in software double compares): the
- * double fields are compared by their IEEE 754 binary64 bit patterns, which,
- * read as unsigned integers, order like the values for non-negative doubles
- * (+inf above every finite value, NaN above +inf). -0 is read as +0. The
- * checks are those of the double comparisons they replace (w_min >= 0,
- * w_max > w_min, w_max <= (pi/2)(1 + 1e-15), k0 in [0, 20], kp in [0, 100]). */
-typedef unsigned long long es_bits;
-typedef char es_bits_hold_a_double[sizeof(es_bits) == sizeof(double) ? 1 : -1];
-#define ES_SIGN_BIT 0x8000000000000000ULL
-#define ES_INF_BITS 0x7FF0000000000000ULL
-
-/* Bits of d with -0 as +0; values above ES_INF_BITS are NaN or negative. */
-static es_bits nonneg_bits(double d)
-{
-    es_bits u;
-    memcpy(&u, &d, sizeof u);
-    return u == ES_SIGN_BIT ? 0ULL : u;
-}
-
-/* A grid value d in oi_real. In single precision the default table's value
- * c (recognised by its bits) gives its float c_r without the software
- * double-to-float conversion a Cortex-M4F would call; in double a load. */
-static oi_real real_of(double d, double c, oi_real c_r)
-{
-#ifdef OI_SINGLE_PRECISION
-    if (nonneg_bits(d) == nonneg_bits(c)) return c_r;
-#else
-    (void)c;
-    (void)c_r;
-#endif
-    return (oi_real)d;
-}
 
 /* Catmull-Rom along theta in one segment row: p points at column i of the
  * row; lo (i = 0) and hi (i = n - 2) replace the columns outside the segment
@@ -83,7 +40,8 @@ static oi_real alt_sum(oi_real r[4], int j, const oi_earth_table *t, const oi_re
     const int n_alt = t->n_alt;
     if (j + 2 >= n_alt) r[3] = OI_R(2.0) * r[2] - r[1];
     if (j - 1 < 0) {
-        if (nonneg_bits(t->w_min) == 0ULL && n_alt >= 3) r[0] = OI_R(3.0) * (r[1] - r[2]) + r[3];
+        if (oi__nonneg_bits(t->w_min) == 0ULL && n_alt >= 3)
+            r[0] = OI_R(3.0) * (r[1] - r[2]) + r[3];
         else r[0] = OI_R(2.0) * r[1] - r[2];
     }
     return wb[0] * r[0] + wb[1] * r[1] + wb[2] * r[2] + wb[3] * r[3];
@@ -178,8 +136,8 @@ static oi_real sinh_r(oi_real k)
  * x^8 (the default table's kp) by three squarings instead of pow. */
 static oi_real term_t(oi_real m, oi_real x, const oi_earth_table *t)
 {
-    const oi_real k0 = real_of(t->term_k0, 2.0, OI_R(2.0));
-    const oi_real kp = real_of(t->term_kp, 8.0, OI_R(8.0));
+    const oi_real k0 = oi__real_of(t->term_k0, 2.0, OI_R(2.0));
+    const oi_real kp = oi__real_of(t->term_kp, 8.0, OI_R(8.0));
     oi_real k;
     if (!(k0 > (oi_real)0)) return m;
     if (kp == OI_R(8.0)) {
@@ -193,43 +151,26 @@ static oi_real term_t(oi_real m, oi_real x, const oi_earth_table *t)
     return asinh_r(m * sinh_r(k)) / k;
 }
 
+/* The checks of the double comparisons they replace, on bit patterns
+ * (oi__nonneg_bits): w_min >= 0, w_max > w_min, w_max <= (pi/2)(1 +
+ * 1e-15), k0 in [0, 20], kp in [0, 100]. */
 int oi__earth_table_valid(const oi_earth_table *t)
 {
     if (t->format != OI_TABLE_FORMAT || t->n_lit < 2 || t->n_term < 2 || t->n_alt < 2) return 0;
     if (t->kind != 0 && t->kind != OI_TABLE_KIND_EARTHSHINE) return 0;
     if (t->q == NULL || t->psi == NULL) return 0;
     {
-        const es_bits w_min = nonneg_bits(t->w_min), w_max = nonneg_bits(t->w_max);
-        if (w_min > ES_INF_BITS || w_max > ES_INF_BITS || !(w_max > w_min) ||
-            w_max > nonneg_bits(0.5 * OI_PI * (1.0 + 1e-15)))
+        const oi__bits64 w_min = oi__nonneg_bits(t->w_min), w_max = oi__nonneg_bits(t->w_max);
+        if (w_min > OI__INF_BITS || w_max > OI__INF_BITS || !(w_max > w_min) ||
+            w_max > oi__nonneg_bits(0.5 * OI_PI * (1.0 + 1e-15)))
             return 0;
         if (w_min == 0ULL && t->n_alt < 3) return 0; /* quadratic ghost row */
     }
-    return nonneg_bits(t->term_k0) <= nonneg_bits(20.0) &&
-           nonneg_bits(t->term_kp) <= nonneg_bits(100.0);
+    return oi__nonneg_bits(t->term_k0) <= oi__nonneg_bits(20.0) &&
+           oi__nonneg_bits(t->term_kp) <= oi__nonneg_bits(100.0);
 }
 
-/* 1 when theta > pi/2 lies certainly beyond the cap's far edge, theta >=
- * pi/2 + w (nothing lit is visible), decided without the arctangent from an
- * upper bound of w = atan(z) (alternating series, z <= 1: z - z^3/3 + z^5/5;
- * z > 1: pi/2 - 1/z + 1/(3 z^3)) with a margin of 16 epsilon for rounding.
- * 0: not certain (the exact test follows). */
-static int beyond_far_edge(oi_real theta, oi_real z)
-{
-    const oi_real d = theta - HALF_PI_R;
-    oi_real ub;
-    if (z <= OI_R(1.0)) {
-        const oi_real z2 = z * z;
-        ub = z * (OI_R(1.0) - z2 * (OI_R(1.0) / OI_R(3.0) - z2 / OI_R(5.0)));
-    } else {
-        const oi_real u = OI_R(1.0) / z;
-        ub = HALF_PI_R - u * (OI_R(1.0) - u * u / OI_R(3.0));
-    }
-    return d >= ub * (OI_R(1.0) + BOUND_MARGIN) + BOUND_MARGIN;
-}
-
-/* The lookup at w = acos(x) inside the table's altitude range: phi, psi. */
-static void lookup_inside(const oi_earth_table *t, oi_real theta, oi_real cos_theta,
+void oi__earth_interp(const oi_earth_table *t, oi_real theta, oi_real cos_theta,
                           oi_real sin_theta, oi_real x, oi_real w, oi_real fw, oi_real *phi,
                           oi_real *psi)
 {
@@ -260,29 +201,3 @@ static void lookup_inside(const oi_earth_table *t, oi_real theta, oi_real cos_th
     *psi = *phi > (oi_real)0 ? p : (oi_real)0;
 }
 
-int oi__earth_lookup(const oi_earth_table *t, oi_real theta, oi_real cos_theta,
-                     oi_real sin_theta, oi_real x, oi_real s, oi_real R, oi_real *phi,
-                     oi_real *psi)
-{
-    /* the grid in oi_real, converted once per call */
-    const int surf = nonneg_bits(t->w_min) == 0ULL;
-    const oi_real w_min = surf ? (oi_real)0 : (oi_real)t->w_min;
-    const oi_real w_max = real_of(t->w_max, 0.5 * OI_PI, HALF_PI_R);
-    oi_real w, cells, fw;
-    /* every altitude: beyond the cap's far edge without the arctangent
-     * (z = s / R = tan(w), may be +inf) */
-    if (theta > HALF_PI_R && surf && w_max >= HALF_PI_R && beyond_far_edge(theta, s / R)) {
-        *phi = *psi = (oi_real)0;
-        return 1;
-    }
-    w = OI_ATAN2(s, R); /* = acos(x), no cancellation at low altitude */
-    cells = (oi_real)(t->n_alt - 1);
-    fw = (w - w_min) / (w_max - w_min) * cells;
-    if (!(fw >= -EDGE_TOL_CELLS && fw <= cells + EDGE_TOL_CELLS)) return 0;
-    if (theta >= HALF_PI_R + w) {
-        *phi = *psi = (oi_real)0; /* nothing lit is visible */
-        return 1;
-    }
-    lookup_inside(t, theta, cos_theta, sin_theta, x, w, fw, phi, psi);
-    return 1;
-}

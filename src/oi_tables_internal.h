@@ -72,6 +72,40 @@ inline oi_real oi__bilinear_u16(const unsigned short *tab, int ld, int i, int j,
     return ((oi_real)1 - fu) * a + fu * b;
 }
 
+/* ---------------------------------------------------------------- table fields */
+
+/* The double fields of an earthshine table read without double arithmetic
+ * (the single-precision build must not pull in software double compares):
+ * by their IEEE 754 binary64 bit patterns, which, read as unsigned
+ * integers, order like the values for non-negative doubles (+inf above
+ * every finite value, NaN above +inf). -0 is read as +0. */
+typedef unsigned long long oi__bits64;
+typedef char oi__bits64_holds_a_double[sizeof(oi__bits64) == sizeof(double) ? 1 : -1];
+#define OI__SIGN_BIT 0x8000000000000000ULL
+#define OI__INF_BITS 0x7FF0000000000000ULL
+
+/* Bits of d with -0 as +0; values above OI__INF_BITS are NaN or negative. */
+static inline oi__bits64 oi__nonneg_bits(double d)
+{
+    oi__bits64 u;
+    memcpy(&u, &d, sizeof u);
+    return u == OI__SIGN_BIT ? 0ULL : u;
+}
+
+/* A grid value d in oi_real. In single precision the default table's value
+ * c (recognised by its bits) gives its float c_r without the software
+ * double-to-float conversion a Cortex-M4F would call; in double a load. */
+static inline oi_real oi__real_of(double d, double c, oi_real c_r)
+{
+#ifdef OI_SINGLE_PRECISION
+    if (oi__nonneg_bits(d) == oi__nonneg_bits(c)) return c_r;
+#else
+    (void)c;
+    (void)c_r;
+#endif
+    return (oi_real)d;
+}
+
 /* ---------------------------------------------------------------- earthshine_table.c */
 
 /* 1 when a caller's earthshine table has a format, kind and grid the lookup
@@ -80,16 +114,15 @@ inline oi_real oi__bilinear_u16(const unsigned short *tab, int ld, int i, int j,
 int oi__earth_table_valid(const oi_earth_table *t);
 
 /*
- * phi and psi from table t (valid, or the trusted default) at theta
- * (clamped to [0, pi]) and the altitude given by x = R / r and s = sqrt(h
- * (2R + h)) (w = acos(x) = atan2(s, R)); cos_theta, sin_theta as for
- * oi__earthshine (cos_theta > 1: not given). Returns 1 with *phi, *psi set
- * when the altitude is inside the table's range, 0 (outputs untouched) when
- * it is not (the caller's far field).
+ * phi and psi from table t (valid, or the trusted default) at theta in
+ * [0, pi - w) inside the table's altitude range: x = R / r, w = acos(x),
+ * fw the fractional altitude index (w - w_min) / (w_max - w_min) (n_alt -
+ * 1); cos_theta, sin_theta as for oi__earthshine (cos_theta > 1: not
+ * given). Sets *phi >= 0 and *psi.
  */
-int oi__earth_lookup(const oi_earth_table *t, oi_real theta, oi_real cos_theta,
-                     oi_real sin_theta, oi_real x, oi_real s, oi_real R, oi_real *phi,
-                     oi_real *psi);
+void oi__earth_interp(const oi_earth_table *t, oi_real theta, oi_real cos_theta,
+                      oi_real sin_theta, oi_real x, oi_real w, oi_real fw, oi_real *phi,
+                      oi_real *psi);
 
 /* ---------------------------------------------------------------- atm_table_check.c */
 #ifndef OI_NO_ATMOSPHERE
