@@ -171,6 +171,50 @@ static inline void oi__split(oi_real a, oi_real *hi, oi_real *lo)
     *lo = a - *hi;
 }
 
+/* ---- scalar helpers shared by the model files */
+
+/* pi in two parts: OI_PI_HI is pi rounded to oi_real, OI_PI_LO = pi - OI_PI_HI
+ * rounded. (OI_PI_HI - x) is exact for x in [OI_PI_HI/2, 2 OI_PI_HI]
+ * (Sterbenz), and adding OI_PI_LO gives pi - x to one rounding. */
+#ifdef OI_SINGLE_PRECISION
+#define OI_PI_HI (3.14159274f)          /* float(pi) = 13176795 * 2^-22 */
+#define OI_PI_LO (-8.74227800e-08f)     /* pi - float(pi) */
+#else
+#define OI_PI_HI (3.141592653589793116)  /* double(pi) = 884279719003555 * 2^-48 */
+#define OI_PI_LO (1.2246467991473532e-16) /* pi - double(pi) */
+#endif
+#define OI_HALF_PI_R (OI_PI_R * OI_R(0.5))
+
+/* pi - x to one rounding for x near pi (OI_PI_HI, OI_PI_LO). */
+static inline oi_real oi__pi_minus(oi_real x)
+{
+    return (OI_PI_HI - x) + OI_PI_LO;
+}
+
+static inline oi_real oi__sqr(oi_real x)
+{
+    return x * x;
+}
+
+/* x limited to [lo, hi]; NaN gives lo. */
+static inline oi_real oi__clamp(oi_real x, oi_real lo, oi_real hi)
+{
+    if (!(x > lo)) return lo; /* also maps NaN to lo */
+    return x < hi ? x : hi;
+}
+
+/* lo < x <= hi (false for NaN). */
+static inline int oi__in_open_closed(oi_real x, oi_real lo, oi_real hi)
+{
+    return x > lo && x <= hi;
+}
+
+/* lo <= x <= hi (false for NaN). */
+static inline int oi__in_closed(oi_real x, oi_real lo, oi_real hi)
+{
+    return x >= lo && x <= hi;
+}
+
 static inline void oi__zero3(oi_real a[3])
 {
     a[0] = a[1] = a[2] = (oi_real)0;
@@ -215,6 +259,16 @@ oi_real oi__lambert_phase_cs(oi_real xi, oi_real cos_xi, oi_real sin_xi);
 
 /* oi_magnitude_v (src/magnitude.c) with the model's TSI already resolved. */
 oi_real oi__magnitude_v(oi_real flux_w_m2, oi_real tsi_w_m2);
+
+#ifndef OI_NO_EXPOSURE
+/* Nonzero when every field of the camera is in range (src/camera.c). */
+int oi__camera_valid(const oi_camera *c);
+
+/* oi_expose's choice for a camera that passed oi__camera_valid, out zeroed
+ * (src/expose.c); same statuses as oi_expose after its camera check. */
+int oi__expose_valid(const oi_camera *camera, const oi_expose_in *in,
+                     const oi_expose_goal *goal, oi_exposure *out);
+#endif
 
 #ifndef OI_NO_ATMOSPHERE
 /*

@@ -35,6 +35,28 @@ static inline void check_rel(double want, double got, double rel, const char *wh
     }
 }
 
+/* want == got, as integers (statuses, flags, counts). */
+static inline void check_int(long want, long got, const char *what)
+{
+    if (want != got) {
+        print_error("%s: want %ld got %ld\n", what, want, got);
+        fail();
+    }
+}
+
+/* |got - want| <= abs + rel |want|; prints want, got and the relative error
+ * when not. A NaN got fails. */
+static inline void check_close(double want, double got, double abs_tol, double rel_tol,
+                               const char *what)
+{
+    double err = fabs(got - want);
+    if (!(err <= abs_tol + rel_tol * fabs(want))) {
+        print_error("%s: want %.17g got %.17g rel err %.3g (abs %.3g + rel %.3g allowed)\n",
+                    what, want, got, want != 0 ? err / fabs(want) : err, abs_tol, rel_tol);
+        fail();
+    }
+}
+
 /* A reference precision above the working one (long double for the double
  * build, double for the float build), and the ulp of a working-precision
  * value at |v| (subnormals included), for errors in ulp. */
