@@ -215,6 +215,62 @@ static inline int oi__in_closed(oi_real x, oi_real lo, oi_real hi)
     return x >= lo && x <= hi;
 }
 
+/* ---- spherical triangles and caps (src/spherical_triangle.c,
+ * src/cap_segment.c, src/limb_darkening.c) */
+
+/* sin^2(r/2): the cap area over 4 pi, without the cancellation of 1 - cos r. */
+static inline oi_real oi__sin_half_sq(oi_real r)
+{
+    return oi__sqr(OI_SIN(OI_R(0.5) * r));
+}
+
+/* y + z - x for non-negative x, y, z, accurate when y + z is close to x:
+ * the larger of y, z minus x is exact there (Sterbenz), then one rounding. */
+static inline oi_real oi__side_excess(oi_real x, oi_real y, oi_real z)
+{
+    oi_real big = y > z ? y : z;
+    oi_real small = y > z ? z : y;
+    return (big - x) + small;
+}
+
+/* sin of an angle known to lie in [0, pi], accurate near pi too. */
+static inline oi_real oi__sin_0_pi(oi_real x)
+{
+    return x <= OI_HALF_PI_R ? OI_SIN(x) : OI_SIN(oi__pi_minus(x));
+}
+
+/*
+ * The sines of the spherical triangle with sides a, b, c (radians, triangle
+ * inequalities assumed; rounding beyond them is clamped) used by the
+ * half-angle formulas, s = (a + b + c)/2: hs[0] = sin s, hs[1] = sin(s - a),
+ * hs[2] = sin(s - b), hs[3] = sin(s - c) (src/spherical_triangle.c).
+ */
+void oi__half_sines(oi_real a, oi_real b, oi_real c, oi_real hs[4]);
+
+/* The angle opposite the side of index i (1: a, 2: b, 3: c) of the triangle
+ * of oi__half_sines, or with comp != 0 pi minus it, without cancellation
+ * (src/spherical_triangle.c). */
+oi_real oi__half_angle(const oi_real hs[4], int i, int comp);
+
+/* Area of the segment of a cap of radius r (<= pi/2) cut off by the great
+ * circle through the two points of its boundary seen from the cap's centre
+ * at +-alpha; negative for alpha > pi/2 (src/cap_segment.c). */
+oi_real oi__cap_segment(oi_real r, oi_real alpha);
+
+#ifndef OI_NO_LIMB_DARKENING
+/* Limb darkening is computed for OI_LD_RS_MIN < r_s <= OI_LD_RS_MAX
+ * (docs/shadow.md); elsewhere the uniform disc stands in. */
+#define OI_LD_RS_MAX OI_R(0.5)
+#define OI_LD_RS_MIN OI_R(1e-15)
+
+/* Visible fraction of the limb-darkened solar disc of radius rs with the
+ * Earth's disc of radius re at sep: penumbra with tri the sines of
+ * oi__half_sines(rs, re, sep) and pa_s = pi - (the angle at the Sun's
+ * centre), or annular with tri = NULL (src/limb_darkening.c). */
+oi_real oi__fraction_limb_darkened(oi_real rs, oi_real re, oi_real sep, oi_real pa_s,
+                                   const oi_real *tri);
+#endif
+
 static inline void oi__zero3(oi_real a[3])
 {
     a[0] = a[1] = a[2] = (oi_real)0;
