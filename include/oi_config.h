@@ -11,7 +11,7 @@
  *   OI_NO_ATMOSPHERE     no refraction into the shadow (sun_fraction_atm equals
  *                        sun_fraction).
  *   OI_NO_LIMB_DARKENING no limb-darkened solar disc: removes its integral
- *                        from src/shadow.c; oi_shadow.fraction_ld equals
+ *                        (src/limb_darkening.c); oi_shadow.fraction_ld equals
  *                        fraction (the uniform disc), and a model with
  *                        limb_darkening = OI_LIMB_DARKENED is rejected with
  *                        OI_ERR_MODEL (src/model.c): the one option whose

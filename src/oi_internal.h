@@ -62,12 +62,11 @@ oi_real oi__norm_outline(const oi_real a[3]);
 /* oi__norm (and oi__unit, which calls it) and oi__finite3 are inlined, except
  * in a file that defines OI_VECTOR_OUT_OF_LINE before including this header:
  * there they call the single copies in src/vector.c. The files of the
- * Sun-only build (src/shadow.c, src/phase.c) do, to bring it towards 4 KiB of
- * flash on every Cortex-M configuration (issue 6: about -200 B at -Os and
+ * Sun-only build (src/sun_fraction.c, src/phase.c) do, to bring it towards
+ * 4 KiB of flash on every Cortex-M configuration (about -200 B at -Os and
  * -450 to -520 B at -O2); the other hot paths keep the inline copies (out of
- * line everywhere cost +3% instructions in make bench's all_expose; these
- * two files, with src/model.c and src/atan2.c as of 02f1b60, +1.8%). Same
- * values either way. */
+ * line everywhere cost +3% instructions in make bench's all_expose, in
+ * these two files +1.8%). Same values either way. */
 static inline oi_real oi__norm(const oi_real a[3])
 {
 #ifdef OI_VECTOR_OUT_OF_LINE
@@ -140,7 +139,7 @@ static inline int oi__finite3(const oi_real a[3])
 
 /*
  * Error-free transformations (Knuth TAOCP 2, 4.2.2; Dekker 1971), shared by
- * src/shadow.c, src/atan2.c and src/sincos.c. They need round-to-nearest in
+ * src/sun_fraction.c, src/atan2.c and src/sincos.c. They need round-to-nearest in
  * the working precision (no x87 extended registers). oi__split's product
  * goes through a volatile so that a compiler contracting floating-point
  * expressions (-ffp-contract=fast, the GNU C default on FMA targets) cannot
@@ -285,7 +284,7 @@ static inline void oi__zero3(oi_real a[3])
 int oi__model_resolve(const oi_model *in, oi_model *out);
 
 /*
- * oi_sun_fraction (src/shadow.c) for callers that already hold a resolved
+ * oi_sun_fraction (src/sun_fraction.c) for callers that already hold a resolved
  * model (oi__model_resolve) and non-NULL pointers: the model is not
  * validated again. When light_dir is not NULL and the atmosphere is compiled
  * in and enabled, it also returns the unit vector from the point towards
