@@ -133,6 +133,84 @@ static oi_real ld_node_value(const ld_geom *g, oi_real sph, oi_real cph)
     return p * (g->n0 - g->n1 * st2) * sph / den;
 }
 
+/* The geometry of the arc (ld_geom) for rs, re, sep, b = sep - re and tri
+ * (see oi__fraction_limb_darkened), whether the panels are graded and the
+ * width below which grading stops; returns P(1). */
+static oi_real ld_setup(oi_real rs, oi_real re, oi_real sep, oi_real b, const oi_real *tri,
+                        ld_geom *g, int *grade, oi_real *lim)
+{
+    oi_real hrs = oi__sin_half_sq(rs), s2 = (oi_real)4 * hrs * ((oi_real)1 - hrs);
+    oi_real sse = OI_SIN(sep), sre = OI_SIN(re), sg = (oi_real)1;
+    oi_real t, res;
+
+    g->hrs1 = (oi_real)1 - hrs;
+    g->c4 = (oi_real)4 / s2;
+    g->k = s2 / oi__sqr((oi_real)1 - (oi_real)2 * hrs);
+    g->hb = oi__sin_half_sq(b);
+    if (tri == NULL) {
+        /* annular: e = -sin((sep + r_e + r_s)/2) sin((sep + r_e - r_s)/2) */
+        g->q = sse * sre;
+        g->e = -oi__sin_0_pi(OI_R(0.5) * (sep + (re + rs))) *
+               OI_SIN(OI_R(0.5) * oi__side_excess(rs, sep, re));
+        g->oms = (oi_real)0;
+        /* the limb singularity at asinh(w) >= w / (1 + w), w^2 = e / q */
+        *grade = g->e < (oi_real)4 * g->q;
+        t = *grade ? OI_SQRT(g->e / g->q) : (oi_real)2;
+        *lim = OI_R(0.5) * t / ((oi_real)1 + t);
+    } else {
+        /* the half-angle formulas at the Earth's centre (tri from
+         * oi__half_sines(rs, re, sep)): sigma^2 = sin(s - re) sin(s - sep) /
+         * (sin sep sin re), 1 - sigma^2 = sin s sin(s - rs) / (sin sep sin re);
+         * each ratio is at most ~1 (no overflow or underflow) */
+        g->q = tri[2] * tri[3];
+        g->e = (oi_real)0;
+        sg = OI_SQRT(oi__clamp((tri[2] / sse) * (tri[3] / sre), (oi_real)0, (oi_real)1));
+        g->oms = oi__clamp((tri[0] / sse) * (tri[1] / sre), (oi_real)0, (oi_real)1);
+        /* the Jacobian's branch point at atanh(w) >= w, w = cos(psi0/2) */
+        t = OI_SQRT(g->oms);
+        *grade = t < OI_R(0.9);
+        *lim = OI_R(0.5) * t;
+    }
+    g->n0 = (oi_real)2 * sg * sre * OI_SIN(b) / s2;
+    g->n1 = (oi_real)4 * sg * OI_COS(re) * g->q / s2;
+    /* series terms: stop when k^(nj+1) <= eps */
+    g->nj = 0;
+    for (t = g->k; g->nj < LD_JMAX && t > LD_EPS; t *= g->k) ++g->nj;
+    res = ld_poly((oi_real)1, (oi_real)1, g->k, g->nj); /* P(1) > 0 */
+    g->p1 = OI_FABS(b) < OI_R(0.875) * rs ? res : (oi_real)0;
+    return res;
+}
+
+/* The integral over theta of ld_node_value: panels in phi = pi/2 - theta,
+ * [0, pi/2] undivided (nodes and their sines tabulated), or graded:
+ * [q/2, q] for q = pi/2, pi/4, ... while q > lim (at most 40), then [0, q]. */
+static oi_real ld_panels(const ld_geom *g, int grade, oi_real lim)
+{
+    oi_real sum = (oi_real)0, t;
+    int i, j, k;
+    for (k = 0, t = OI_HALF_PI_R; k <= 40; ++k) {
+        oi_real lo = grade && k < 40 && t > lim ? OI_R(0.5) * t : (oi_real)0, h = t - lo;
+        oi_real ps = (oi_real)0;
+        for (i = 0; i < LD_HALF; ++i) {
+            for (j = 0; j < 2; ++j) {
+                oi_real sph, cph;
+                if (grade) {
+                    oi_real ph = lo + h * (j ? (oi_real)1 - ld_node[i][0] : ld_node[i][0]);
+                    OI_SINCOS(ph, &sph, &cph);
+                } else {
+                    sph = ld_node[i][j ? 3 : 2];
+                    cph = ld_node[i][j ? 2 : 3];
+                }
+                ps += ld_node[i][1] * ld_node_value(g, sph, cph);
+            }
+        }
+        sum += ps * h;
+        if (!(lo > (oi_real)0)) break;
+        t = lo;
+    }
+    return sum;
+}
+
 /*
  * A file of its own, so out of line: its locals stay out of the frame of
  * oi__sun_shadow, which is live during the atmosphere's call as well.
@@ -172,70 +250,11 @@ oi_real oi__fraction_limb_darkened(oi_real rs, oi_real re, oi_real sep, oi_real 
                                    const oi_real *tri)
 {
     ld_geom g;
-    oi_real hrs = oi__sin_half_sq(rs), s2 = (oi_real)4 * hrs * ((oi_real)1 - hrs);
-    oi_real sse = OI_SIN(sep), sre = OI_SIN(re), b = sep - re, sg = (oi_real)1;
-    oi_real sum = (oi_real)0, t, lim, res;
-    int i, j, k, grade;
-
-    g.hrs1 = (oi_real)1 - hrs;
-    g.c4 = (oi_real)4 / s2;
-    g.k = s2 / oi__sqr((oi_real)1 - (oi_real)2 * hrs);
-    g.hb = oi__sin_half_sq(b);
-    if (tri == NULL) {
-        /* annular: e = -sin((sep + r_e + r_s)/2) sin((sep + r_e - r_s)/2) */
-        g.q = sse * sre;
-        g.e = -oi__sin_0_pi(OI_R(0.5) * (sep + (re + rs))) *
-              OI_SIN(OI_R(0.5) * oi__side_excess(rs, sep, re));
-        g.oms = (oi_real)0;
-        /* the limb singularity at asinh(w) >= w / (1 + w), w^2 = e / q */
-        grade = g.e < (oi_real)4 * g.q;
-        t = grade ? OI_SQRT(g.e / g.q) : (oi_real)2;
-        lim = OI_R(0.5) * t / ((oi_real)1 + t);
-    } else {
-        /* the half-angle formulas at the Earth's centre (tri from
-         * oi__half_sines(rs, re, sep)): sigma^2 = sin(s - re) sin(s - sep) /
-         * (sin sep sin re), 1 - sigma^2 = sin s sin(s - rs) / (sin sep sin re);
-         * each ratio is at most ~1 (no overflow or underflow) */
-        g.q = tri[2] * tri[3];
-        g.e = (oi_real)0;
-        sg = OI_SQRT(oi__clamp((tri[2] / sse) * (tri[3] / sre), (oi_real)0, (oi_real)1));
-        g.oms = oi__clamp((tri[0] / sse) * (tri[1] / sre), (oi_real)0, (oi_real)1);
-        /* the Jacobian's branch point at atanh(w) >= w, w = cos(psi0/2) */
-        t = OI_SQRT(g.oms);
-        grade = t < OI_R(0.9);
-        lim = OI_R(0.5) * t;
-    }
-    g.n0 = (oi_real)2 * sg * sre * OI_SIN(b) / s2;
-    g.n1 = (oi_real)4 * sg * OI_COS(re) * g.q / s2;
-    /* series terms: stop when k^(nj+1) <= eps */
-    g.nj = 0;
-    for (t = g.k; g.nj < LD_JMAX && t > LD_EPS; t *= g.k) ++g.nj;
-    res = ld_poly((oi_real)1, (oi_real)1, g.k, g.nj); /* P(1) > 0 */
-    g.p1 = OI_FABS(b) < OI_R(0.875) * rs ? res : (oi_real)0;
-
-    /* panels in phi = pi/2 - theta: [0, pi/2] undivided (nodes and their
-     * sines tabulated), or graded: [q/2, q] for q = pi/2, pi/4, ... while
-     * q > lim (at most 40), then [0, q] */
-    for (k = 0, t = OI_HALF_PI_R; k <= 40; ++k) {
-        oi_real lo = grade && k < 40 && t > lim ? OI_R(0.5) * t : (oi_real)0, h = t - lo;
-        oi_real ps = (oi_real)0;
-        for (i = 0; i < LD_HALF; ++i) {
-            for (j = 0; j < 2; ++j) {
-                oi_real sph, cph;
-                if (grade) {
-                    oi_real ph = lo + h * (j ? (oi_real)1 - ld_node[i][0] : ld_node[i][0]);
-                    OI_SINCOS(ph, &sph, &cph);
-                } else {
-                    sph = ld_node[i][j ? 3 : 2];
-                    cph = ld_node[i][j ? 2 : 3];
-                }
-                ps += ld_node[i][1] * ld_node_value(&g, sph, cph);
-            }
-        }
-        sum += ps * h;
-        if (!(lo > (oi_real)0)) break;
-        t = lo;
-    }
+    const oi_real b = sep - re;
+    oi_real lim, sum, res;
+    int grade;
+    res = ld_setup(rs, re, sep, b, tri, &g, &grade, &lim); /* P(1) */
+    sum = ld_panels(&g, grade, lim);
     sum /= OI_PI_R * res;
     if (g.p1 > (oi_real)0) res = pa_s / OI_PI_R + sum;
     else if (b > (oi_real)0) res = (oi_real)1 - sum;
