@@ -25,26 +25,6 @@
 #define CAM_GAIN_MAX         OI_R(1e3)
 #define CAM_READ_NOISE_MAX_E OI_R(1e6)
 
-/* The scalar fields in range (oi_expose's contract, include/orbillum.h). */
-static int camera_scalars_valid(const oi_camera *c)
-{
-    const oi_real one = OI_R(1.0);
-    return oi__in_open_closed(c->aperture_m, 0, CAM_APERTURE_MAX_M) &&
-           oi__in_closed(c->focal_length_m, CAM_FOCAL_MIN_M, CAM_FOCAL_MAX_M) &&
-           oi__in_closed(c->pixel_pitch_m, CAM_PITCH_MIN_M, CAM_PITCH_MAX_M) &&
-           oi__in_open_closed(c->transmission, 0, one) &&
-           oi__in_open_closed(c->quantum_efficiency, 0, one) &&
-           oi__in_open_closed(c->band_fraction, 0, one) &&
-           oi__in_closed(c->photon_energy_j, CAM_PHOTON_MIN_J, CAM_PHOTON_MAX_J) &&
-           oi__in_closed(c->full_well_e, CAM_FULL_WELL_MIN_E, CAM_FULL_WELL_MAX_E) &&
-           oi__in_closed(c->dark_current_e_s, 0, CAM_DARK_MAX_E_S) &&
-           oi__in_open_closed(c->psf_peak_fraction, 0, one) &&
-           oi__in_open_closed(c->fov_rad, 0, OI_PI_R) &&
-           oi__in_closed(c->sun_exclusion_rad, 0, OI_PI_R) &&
-           c->n_times >= 1 && c->n_times <= OI_CAMERA_MAX_TIMES &&
-           c->n_gains >= 1 && c->n_gains <= OI_CAMERA_MAX_GAINS;
-}
-
 /*
  * oi__camera_valid: nonzero when every field of the camera is in range (the
  * ranges of oi_expose in include/orbillum.h). Every camera is checked, the
@@ -58,7 +38,23 @@ int oi__camera_valid(const oi_camera *c)
 {
     int i, n;
     oi_real prev, x;
-    if (!camera_scalars_valid(c)) return 0;
+    const oi_real one = OI_R(1.0);
+    if (!oi__in_open_closed(c->aperture_m, 0, CAM_APERTURE_MAX_M) ||
+        !oi__in_closed(c->focal_length_m, CAM_FOCAL_MIN_M, CAM_FOCAL_MAX_M) ||
+        !oi__in_closed(c->pixel_pitch_m, CAM_PITCH_MIN_M, CAM_PITCH_MAX_M) ||
+        !oi__in_open_closed(c->transmission, 0, one) ||
+        !oi__in_open_closed(c->quantum_efficiency, 0, one) ||
+        !oi__in_open_closed(c->band_fraction, 0, one) ||
+        !oi__in_closed(c->photon_energy_j, CAM_PHOTON_MIN_J, CAM_PHOTON_MAX_J) ||
+        !oi__in_closed(c->full_well_e, CAM_FULL_WELL_MIN_E, CAM_FULL_WELL_MAX_E) ||
+        !oi__in_closed(c->dark_current_e_s, 0, CAM_DARK_MAX_E_S) ||
+        !oi__in_open_closed(c->psf_peak_fraction, 0, one) ||
+        !oi__in_open_closed(c->fov_rad, 0, OI_PI_R) ||
+        !oi__in_closed(c->sun_exclusion_rad, 0, OI_PI_R) ||
+        c->n_times < 1 || c->n_times > OI_CAMERA_MAX_TIMES ||
+        c->n_gains < 1 || c->n_gains > OI_CAMERA_MAX_GAINS) {
+        return 0;
+    }
     n = c->n_times;
     prev = 0;
     for (i = 0; i < n; i++) {

@@ -39,17 +39,20 @@ static OI_NOINLINE int scene_model(const oi_model *model, oi_real *re, oi_real *
 static int check_scene(const oi_camera *camera, const oi_scene *scene, const oi_illum *illum,
                        const oi_model *model, scene_geom *g)
 {
-    oi_real r_tgt;
+    oi_real r_tgt, re, au, tsi; /* locals: g's address does not leave this file */
     int st;
     if (!scene->has_observer) return OI_ERR_NULL;
     if (model == NULL) { /* the default model (src/model.c), without a copy */
-        g->re = (oi_real)OI_EARTH_RADIUS_KM;
-        g->au = (oi_real)OI_AU_KM;
-        g->tsi = (oi_real)OI_TSI_W_M2;
+        re = (oi_real)OI_EARTH_RADIUS_KM;
+        au = (oi_real)OI_AU_KM;
+        tsi = (oi_real)OI_TSI_W_M2;
     } else {
-        st = scene_model(model, &g->re, &g->au, &g->tsi);
+        st = scene_model(model, &re, &au, &tsi);
         if (st != OI_OK) return st;
     }
+    g->re = re;
+    g->au = au;
+    g->tsi = tsi;
     if (!oi__finite3(scene->sun_km) || !oi__finite3(scene->target_km) ||
         !oi__finite3(scene->observer_km)) {
         return OI_ERR_NONFINITE;

@@ -181,36 +181,6 @@ static oi_real ld_setup(oi_real rs, oi_real re, oi_real sep, oi_real b, const oi
     return res;
 }
 
-/* The integral over theta of ld_node_value: panels in phi = pi/2 - theta,
- * [0, pi/2] undivided (nodes and their sines tabulated), or graded:
- * [q/2, q] for q = pi/2, pi/4, ... while q > lim (at most 40), then [0, q]. */
-static oi_real ld_panels(const ld_geom *g, int grade, oi_real lim)
-{
-    oi_real sum = (oi_real)0, t;
-    int i, j, k;
-    for (k = 0, t = OI_HALF_PI_R; k <= 40; ++k) {
-        oi_real lo = grade && k < 40 && t > lim ? OI_R(0.5) * t : (oi_real)0, h = t - lo;
-        oi_real ps = (oi_real)0;
-        for (i = 0; i < LD_HALF; ++i) {
-            for (j = 0; j < 2; ++j) {
-                oi_real sph, cph;
-                if (grade) {
-                    oi_real ph = lo + h * (j ? (oi_real)1 - ld_node[i][0] : ld_node[i][0]);
-                    OI_SINCOS(ph, &sph, &cph);
-                } else {
-                    sph = ld_node[i][j ? 3 : 2];
-                    cph = ld_node[i][j ? 2 : 3];
-                }
-                ps += ld_node[i][1] * ld_node_value(g, sph, cph);
-            }
-        }
-        sum += ps * h;
-        if (!(lo > (oi_real)0)) break;
-        t = lo;
-    }
-    return sum;
-}
-
 /*
  * A file of its own, so out of line: its locals stay out of the frame of
  * oi__sun_shadow, which is live during the atmosphere's call as well.
@@ -251,10 +221,33 @@ oi_real oi__fraction_limb_darkened(oi_real rs, oi_real re, oi_real sep, oi_real 
 {
     ld_geom g;
     const oi_real b = sep - re;
-    oi_real lim, sum, res;
-    int grade;
+    oi_real lim, sum = (oi_real)0, res, t;
+    int grade, i, j, k;
     res = ld_setup(rs, re, sep, b, tri, &g, &grade, &lim); /* P(1) */
-    sum = ld_panels(&g, grade, lim);
+
+    /* panels in phi = pi/2 - theta: [0, pi/2] undivided (nodes and their
+     * sines tabulated), or graded: [q/2, q] for q = pi/2, pi/4, ... while
+     * q > lim (at most 40), then [0, q] */
+    for (k = 0, t = OI_HALF_PI_R; k <= 40; ++k) {
+        oi_real lo = grade && k < 40 && t > lim ? OI_R(0.5) * t : (oi_real)0, h = t - lo;
+        oi_real ps = (oi_real)0;
+        for (i = 0; i < LD_HALF; ++i) {
+            for (j = 0; j < 2; ++j) {
+                oi_real sph, cph;
+                if (grade) {
+                    oi_real ph = lo + h * (j ? (oi_real)1 - ld_node[i][0] : ld_node[i][0]);
+                    OI_SINCOS(ph, &sph, &cph);
+                } else {
+                    sph = ld_node[i][j ? 3 : 2];
+                    cph = ld_node[i][j ? 2 : 3];
+                }
+                ps += ld_node[i][1] * ld_node_value(&g, sph, cph);
+            }
+        }
+        sum += ps * h;
+        if (!(lo > (oi_real)0)) break;
+        t = lo;
+    }
     sum /= OI_PI_R * res;
     if (g.p1 > (oi_real)0) res = pa_s / OI_PI_R + sum;
     else if (b > (oi_real)0) res = (oi_real)1 - sum;
