@@ -67,7 +67,8 @@ enum oi_status {
     OI_ERR_RADIUS = -7,           /* a radius <= 0 (target, or a model radius) */
     OI_ERR_MODEL = -8,            /* an oi_model field out of range */
     OI_ERR_CAMERA = -9,           /* an oi_camera field out of range */
-    OI_ERR_MAGNITUDE = -10,       /* a magnitude outside [OI_MAG_MIN, OI_MAG_MAX] */
+    OI_ERR_MAGNITUDE = -10,       /* a magnitude outside [OI_MAG_MIN, OI_MAG_MAX], or a
+                                     flux brighter than magnitude OI_MAG_MIN */
     OI_ERR_TERMS = -11,           /* unknown bits in a terms mask (oi_scene.terms) */
     OI_ERR_GEOMETRY = -12,        /* impossible geometry (e.g. Sun inside the Earth's
                                      radius plus its own, point inside the Sun) */
