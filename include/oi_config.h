@@ -4,14 +4,18 @@
  *
  * Options (define on the compiler command line, e.g. -DOI_NO_MOON):
  *   OI_SINGLE_PRECISION  oi_real is float instead of double.
- *   OI_NO_EARTH_TABLE    no baked earthshine table: earthshine uses the analytic
- *                        Lambert model only (the tables are not linked).
+ *   OI_NO_EARTH_TABLE    no default earthshine table (oi_earth_table_default()
+ *                        returns NULL): without a caller's table in
+ *                        oi_model.earth_table, earthshine is the Lambert far
+ *                        field with OI_WARN_TABLE_RANGE; a caller's table
+ *                        still works.
  *   OI_NO_MOON           no moonlight: removes oi_moon_* and the Moon term.
  *   OI_NO_EXPOSURE       no camera model: removes oi_camera*, oi_expose*.
  *   OI_NO_ATMOSPHERE     no refraction into the shadow (sun_fraction_atm equals
- *                        sun_fraction).
+ *                        sun_fraction): the atmosphere's code and its default
+ *                        table are removed.
  *   OI_NO_LIMB_DARKENING no limb-darkened solar disc: removes its integral
- *                        from src/shadow.c; oi_shadow.fraction_ld equals
+ *                        (src/limb_darkening.c); oi_shadow.fraction_ld equals
  *                        fraction (the uniform disc), and a model with
  *                        limb_darkening = OI_LIMB_DARKENED is rejected with
  *                        OI_ERR_MODEL (src/model.c): the one option whose
@@ -30,6 +34,39 @@ typedef float oi_real;
 #else
 typedef double oi_real;
 #define OI_R(x) (x)
+#endif
+
+/*
+ * Precision guard. The single-precision archive (built with
+ * OI_SINGLE_PRECISION) names every public function with the suffix _sp, the
+ * double archive without: code compiled for one precision and linked with
+ * the other archive fails at link time ("undefined reference to
+ * `oi_illuminate_sp'", or to `oi_illuminate' the other way round) instead
+ * of passing floats where doubles are read. The double names are the
+ * contract of the Python binding and are never renamed. Defined here, the
+ * first header every other includes, so that every declaration and
+ * definition (a caller's own oi_earth_table_default too) sees it.
+ */
+#ifdef OI_SINGLE_PRECISION
+#define oi_version oi_version_sp
+#define oi_status_name oi_status_name_sp
+#define oi_lambert_phase oi_lambert_phase_sp
+#define oi_angle oi_angle_sp
+#define oi_cap_overlap oi_cap_overlap_sp
+#define oi_sun_fraction oi_sun_fraction_sp
+#define oi_earthshine oi_earthshine_sp
+#define oi_earth_table_default oi_earth_table_default_sp
+#define oi_atm_table_default oi_atm_table_default_sp
+#define oi_moon_phase_law oi_moon_phase_law_sp
+#define oi_scene_defaults oi_scene_defaults_sp
+#define oi_illuminate oi_illuminate_sp
+#define oi_magnitude_v oi_magnitude_v_sp
+#define oi_flux_from_magnitude oi_flux_from_magnitude_sp
+#define oi_camera_builtin oi_camera_builtin_sp
+#define oi_camera_find oi_camera_find_sp
+#define oi_flag_name oi_flag_name_sp
+#define oi_expose oi_expose_sp
+#define oi_expose_scene oi_expose_scene_sp
 #endif
 
 #endif /* OI_CONFIG_H */

@@ -33,18 +33,19 @@
 #define OI_EARTH_ALBEDO_DEFAULT (0.30)
 
 /* Moon's geometric-to-Bond style albedo used by the Lambert Moon option
- * (PHYSICS.md: ~0.12; Matthews 2008, Appl. Opt. 47, 4981). */
+ * (~0.12: Matthews 2008, Appl. Opt. 47, 4981; docs/physics.md). */
 #define OI_MOON_ALBEDO_DEFAULT (0.12)
 
 /* Apparent V magnitude of the Sun at 1 AU (Willmer 2018, ApJS 236, 47:
- * -26.76; PHYSICS.md uses -26.74, as do Allen's Astrophysical Quantities). */
+ * -26.76; this project uses -26.74, as do Allen's Astrophysical Quantities;
+ * docs/physics.md). */
 #define OI_SUN_MAG_V (-26.74)
 
 /* V magnitude of the full Moon at mean distance, phase angle 0, from the
  * empirical phase law of Krisciunas & Schaefer (1991), eq. 20. */
 #define OI_MOON_MAG_V_FULL (-12.73)
 
-/* Default target properties (planner CSV defaults, issue 2). */
+/* Default target properties (also the planner's CSV defaults). */
 #define OI_TARGET_ALBEDO_DEFAULT (0.2)
 #define OI_TARGET_RADIUS_M_DEFAULT (1.0)
 

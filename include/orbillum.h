@@ -28,6 +28,28 @@
 extern "C" {
 #endif
 
+/* ---------------------------------------------------------------- version */
+
+/* Version of this header (semantic: a new MINOR extends the contract, a new
+ * MAJOR breaks it). OI_VERSION encodes it as MAJOR * 10000 + MINOR * 100 +
+ * PATCH. */
+#define OI_VERSION_MAJOR 0
+#define OI_VERSION_MINOR 2
+#define OI_VERSION_PATCH 0
+#define OI_VERSION (OI_VERSION_MAJOR * 10000L + OI_VERSION_MINOR * 100L + OI_VERSION_PATCH)
+
+/* Precision guard: the public names of a single-precision build end in _sp
+ * (oi_config.h). */
+
+/*
+ * oi_version: the version of the archive the program is linked with.
+ * Returned (function value): OI_VERSION of the header the archive was built
+ * from. A program compares it with its own OI_VERSION (the header it was
+ * compiled with): equal, or an archive of the same MAJOR and a MINOR at least
+ * the program's, keeps every declaration the program uses.
+ */
+long oi_version(void);
+
 /* ---------------------------------------------------------------- status */
 
 enum oi_status {
@@ -39,18 +61,27 @@ enum oi_status {
     OI_ERR_NONFINITE = -2,        /* NaN or infinite input component */
     OI_ERR_ZERO_VECTOR = -3,      /* a position that must be nonzero is zero */
     OI_ERR_BELOW_SURFACE = -4,    /* target or observer at or below the Earth's surface */
-    OI_ERR_OBSERVER_AT_TARGET = -5, /* observer and target coincide */
+    OI_ERR_OBSERVER_AT_TARGET = -5, /* observer inside the target's sphere (range <=
+                                       target radius; oi_expose_scene: range 0) */
     OI_ERR_ALBEDO = -6,           /* an albedo outside [0, 1] */
     OI_ERR_RADIUS = -7,           /* a radius <= 0 (target, or a model radius) */
     OI_ERR_MODEL = -8,            /* an oi_model field out of range */
     OI_ERR_CAMERA = -9,           /* an oi_camera field out of range */
-    OI_ERR_MAGNITUDE = -10,       /* a magnitude outside [OI_MAG_MIN, OI_MAG_MAX] */
-    OI_ERR_TERMS = -11,           /* unknown bits in a terms mask */
-    OI_ERR_GEOMETRY = -12         /* impossible geometry (e.g. Sun inside the Earth's
+    OI_ERR_MAGNITUDE = -10,       /* a magnitude outside [OI_MAG_MIN, OI_MAG_MAX], or a
+                                     flux brighter than magnitude OI_MAG_MIN */
+    OI_ERR_TERMS = -11,           /* unknown bits in a terms mask (oi_scene.terms) */
+    OI_ERR_GEOMETRY = -12,        /* impossible geometry (e.g. Sun inside the Earth's
                                      radius plus its own, point inside the Sun) */
+    OI_ERR_INPUT = -13,           /* an argument out of range that is no camera, model,
+                                     magnitude or albedo: an exposure goal, a negative
+                                     flux or irradiance, a background radiance */
+    OI_ERR_FLAGS = -14            /* unknown bits in a flags mask (oi_expose_in.flags) */
 };
 
-/* Name of a status ("OK", "ERR_NONFINITE", ...); "UNKNOWN" otherwise. */
+/* oi_status_name: the name of a status, the enum name without its "OI_"
+ * prefix ("OK", "WARN_TABLE_RANGE", "ERR_NONFINITE", ...); "UNKNOWN" for any
+ * other value. Never NULL; static storage. The names are stable: scripts
+ * (the planner's CSV status column) match on them. */
 const char *oi_status_name(int status);
 
 /* Valid range of magnitudes accepted as input. */
@@ -166,22 +197,29 @@ const oi_atm_table *oi_atm_table_default(void);
 
 /* ---------------------------------------------------------------- geometry */
 
-/* Lambertian sphere phase function (PHYSICS.md section 3)
- *   p(xi) = 2/(3 pi) ((pi - xi) cos xi + sin xi),  p(0) = 2/3,
- * xi the phase angle (radians, [0, pi]; values outside are clamped).
- * Near xi = pi it uses a series in t = pi - xi (no cancellation).
+/* oi_lambert_phase: the Lambertian sphere's phase function (docs/physics.md)
+ *   p(xi) = 2/(3 pi) ((pi - xi) cos xi + sin xi),  p(0) = 2/3, p(pi) = 0,
+ * xi the phase angle (radians, [0, pi]; values outside are clamped; NaN
+ * gives 0). Near xi = pi it uses a series in t = pi - xi (no cancellation):
+ * relative error a few epsilon over [0, pi] (docs/shadow.md).
  * A sphere of radius a, albedo alpha under irradiance E sends
  *   F = E alpha a^2 p(xi) / d^2  to a viewer at distance d. */
 oi_real oi_lambert_phase(oi_real xi);
 
-/* Angle between two vectors, atan2(|a x b|, a . b): accurate near 0 and pi.
- * Returns 0 if either vector is zero. */
+/* oi_angle: the angle between two vectors (any common unit; may be the same
+ * array), atan2(|a x b|, a . b) of the vectors scaled to unit length:
+ * [0, pi] (radians), absolute error a few epsilon, accurate near 0 and pi
+ * too. Returns 0 if either pointer is NULL or either vector is zero or has
+ * a non-finite component. */
 oi_real oi_angle(const oi_real a[3], const oi_real b[3]);
 
-/* Area (steradians) of the intersection of two spherical caps of angular
- * radii r1, r2 (radians, [0, pi]) whose centres are d apart (radians,
- * [0, pi]). Exact on the sphere (not the planar two-circle approximation),
- * in forms without cancellation for small caps. */
+/* oi_cap_overlap: area (steradians) of the intersection of two spherical
+ * caps of angular radii r1, r2 (radians, [0, pi]) whose centres are d apart
+ * (radians, [0, pi]); inputs outside are clamped, a NaN gives 0. Exact on the
+ * sphere (not the planar two-circle approximation), in forms without
+ * cancellation for small caps: disjoint caps give exactly 0, nested ones
+ * exactly the smaller cap's area 4 pi sin^2(r/2); otherwise the absolute
+ * error is a few epsilon times the smaller cap's area (docs/shadow.md). */
 oi_real oi_cap_overlap(oi_real r1, oi_real r2, oi_real d);
 
 /* ---------------------------------------------------------------- sunlight */
@@ -217,8 +255,23 @@ typedef struct oi_shadow {
  *          the geometric one; with no atmosphere table at all, the model's
  *          atm_table NULL and oi_atm_table_default() NULL, fraction_atm is
  *          the geometric fraction and the status OI_OK);
- *          OI_ERR_NULL, OI_ERR_NONFINITE, OI_ERR_ZERO_VECTOR,
- *          OI_ERR_BELOW_SURFACE, OI_ERR_GEOMETRY, OI_ERR_MODEL, OI_ERR_RADIUS.
+ *          errors, in the order checked (every field of *out zeroed):
+ *          OI_ERR_NULL       sun_km, point_km or out is NULL
+ *          OI_ERR_MODEL, OI_ERR_RADIUS  the model is invalid (see oi_model)
+ *          OI_ERR_NONFINITE  a NaN or infinite component
+ *          OI_ERR_ZERO_VECTOR  sun_km or point_km is the zero vector
+ *          OI_ERR_BELOW_SURFACE  |point| <= earth_radius_km
+ *          OI_ERR_GEOMETRY   |sun| <= sun_radius_km + earth_radius_km
+ *          OI_ERR_NONFINITE  sun - point overflows
+ *          OI_ERR_GEOMETRY   the point inside or on the Sun
+ *                            (|sun - point| <= sun_radius_km)
+ * Accuracy: fraction and fraction_ld within 8e-14 absolute in double, 3e-5
+ *          in single (1 m altitude to 1e7 km, docs/shadow.md).
+ * Regions: LIT (discs apart, or the Earth behind the Sun: fraction 1 exactly),
+ *          UMBRA (the Earth's disc covers the Sun's: 0 exactly), ANNULAR,
+ *          else PENUMBRA. Limb darkening: Neckel & Labs (1994) at 559.95 nm;
+ *          fraction_ld = fraction for a Sun wider than 0.5 rad, and always
+ *          with OI_NO_LIMB_DARKENING.
  */
 int oi_sun_fraction(const oi_real sun_km[3], const oi_real point_km[3],
                     const oi_model *model, oi_shadow *out);
@@ -258,10 +311,13 @@ int oi_earthshine(oi_real theta, oi_real h_km, const oi_model *model,
 
 /* ---------------------------------------------------------------- moonlight */
 #ifndef OI_NO_MOON
-/* Empirical lunar phase law: the Moon's brightness at phase angle alpha
- * (radians) relative to full Moon, 10^(-0.4 (0.026 a + 4e-9 a^4)), a in
- * degrees (Krisciunas & Schaefer 1991, PASP 103, 1033, eq. 20, after Allen).
- * Returns 1 at alpha = 0; |alpha| is used, clamped to [0, pi]; NaN gives 0. */
+/* oi_moon_phase_law: the empirical lunar phase law, the Moon's brightness at
+ * phase angle alpha (radians) relative to full Moon,
+ * 10^(-0.4 (0.026 a + 4e-9 a^4)), a in degrees (Krisciunas & Schaefer 1991,
+ * PASP 103, 1033, eq. 20, after Allen): in [2.8e-4, 1], relative error a few
+ * epsilon against the formula. Returns 1 at alpha = 0; |alpha| is used,
+ * clamped to [0, pi]; NaN gives 0. Beyond 150 degrees the law is an
+ * extrapolation (src/moon.c). */
 oi_real oi_moon_phase_law(oi_real alpha);
 #endif
 
@@ -279,9 +335,10 @@ typedef struct oi_scene {
     oi_real target_radius_m; /* > 0 */
 } oi_scene;
 
-/* Fill a scene with the defaults: zero positions, no observer, all terms
- * compiled in, albedos OI_EARTH_ALBEDO_DEFAULT / OI_TARGET_ALBEDO_DEFAULT,
- * radius OI_TARGET_RADIUS_M_DEFAULT. */
+/* oi_scene_defaults: fill a scene with the defaults: zero positions, no
+ * observer, every term compiled in, albedos OI_EARTH_ALBEDO_DEFAULT /
+ * OI_TARGET_ALBEDO_DEFAULT, radius OI_TARGET_RADIUS_M_DEFAULT. A NULL scene
+ * is ignored. */
 void oi_scene_defaults(oi_scene *scene);
 
 typedef struct oi_illum {
@@ -310,23 +367,56 @@ typedef struct oi_illum {
 } oi_illum;
 
 /*
- * Light on the target from Sun, Earth and Moon, and what the observer sees.
- * Given:   scene  positions, terms, albedos, target radius
+ * oi_illuminate: light on the target from Sun, Earth and Moon, and what the
+ * observer sees.
+ * Given:   scene  positions (km), terms, albedos, target radius; moon_km is
+ *                 read only with OI_TERM_MOON, observer_km only with
+ *                 has_observer
  *          model  NULL or model constants and options
- * Returned: out   see oi_illum
- * Returns: OI_OK; OI_WARN_TABLE_RANGE; any OI_ERR_* above (outputs zeroed);
- *          OI_ERR_GEOMETRY also for a position farther than OI_POSITION_MAX_KM,
- *          or the target inside the Moon.
+ * Returned: out   see oi_illum (zeroed on error)
+ * Returns: OI_OK; OI_WARN_TABLE_RANGE (earthshine outside its table's range,
+ *          or the target beyond the atmosphere table: see oi_earthshine and
+ *          oi_sun_fraction); errors (the first found; the scene's own
+ *          checks come before the geometry's):
+ *          OI_ERR_NULL       scene or out is NULL
+ *          OI_ERR_MODEL, OI_ERR_RADIUS  the model is invalid (see oi_model)
+ *          OI_ERR_TERMS      terms has bits outside OI_TERM_ALL (or
+ *                            OI_TERM_MOON in a build with OI_NO_MOON)
+ *          OI_ERR_NONFINITE  a component of a position read, an albedo or
+ *                            target_radius_m NaN or infinite
+ *          OI_ERR_ALBEDO     earth_albedo or target_albedo outside [0, 1]
+ *          OI_ERR_RADIUS     target_radius_m <= 0
+ *          OI_ERR_ZERO_VECTOR  a position read is the zero vector
+ *          OI_ERR_GEOMETRY   a position read farther than OI_POSITION_MAX_KM
+ *          OI_ERR_BELOW_SURFACE  |target| or |observer| <= earth_radius_km
+ *          then the Sun seen from the target (oi_sun_fraction's statuses:
+ *          OI_ERR_GEOMETRY for a Sun touching the Earth or the target inside
+ *          the Sun), the Sun seen from the Moon (the same; the Moon below the
+ *          Earth's surface gives OI_ERR_BELOW_SURFACE), and:
+ *          OI_ERR_GEOMETRY   the target inside the Moon
+ *                            (|target - moon| <= moon_radius_km)
+ *          OI_ERR_OBSERVER_AT_TARGET  the observer inside the target's sphere
+ *                            (range <= target_radius_m)
+ * Notes:   e_sun = TSI (AU / |sun - target|)^2 fraction_atm;
+ *          e_earth = earth_albedo TSI (AU / |sun|)^2 phi(theta, h);
+ *          e_moon from the lunar phase law (or a Lambert Moon), times the
+ *          fraction of the Sun the Moon sees. The target is a Lambertian
+ *          sphere; the flux at the observer is the sum over sources of
+ *          e albedo (a / range)^2 p(phase). src/illuminate.c.
  */
 int oi_illuminate(const oi_scene *scene, const oi_model *model, oi_illum *out);
 
-/* Apparent V magnitude of a flux at the observer (W/m^2):
- * m = m_sun - 2.5 log10(F / TSI). Returns OI_MAG_DARK for F <= 0, non-finite F,
- * or magnitudes fainter than OI_MAG_DARK. */
+/* oi_magnitude_v: apparent V magnitude of a flux at the observer (W/m^2):
+ * m = OI_SUN_MAG_V - 2.5 log10(F / TSI), TSI the model's (an invalid model
+ * means the defaults). Returns OI_MAG_DARK for F <= 0, non-finite F, or
+ * magnitudes fainter than OI_MAG_DARK. Relative error a few epsilon. */
 oi_real oi_magnitude_v(oi_real flux_w_m2, const oi_model *model);
 
-/* Inverse of oi_magnitude_v. Returns OI_OK or OI_ERR_MAGNITUDE (flux set to 0)
- * for non-finite magnitudes or outside [OI_MAG_MIN, OI_MAG_MAX]. */
+/* oi_flux_from_magnitude: the inverse of oi_magnitude_v,
+ * *flux_w_m2 = TSI 10^(-0.4 (mag_v - OI_SUN_MAG_V)) (W/m^2).
+ * Returns: OI_OK; OI_ERR_NULL (flux_w_m2 NULL); OI_ERR_MODEL, OI_ERR_RADIUS
+ * (invalid model); OI_ERR_MAGNITUDE (mag_v non-finite or outside
+ * [OI_MAG_MIN, OI_MAG_MAX]). On error *flux_w_m2 is 0. */
 int oi_flux_from_magnitude(oi_real mag_v, const oi_model *model, oi_real *flux_w_m2);
 
 /* ---------------------------------------------------------------- camera */
@@ -356,9 +446,13 @@ typedef struct oi_camera {
     oi_real read_noise_e[OI_CAMERA_MAX_GAINS]; /* input-referred read noise per gain (e-) */
 } oi_camera;
 
-/* Built-in cameras: index 0.. ; NULL past the end. */
+/* oi_camera_builtin: built-in camera number index (0 is the default,
+ * "star-tracker"); NULL for a negative index or past the last. Read-only,
+ * static storage; sources of every value in src/camera_builtin.c and
+ * docs/camera.md. */
 const oi_camera *oi_camera_builtin(int index);
-/* Built-in camera by name (exact match); NULL if none. */
+/* oi_camera_find: built-in camera by name (exact, case-sensitive); NULL when
+ * name is NULL or no camera has it. */
 const oi_camera *oi_camera_find(const char *name);
 
 /* Exposure flags (bit mask) */
@@ -371,7 +465,9 @@ const oi_camera *oi_camera_find(const char *name);
 #define OI_FLAG_OCCULTED      (64u)  /* the Earth hides the target from the observer */
 #define OI_FLAG_RESOLVED      (128u) /* target wider than a pixel: peak limited by its radiance */
 
-/* Name of one flag bit ("sun_exclusion", ...); NULL if unknown. */
+/* oi_flag_name: name of one flag bit ("sun_exclusion", "earth_in_fov",
+ * "eclipsed", "too_faint", "saturated", "penumbra", "occulted", "resolved");
+ * NULL for 0, several bits or an unknown bit. */
 const char *oi_flag_name(unsigned flag_bit);
 
 /* Goals of the exposure choice. Zero fields mean defaults. */
@@ -402,13 +498,121 @@ typedef struct oi_exposure {
     unsigned flags;          /* OI_FLAG_* */
 } oi_exposure;
 
-/* Choose exposure time and gain (rule: docs/camera.md, src/exposure.c). */
+/*
+ * oi_expose: choose the exposure time and gain for a point-like target.
+ *
+ * Given:
+ *   camera  the camera (valid ranges: Note 4)
+ *   in      flux_w_m2: target flux at the aperture (W/m^2, [0, 2.74e4]:
+ *           magnitude OI_MAG_MIN at the nominal TSI); background_w_m2_sr: sky
+ *           radiance behind the target (W/m^2/sr, [0, 1e8]); flags: geometric
+ *           OI_FLAG_* bits already known (copied to the result)
+ *   goal    NULL or goals; zero fields mean defaults (fill 0.5, in (0, 1];
+ *           snr_min 5, in (0, 1e6])
+ * Returned:
+ *   out     the chosen setting (exposure_s, gain, their indices), its
+ *           electrons (signal_e, background_e, peak_e, saturation_e), fill,
+ *           snr and flags; sun_angle_rad is 0 here
+ * Returns (checked in this order; on error *out is zeroed):
+ *   OI_OK
+ *   OI_ERR_NULL       camera, in or out is NULL
+ *   OI_ERR_CAMERA     a camera field outside Note 4's ranges, times or gains
+ *                     not strictly ascending, n_times or n_gains out of range
+ *   OI_ERR_INPUT      a goal field out of range (NaN included)
+ *   OI_ERR_NONFINITE  flux or background NaN or infinite
+ *   OI_ERR_INPUT      flux negative
+ *   OI_ERR_MAGNITUDE  flux brighter than magnitude OI_MAG_MIN (> 2.74e4 W/m^2)
+ *   OI_ERR_INPUT      background negative or above 1e8 W/m^2/sr
+ *   OI_ERR_FLAGS      in->flags has bits outside the OI_FLAG_* set
+ * Notes:
+ *   1. Rates of photo-electrons (e-/s) in the brightest pixel, with
+ *      A = pi (D/2)^2 and k = transmission * band_fraction * QE / photon_energy:
+ *        target      S = flux * A * k * psf_peak_fraction
+ *        background  B = radiance * A * (pitch / focal)^2 * k + dark_current.
+ *      For exposure t and gain g: peak = (S + B) t, saturation = full_well / g,
+ *      fill = peak / saturation, SNR = S t / sqrt(S t + B t + read_noise(g)^2).
+ *   2. Choice: among the settings with fill < 1 and fill <= goal.fill, the
+ *      highest SNR (ties: lower gain, then shorter time); if none reaches
+ *      down to the goal, the shortest time at the lowest gain (the lowest
+ *      fill), with OI_FLAG_SATURATED when even that saturates.
+ *      OI_FLAG_TOO_FAINT when the SNR at the longest time and highest gain
+ *      is below goal.snr_min.
+ *   3. in->flags bits OI_FLAG_TOO_FAINT and OI_FLAG_SATURATED are ignored
+ *      (recomputed); the geometric bits are copied to out->flags.
+ *   4. Valid camera ranges: aperture (0, 10] m, focal length [1e-3, 1e3] m,
+ *      pitch [1e-7, 1e-3] m, transmission, QE, band_fraction and
+ *      psf_peak_fraction (0, 1], photon energy [1e-20, 1e-17] J, full well
+ *      [1, 1e9] e-, dark current [0, 1e9] e-/s, fov (0, pi], Sun exclusion
+ *      [0, pi], 1..OI_CAMERA_MAX_TIMES times in (0, 1e4] s strictly
+ *      ascending, 1..OI_CAMERA_MAX_GAINS gains in (0, 1e3] strictly
+ *      ascending, read noise [0, 1e6] e-. name is not used (may be NULL).
+ *      Every camera is checked, the built-in ones too.
+ *   5. The target is treated as a point source: a resolved target puts less
+ *      than psf_peak_fraction of its light in one pixel (oi_expose_scene
+ *      bounds that, its Note 5).
+ *   6. Exactness and cost: the choice is that of the full search over every
+ *      (time, gain) pair, to the bit, made from O(log n_times + n_gains)
+ *      evaluations (docs/camera.md, "Cost of the search"; src/expose.c).
+ */
 int oi_expose(const oi_camera *camera, const oi_expose_in *in,
               const oi_expose_goal *goal, oi_exposure *out);
 
-/* Same, from a scene and its illumination: boresight from observer to
- * target, Sun exclusion, Earth in the field of view with its radiance as
- * background, eclipse flags. Needs scene->has_observer. */
+/*
+ * oi_expose_scene: the exposure choice from a scene and its illumination.
+ *
+ * Given:
+ *   camera  the camera (as oi_expose)
+ *   scene   positions (km, Earth-centred); has_observer must be set;
+ *           earth_albedo (the background) and target_albedo (Note 5)
+ *   illum   oi_illuminate's result for this scene (e_sun, e_earth, e_moon,
+ *           flux_obs and shadow.region are used)
+ *   model   NULL or model (earth_radius_km, au_km, tsi_w_m2)
+ *   goal    NULL or goals (as oi_expose)
+ * Returned:
+ *   out     as oi_expose, with sun_angle_rad (Note 1) and the geometric flags
+ * Returns (checked in this order; on error *out is zeroed):
+ *   OI_OK
+ *   OI_ERR_NULL       camera, scene, illum or out is NULL, or
+ *                     scene->has_observer is 0 (the observer is required)
+ *   OI_ERR_MODEL, OI_ERR_RADIUS  the model is invalid (as oi_illuminate)
+ *   OI_ERR_NONFINITE  a component of sun_km, target_km or observer_km
+ *   OI_ERR_ALBEDO     earth_albedo or target_albedo outside [0, 1] (NaN too)
+ *   OI_ERR_NONFINITE  illum's e_sun, e_earth, e_moon or flux_obs
+ *   OI_ERR_INPUT      one of those four negative
+ *   OI_ERR_CAMERA     the camera is invalid (oi_expose Note 4)
+ *   OI_ERR_ZERO_VECTOR  observer or Sun at the Earth's centre
+ *   OI_ERR_BELOW_SURFACE  |observer| or |target| <= the Earth's radius
+ *   OI_ERR_OBSERVER_AT_TARGET  observer and target at the same position
+ *   then oi_expose's statuses for the goal and the derived flux
+ *   (OI_ERR_INPUT for a goal out of range, OI_ERR_MAGNITUDE for a flux
+ *   brighter than magnitude OI_MAG_MIN).
+ * Notes:
+ *   1. Boresight b = target - observer. sun_angle_rad = angle(sun - observer,
+ *      b) (as oi_angle); OI_FLAG_SUN_EXCLUSION when it is below
+ *      camera->sun_exclusion_rad.
+ *   2. OI_FLAG_EARTH_IN_FOV when the Earth's disc, of angular radius
+ *      asin(R / |observer|), comes within fov_rad / 2 of the boresight (the
+ *      diagonal field treated as a cone: conservative at the corners).
+ *   3. Background: where the boresight ray meets the Earth, the radiance of
+ *      a Lambertian Earth, earth_albedo * E0 * cos(i) / pi with
+ *      E0 = TSI (1 AU / |sun|)^2 and i the Sun's incidence angle there;
+ *      0 when that point is unlit or the ray misses the Earth (dark sky).
+ *      The background is physical and does not depend on scene->terms.
+ *   4. OI_FLAG_OCCULTED when the Earth lies between the observer and the
+ *      target: the target's flux is then taken as 0 (TOO_FAINT follows).
+ *   5. Resolved target: no pixel can collect more than a Lambertian surface
+ *      of the target's albedo facing every source at once, of radiance
+ *      target_albedo (e_sun + e_earth + e_moon) / pi, over the pixel's solid
+ *      angle (pitch / focal)^2. When psf_peak_fraction * flux exceeds that,
+ *      the flux given to oi_expose is reduced so that the brightest pixel
+ *      gets exactly that bound, and OI_FLAG_RESOLVED is raised.
+ *   6. OI_FLAG_ECLIPSED when illum->shadow.region is OI_SHADOW_UMBRA,
+ *      OI_FLAG_PENUMBRA when it is OI_SHADOW_PENUMBRA or OI_SHADOW_ANNULAR
+ *      (part of the Sun hidden in both).
+ *   7. Not modelled: the Moon or the Earth's limb glow in the field, stray
+ *      light from the Sun outside the exclusion angle, the atmosphere's
+ *      radiance at the limb. docs/camera.md.
+ */
 int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
                     const oi_illum *illum, const oi_model *model,
                     const oi_expose_goal *goal, oi_exposure *out);

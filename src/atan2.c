@@ -81,7 +81,7 @@ static oi_real residual(oi_real a, oi_real b, oi_real c)
  *     too). Then the octant, B + a or B - a with B in {pi/2, pi} (pi/2 - a,
  *     pi - a, pi/2 + a) in one Fast2Sum that keeps the rounding of the sum,
  *     and the sign of y; one final rounding. One path for each step keeps
- *     the code small (the Sun-only build fits 4 KiB of flash, issue 6).
+ *     the code small (the Sun-only build fits 4 KiB of flash).
  *  2. Measured: within 1 ulp (tests/c/test_atan2.c, 400,000 random points
  *     over 40 decades and every reduction breakpoint).
  * References:

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * camera_builtin.c: the built-in cameras (oi_camera_builtin, oi_camera_find).
+ * camera_builtin.c: the built-in cameras, as data, and oi_camera_builtin
+ * (the look-up by name, oi_camera_find, is in src/camera.c).
  *
  * Each parameter names its source. "Datasheet" values are the sensor
  * maker's typical figures; "assumption" marks a design value chosen for a
@@ -104,37 +105,6 @@ const oi_camera *oi_camera_builtin(int index)
 {
     if (index < 0 || index >= N_BUILTIN) return NULL;
     return &builtin[index];
-}
-
-/* Exact, case-sensitive string equality (no libc string functions). */
-static int same_name(const char *a, const char *b)
-{
-    while (*a != '\0' && *a == *b) {
-        a++;
-        b++;
-    }
-    return *a == *b;
-}
-
-/*
- * oi_camera_find: a built-in camera by name.
- *
- * Given:
- *   name     const char *  NUL-terminated name, exact and case-sensitive
- *                          (e.g. "star-tracker", "telescope-15cm")
- *
- * Returned (function value):
- *            const oi_camera *  the camera; NULL when name is NULL or no
- *                               built-in camera has that name.
- */
-const oi_camera *oi_camera_find(const char *name)
-{
-    int i;
-    if (name == NULL) return NULL;
-    for (i = 0; i < N_BUILTIN; i++) {
-        if (same_name(builtin[i].name, name)) return &builtin[i];
-    }
-    return NULL;
 }
 
 #endif /* OI_NO_EXPOSURE */

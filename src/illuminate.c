@@ -76,8 +76,8 @@ static void earth_direction(const oi_real r_hat[3], const oi_real s_hat[3], oi_r
 #define MOON_FULL_OVER_SUN OI_R(2.48885731828238908997e-6)
 
 /* Height above the Earth's surface that any sunlight grazing through the
- * atmosphere stays below (the atmosphere table's top is OI_ATM_TOP_KM =
- * 100 km), with a factor 2 to spare. */
+ * atmosphere stays below (every atmosphere table's top is at most
+ * OI_ATM_TOP_MAX_KM = 100 km, checked for a caller's), with a factor 2 to spare. */
 #define GRAZING_TOP_KM OI_R(200.0)
 
 /*
@@ -183,25 +183,6 @@ static oi_real reflected_flux(oi_real e, const oi_real dir[3], const oi_real obs
            oi__lambert_phase_cs(*phase, cos_xi, sin_xi);
 }
 
-/*
- * oi_illuminate: see include/orbillum.h.
- * Notes:
- *  1. Sun: e_sun = TSI (AU / |sun - target|)^2 * shadow.fraction_atm, where
- *     fraction_atm is the uniform-disc fraction, or the limb-darkened one with
- *     OI_LIMB_DARKENED, or the atmosphere's when compiled in and enabled;
- *     in the shadow, dir_sun is then the mean direction of the refracted light.
- *  2. Earth: e_earth = earth_albedo * TSI (AU/|sun|)^2 * phi(theta, h).
- *  3. Moon: the Moon is lit by the fraction of the Sun it sees (so it darkens
- *     in the Earth's shadow). The Moon's own shadow on the target (solar
- *     eclipses by the Moon) is not modelled. The Moon's shadow test is
- *     skipped when the Moon is certainly in full sunlight (certainly_lit).
- *  4. The target is a Lambertian sphere; earthshine is reflected as if it came
- *     from its mean incidence direction (exact in the far field).
- *  5. Cost: the model is resolved and the scene validated once; after that
- *     every position is bounded (OI_POSITION_MAX_KM), so norms skip the
- *     overflow scaling and angles between unit vectors are formed directly
- *     (oi__angle_unit), each unit vector once. docs/performance.md.
- */
 /* The Sun's term and the shadow: e_sun, dir_sun, shadow (its own frame: the
  * shadow call's chain is the deepest of oi_illuminate). */
 static OI_NOINLINE int sun_term(const oi_scene *scene, const oi_model *m, oi_illum *out)
@@ -265,6 +246,26 @@ static OI_NOINLINE int observer_term(const oi_scene *scene, const oi_model *m, o
     return OI_OK;
 }
 
+/*
+ * oi_illuminate: the contract (given, returned, statuses) is in
+ * include/orbillum.h.
+ * Notes:
+ *  1. Sun: e_sun = TSI (AU / |sun - target|)^2 * shadow.fraction_atm, where
+ *     fraction_atm is the uniform-disc fraction, or the limb-darkened one with
+ *     OI_LIMB_DARKENED, or the atmosphere's when compiled in and enabled;
+ *     in the shadow, dir_sun is then the mean direction of the refracted light.
+ *  2. Earth: e_earth = earth_albedo * TSI (AU/|sun|)^2 * phi(theta, h).
+ *  3. Moon: the Moon is lit by the fraction of the Sun it sees (so it darkens
+ *     in the Earth's shadow). The Moon's own shadow on the target (solar
+ *     eclipses by the Moon) is not modelled. The Moon's shadow test is
+ *     skipped when the Moon is certainly in full sunlight (certainly_lit).
+ *  4. The target is a Lambertian sphere; earthshine is reflected as if it came
+ *     from its mean incidence direction (exact in the far field).
+ *  5. Cost: the model is resolved and the scene validated once; after that
+ *     every position is bounded (OI_POSITION_MAX_KM), so norms skip the
+ *     overflow scaling and angles between unit vectors are formed directly
+ *     (oi__angle_unit), each unit vector once. docs/performance.md.
+ */
 int oi_illuminate(const oi_scene *scene, const oi_model *model, oi_illum *out)
 {
     oi_model m;

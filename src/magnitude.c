@@ -7,7 +7,7 @@
  * Given:   flux_w_m2  irradiance at the observer from the target (W/m^2)
  *          model      NULL or model (tsi_w_m2); an invalid model means defaults
  * Returns: m = OI_SUN_MAG_V - 2.5 log10(flux / tsi), the Sun's V magnitude at
- *          1 AU being the zero point (PHYSICS.md section 3); OI_MAG_DARK for a
+ *          1 AU being the zero point (docs/physics.md); OI_MAG_DARK for a
  *          flux <= 0, non-finite, or fainter than OI_MAG_DARK.
  * Notes:   1. The target is assumed to reflect sunlight's spectrum unchanged
  *             (grey albedo), so the solar colour carries over to V.

@@ -62,12 +62,11 @@ oi_real oi__norm_outline(const oi_real a[3]);
 /* oi__norm (and oi__unit, which calls it) and oi__finite3 are inlined, except
  * in a file that defines OI_VECTOR_OUT_OF_LINE before including this header:
  * there they call the single copies in src/vector.c. The files of the
- * Sun-only build (src/shadow.c, src/phase.c) do, to bring it towards 4 KiB of
- * flash on every Cortex-M configuration (issue 6: about -200 B at -Os and
+ * Sun-only build (src/sun_fraction.c, src/phase.c) do, to bring it towards
+ * 4 KiB of flash on every Cortex-M configuration (about -200 B at -Os and
  * -450 to -520 B at -O2); the other hot paths keep the inline copies (out of
- * line everywhere cost +3% instructions in make bench's all_expose; these
- * two files, with src/model.c and src/atan2.c as of 02f1b60, +1.8%). Same
- * values either way. */
+ * line everywhere cost +3% instructions in make bench's all_expose, in
+ * these two files +1.8%). Same values either way. */
 static inline oi_real oi__norm(const oi_real a[3])
 {
 #ifdef OI_VECTOR_OUT_OF_LINE
@@ -140,7 +139,7 @@ static inline int oi__finite3(const oi_real a[3])
 
 /*
  * Error-free transformations (Knuth TAOCP 2, 4.2.2; Dekker 1971), shared by
- * src/shadow.c, src/atan2.c and src/sincos.c. They need round-to-nearest in
+ * src/sun_fraction.c, src/atan2.c and src/sincos.c. They need round-to-nearest in
  * the working precision (no x87 extended registers). oi__split's product
  * goes through a volatile so that a compiler contracting floating-point
  * expressions (-ffp-contract=fast, the GNU C default on FMA targets) cannot
@@ -171,6 +170,106 @@ static inline void oi__split(oi_real a, oi_real *hi, oi_real *lo)
     *lo = a - *hi;
 }
 
+/* ---- scalar helpers shared by the model files */
+
+/* pi in two parts: OI_PI_HI is pi rounded to oi_real, OI_PI_LO = pi - OI_PI_HI
+ * rounded. (OI_PI_HI - x) is exact for x in [OI_PI_HI/2, 2 OI_PI_HI]
+ * (Sterbenz), and adding OI_PI_LO gives pi - x to one rounding. */
+#ifdef OI_SINGLE_PRECISION
+#define OI_PI_HI (3.14159274f)          /* float(pi) = 13176795 * 2^-22 */
+#define OI_PI_LO (-8.74227800e-08f)     /* pi - float(pi) */
+#else
+#define OI_PI_HI (3.141592653589793116)  /* double(pi) = 884279719003555 * 2^-48 */
+#define OI_PI_LO (1.2246467991473532e-16) /* pi - double(pi) */
+#endif
+#define OI_HALF_PI_R (OI_PI_R * OI_R(0.5))
+
+/* pi - x to one rounding for x near pi (OI_PI_HI, OI_PI_LO). */
+static inline oi_real oi__pi_minus(oi_real x)
+{
+    return (OI_PI_HI - x) + OI_PI_LO;
+}
+
+static inline oi_real oi__sqr(oi_real x)
+{
+    return x * x;
+}
+
+/* x limited to [lo, hi]; NaN gives lo. */
+static inline oi_real oi__clamp(oi_real x, oi_real lo, oi_real hi)
+{
+    if (!(x > lo)) return lo; /* also maps NaN to lo */
+    return x < hi ? x : hi;
+}
+
+/* lo < x <= hi (false for NaN). */
+static inline int oi__in_open_closed(oi_real x, oi_real lo, oi_real hi)
+{
+    return x > lo && x <= hi;
+}
+
+/* lo <= x <= hi (false for NaN). */
+static inline int oi__in_closed(oi_real x, oi_real lo, oi_real hi)
+{
+    return x >= lo && x <= hi;
+}
+
+/* ---- spherical triangles and caps (src/spherical_triangle.c,
+ * src/cap_segment.c, src/limb_darkening.c) */
+
+/* sin^2(r/2): the cap area over 4 pi, without the cancellation of 1 - cos r. */
+static inline oi_real oi__sin_half_sq(oi_real r)
+{
+    return oi__sqr(OI_SIN(OI_R(0.5) * r));
+}
+
+/* y + z - x for non-negative x, y, z, accurate when y + z is close to x:
+ * the larger of y, z minus x is exact there (Sterbenz), then one rounding. */
+static inline oi_real oi__side_excess(oi_real x, oi_real y, oi_real z)
+{
+    oi_real big = y > z ? y : z;
+    oi_real small = y > z ? z : y;
+    return (big - x) + small;
+}
+
+/* sin of an angle known to lie in [0, pi], accurate near pi too. */
+static inline oi_real oi__sin_0_pi(oi_real x)
+{
+    return x <= OI_HALF_PI_R ? OI_SIN(x) : OI_SIN(oi__pi_minus(x));
+}
+
+/*
+ * The sines of the spherical triangle with sides a, b, c (radians, triangle
+ * inequalities assumed; rounding beyond them is clamped) used by the
+ * half-angle formulas, s = (a + b + c)/2: hs[0] = sin s, hs[1] = sin(s - a),
+ * hs[2] = sin(s - b), hs[3] = sin(s - c) (src/spherical_triangle.c).
+ */
+void oi__half_sines(oi_real a, oi_real b, oi_real c, oi_real hs[4]);
+
+/* The angle opposite the side of index i (1: a, 2: b, 3: c) of the triangle
+ * of oi__half_sines, or with comp != 0 pi minus it, without cancellation
+ * (src/spherical_triangle.c). */
+oi_real oi__half_angle(const oi_real hs[4], int i, int comp);
+
+/* Area of the segment of a cap of radius r (<= pi/2) cut off by the great
+ * circle through the two points of its boundary seen from the cap's centre
+ * at +-alpha; negative for alpha > pi/2 (src/cap_segment.c). */
+oi_real oi__cap_segment(oi_real r, oi_real alpha);
+
+#ifndef OI_NO_LIMB_DARKENING
+/* Limb darkening is computed for OI_LD_RS_MIN < r_s <= OI_LD_RS_MAX
+ * (docs/shadow.md); elsewhere the uniform disc stands in. */
+#define OI_LD_RS_MAX OI_R(0.5)
+#define OI_LD_RS_MIN OI_R(1e-15)
+
+/* Visible fraction of the limb-darkened solar disc of radius rs with the
+ * Earth's disc of radius re at sep: penumbra with tri the sines of
+ * oi__half_sines(rs, re, sep) and pa_s = pi - (the angle at the Sun's
+ * centre), or annular with tri = NULL (src/limb_darkening.c). */
+oi_real oi__fraction_limb_darkened(oi_real rs, oi_real re, oi_real sep, oi_real pa_s,
+                                   const oi_real *tri);
+#endif
+
 static inline void oi__zero3(oi_real a[3])
 {
     a[0] = a[1] = a[2] = (oi_real)0;
@@ -185,7 +284,7 @@ static inline void oi__zero3(oi_real a[3])
 int oi__model_resolve(const oi_model *in, oi_model *out);
 
 /*
- * oi_sun_fraction (src/shadow.c) for callers that already hold a resolved
+ * oi_sun_fraction (src/sun_fraction.c) for callers that already hold a resolved
  * model (oi__model_resolve) and non-NULL pointers: the model is not
  * validated again. When light_dir is not NULL and the atmosphere is compiled
  * in and enabled, it also returns the unit vector from the point towards
@@ -215,6 +314,16 @@ oi_real oi__lambert_phase_cs(oi_real xi, oi_real cos_xi, oi_real sin_xi);
 
 /* oi_magnitude_v (src/magnitude.c) with the model's TSI already resolved. */
 oi_real oi__magnitude_v(oi_real flux_w_m2, oi_real tsi_w_m2);
+
+#ifndef OI_NO_EXPOSURE
+/* Nonzero when every field of the camera is in range (src/camera.c). */
+int oi__camera_valid(const oi_camera *c);
+
+/* oi_expose's choice for a camera that passed oi__camera_valid, out zeroed
+ * (src/expose.c); same statuses as oi_expose after its camera check. */
+int oi__expose_valid(const oi_camera *camera, const oi_expose_in *in,
+                     const oi_expose_goal *goal, oi_exposure *out);
+#endif
 
 #ifndef OI_NO_ATMOSPHERE
 /*

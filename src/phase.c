@@ -5,20 +5,6 @@
 #define OI_VECTOR_OUT_OF_LINE
 #include "oi_internal.h"
 
-/*
- * pi split in two parts so that pi - x is formed exactly for x near pi:
- * PI_HI is pi rounded to oi_real, PI_LO = pi - PI_HI rounded. Then
- * (PI_HI - x) is exact for x in [PI_HI/2, 2 PI_HI] (Sterbenz) and adding
- * PI_LO gives pi - x with a relative error of one rounding.
- */
-#ifdef OI_SINGLE_PRECISION
-#define PI_HI (3.14159274f)          /* float(pi) = 13176795 * 2^-22 */
-#define PI_LO (-8.74227800e-08f)     /* pi - float(pi) */
-#else
-#define PI_HI (3.141592653589793116)  /* double(pi) = 884279719003555 * 2^-48 */
-#define PI_LO (1.2246467991473532e-16) /* pi - double(pi) */
-#endif
-
 /* 2 / (3 pi) */
 #define TWO_THIRDS_OVER_PI OI_R(0.21220659078919378103)
 
@@ -55,19 +41,19 @@ static oi_real series_sin_minus_tcos(oi_real t)
  * Notes:
  *  1. xi is clamped to [0, pi]; a NaN gives 0 (no light: the safe answer for
  *     a function without status).
- *  2. With t = pi - xi formed exactly (two-part pi), p = 2/(3 pi) (sin t -
- *     t cos t). For t < 1 a series in t is used (the closed form cancels to
+ *  2. With t = pi - xi formed exactly (two-part pi, oi__pi_minus),
+ *     p = 2/(3 pi) (sin t - t cos t). For t < 1 a series in t is used (the closed form cancels to
  *     ~t^3/3 near xi = pi); elsewhere the closed form, whose terms then do
  *     not cancel by more than a factor ~5.
  *  3. Measured relative error against mpmath (tests/c/test_phase.c, 400+
  *     points including xi within 1e-8 of 0 and pi): see docs/shadow.md.
  *  4. Energy: a sphere of radius a, albedo alpha under irradiance E sends
  *     F = E alpha a^2 p(xi) / d^2 to a viewer at distance d; integrating
- *     F d^2 over all directions gives alpha E pi a^2 (PHYSICS.md sec. 3).
+ *     F d^2 over all directions gives alpha E pi a^2 (docs/physics.md).
  * References:
  *   Russell, H.N. 1916, ApJ 43, 173 (the Lambert-sphere phase law).
- *   Penney 2009 (seed), sec. II.4, with the normalisation corrected as in
- *   PHYSICS.md (errata to eq. 3.1-3.4).
+ *   Penney 2009 (seed), sec. II.4, with the normalisation corrected
+ *   (docs/physics.md: the errata to its eq. 3.1-3.4).
  */
 oi_real oi_lambert_phase(oi_real xi)
 {
@@ -81,7 +67,7 @@ oi_real oi__lambert_phase_cs(oi_real xi, oi_real cos_xi, oi_real sin_xi)
     oi_real t, f;
     if (xi != xi) return (oi_real)0;              /* NaN */
     if (xi <= (oi_real)0) return (oi_real)2 / (oi_real)3;  /* p(0) = 2/3 */
-    t = (PI_HI - xi) + PI_LO;                     /* pi - xi, one rounding */
+    t = oi__pi_minus(xi);                         /* pi - xi, one rounding */
     if (!(t > (oi_real)0)) return (oi_real)0;     /* xi >= pi */
     if (t < (oi_real)1) {
         f = series_sin_minus_tcos(t);

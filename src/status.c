@@ -37,6 +37,8 @@ const char *oi_status_name(int status)
     case OI_ERR_MAGNITUDE: return "ERR_MAGNITUDE";
     case OI_ERR_TERMS: return "ERR_TERMS";
     case OI_ERR_GEOMETRY: return "ERR_GEOMETRY";
+    case OI_ERR_INPUT: return "ERR_INPUT";
+    case OI_ERR_FLAGS: return "ERR_FLAGS";
     default: return "UNKNOWN";
     }
 }

@@ -2,9 +2,10 @@
 /*
  * vector.c: the out-of-line copies of the scaled norm and of the finiteness
  * test of src/oi_internal.h, called by the files that define
- * OI_VECTOR_OUT_OF_LINE (the Sun-only build: src/shadow.c, src/phase.c)
- * instead of an inline copy at each call (issue 6: the Sun-only build under
- * 4 KiB of flash; docs/performance.md). Same results as the inline ones.
+ * OI_VECTOR_OUT_OF_LINE (the Sun-only build: src/sun_fraction.c,
+ * src/phase.c) instead of an inline copy at each call (the Sun-only build
+ * under 4 KiB of flash; docs/performance.md). Same results as the inline
+ * ones.
  */
 #include "oi_internal.h"
 

@@ -24,15 +24,32 @@ static inline void set3(oi_real v[3], double x, double y, double z)
     v[2] = (oi_real)z;
 }
 
+/* want == got, as integers (statuses, flags, counts). */
+static inline void check_int(long want, long got, const char *what)
+{
+    if (want != got) {
+        print_error("%s: want %ld got %ld\n", what, want, got);
+        fail();
+    }
+}
+
+/* |got - want| <= abs + rel |want|; prints want, got and the relative error
+ * when not. A NaN got fails. */
+static inline void check_close(double want, double got, double abs_tol, double rel_tol,
+                               const char *what)
+{
+    double err = fabs(got - want);
+    if (!(err <= abs_tol + rel_tol * fabs(want))) {
+        print_error("%s: want %.17g got %.17g rel err %.3g (abs %.3g + rel %.3g allowed)\n",
+                    what, want, got, want != 0 ? err / fabs(want) : err, abs_tol, rel_tol);
+        fail();
+    }
+}
+
 /* |got - want| <= rel |want| (plus a floor far below any value tested). */
 static inline void check_rel(double want, double got, double rel, const char *what)
 {
-    double err = fabs(got - want);
-    if (!(err <= rel * fabs(want) + 1e-300)) {
-        print_error("%s: want %.17g got %.17g rel err %.3g\n", what, want, got,
-                    want != 0 ? err / fabs(want) : err);
-        fail();
-    }
+    check_close(want, got, 1e-300, rel, what);
 }
 
 /* A reference precision above the working one (long double for the double

@@ -31,14 +31,6 @@ static const double AU = 149597870.7;
 static const double TSI = 1361.0;
 static const double RE = 6378.137;
 
-static void check_int(long want, long got, const char *what)
-{
-    if (want != got) {
-        print_error("%s: want %ld got %ld\n", what, want, got);
-        fail();
-    }
-}
-
 /* Synthetic camera: area 1 m^2, k = 1e19 e-/J, so S = flux * 1e19 e-/s.
  * IFOV = 1e-5 / 1e-2 = 1e-3 rad, so B = radiance * 1e13 e-/s. */
 static oi_camera synth(void)
@@ -234,7 +226,7 @@ static void test_input_flags(void **state)
     check_int(OI_OK, oi_expose(&c, &in, NULL, &out), "status");
     check_int(OI_FLAG_SUN_EXCLUSION | OI_FLAG_PENUMBRA, (long)out.flags, "flags");
     in.flags = 1u << 10;
-    check_int(OI_ERR_TERMS, oi_expose(&c, &in, NULL, &out), "unknown bit");
+    check_int(OI_ERR_FLAGS, oi_expose(&c, &in, NULL, &out), "unknown bit");
     assert_true(all_zero(&out, sizeof out));
 }
 
@@ -348,7 +340,7 @@ static void test_input_errors(void **state)
     in = input(1e-15, -INFINITY);
     expect_status(OI_ERR_NONFINITE, &c, &in, NULL, "background -inf");
     in = input(-1e-15, 0);
-    expect_status(OI_ERR_MAGNITUDE, &c, &in, NULL, "flux negative");
+    expect_status(OI_ERR_INPUT, &c, &in, NULL, "flux negative");
     /* magnitude -30 is 1361 * 10^(0.4 * 3.26) = 2.741e4 W/m^2 */
     in = input(2.8e4, 0);
     expect_status(OI_ERR_MAGNITUDE, &c, &in, NULL, "flux brighter than OI_MAG_MIN");
@@ -359,20 +351,31 @@ static void test_input_errors(void **state)
         check_int(OI_FLAG_SATURATED, (long)out.flags, "bright flags");
     }
     in = input(1e-15, -1);
-    expect_status(OI_ERR_MAGNITUDE, &c, &in, NULL, "background negative");
+    expect_status(OI_ERR_INPUT, &c, &in, NULL, "background negative");
     in = input(1e-15, 2e8);
-    expect_status(OI_ERR_MAGNITUDE, &c, &in, NULL, "background too bright");
+    expect_status(OI_ERR_INPUT, &c, &in, NULL, "background too bright");
     in = input(1e-15, 0);
     goal.fill = (oi_real)1.5;
     goal.snr_min = 0;
-    expect_status(OI_ERR_CAMERA, &c, &in, &goal, "goal fill 1.5");
+    expect_status(OI_ERR_INPUT, &c, &in, &goal, "goal fill 1.5");
     goal.fill = (oi_real)-0.5;
-    expect_status(OI_ERR_CAMERA, &c, &in, &goal, "goal fill negative");
+    expect_status(OI_ERR_INPUT, &c, &in, &goal, "goal fill negative");
     goal.fill = (oi_real)NAN;
-    expect_status(OI_ERR_CAMERA, &c, &in, &goal, "goal fill NaN");
+    expect_status(OI_ERR_INPUT, &c, &in, &goal, "goal fill NaN");
     goal.fill = 0;
     goal.snr_min = -1;
-    expect_status(OI_ERR_CAMERA, &c, &in, &goal, "goal snr negative");
+    expect_status(OI_ERR_INPUT, &c, &in, &goal, "goal snr negative");
+    goal.snr_min = (oi_real)2e6;
+    expect_status(OI_ERR_INPUT, &c, &in, &goal, "goal snr above 1e6");
+    /* the goal is checked before the photometry, the flags last */
+    in = input(-1e-15, 0);
+    in.flags = 1u << 12;
+    expect_status(OI_ERR_INPUT, &c, &in, &goal, "bad goal and bad flux");
+    goal.snr_min = 0;
+    expect_status(OI_ERR_INPUT, &c, &in, &goal, "negative flux before unknown flags");
+    in = input(1e-15, 0);
+    in.flags = 1u << 12;
+    expect_status(OI_ERR_FLAGS, &c, &in, &goal, "unknown flag bit");
 }
 
 /* ---------------------------------------------------------------- built-ins */
@@ -444,25 +447,54 @@ static void test_flag_names(void **state)
 }
 #endif /* OI_NO_EXPOSURE */
 
+/* Every status: its number (fixed forever), its name (scripts match on it). */
 static void test_status_names(void **state)
 {
+    static const struct {
+        int code, number;
+        const char *name;
+    } all[] = {
+        {OI_OK, 0, "OK"},
+        {OI_WARN_TABLE_RANGE, 1, "WARN_TABLE_RANGE"},
+        {OI_ERR_NULL, -1, "ERR_NULL"},
+        {OI_ERR_NONFINITE, -2, "ERR_NONFINITE"},
+        {OI_ERR_ZERO_VECTOR, -3, "ERR_ZERO_VECTOR"},
+        {OI_ERR_BELOW_SURFACE, -4, "ERR_BELOW_SURFACE"},
+        {OI_ERR_OBSERVER_AT_TARGET, -5, "ERR_OBSERVER_AT_TARGET"},
+        {OI_ERR_ALBEDO, -6, "ERR_ALBEDO"},
+        {OI_ERR_RADIUS, -7, "ERR_RADIUS"},
+        {OI_ERR_MODEL, -8, "ERR_MODEL"},
+        {OI_ERR_CAMERA, -9, "ERR_CAMERA"},
+        {OI_ERR_MAGNITUDE, -10, "ERR_MAGNITUDE"},
+        {OI_ERR_TERMS, -11, "ERR_TERMS"},
+        {OI_ERR_GEOMETRY, -12, "ERR_GEOMETRY"},
+        {OI_ERR_INPUT, -13, "ERR_INPUT"},
+        {OI_ERR_FLAGS, -14, "ERR_FLAGS"},
+    };
+    size_t i, n = sizeof all / sizeof all[0];
+    int code, named = 0;
     (void)state;
-    assert_string_equal(oi_status_name(OI_OK), "OK");
-    assert_string_equal(oi_status_name(OI_WARN_TABLE_RANGE), "WARN_TABLE_RANGE");
-    assert_string_equal(oi_status_name(OI_ERR_NULL), "ERR_NULL");
-    assert_string_equal(oi_status_name(OI_ERR_NONFINITE), "ERR_NONFINITE");
-    assert_string_equal(oi_status_name(OI_ERR_ZERO_VECTOR), "ERR_ZERO_VECTOR");
-    assert_string_equal(oi_status_name(OI_ERR_BELOW_SURFACE), "ERR_BELOW_SURFACE");
-    assert_string_equal(oi_status_name(OI_ERR_OBSERVER_AT_TARGET), "ERR_OBSERVER_AT_TARGET");
-    assert_string_equal(oi_status_name(OI_ERR_ALBEDO), "ERR_ALBEDO");
-    assert_string_equal(oi_status_name(OI_ERR_RADIUS), "ERR_RADIUS");
-    assert_string_equal(oi_status_name(OI_ERR_MODEL), "ERR_MODEL");
-    assert_string_equal(oi_status_name(OI_ERR_CAMERA), "ERR_CAMERA");
-    assert_string_equal(oi_status_name(OI_ERR_MAGNITUDE), "ERR_MAGNITUDE");
-    assert_string_equal(oi_status_name(OI_ERR_TERMS), "ERR_TERMS");
-    assert_string_equal(oi_status_name(OI_ERR_GEOMETRY), "ERR_GEOMETRY");
+    for (i = 0; i < n; i++) {
+        check_int(all[i].number, all[i].code, all[i].name);
+        assert_string_equal(oi_status_name(all[i].code), all[i].name);
+    }
+    /* no other code in a wide range has a name: the table above is whole */
+    for (code = -1000; code <= 1000; code++) {
+        if (strcmp(oi_status_name(code), "UNKNOWN") != 0) named++;
+    }
+    check_int((long)n, named, "named statuses");
     assert_string_equal(oi_status_name(42), "UNKNOWN");
     assert_string_equal(oi_status_name(-999), "UNKNOWN");
+}
+
+/* The archive's version is the header's. */
+static void test_version(void **state)
+{
+    (void)state;
+    check_int(OI_VERSION, oi_version(), "oi_version() against OI_VERSION");
+    check_int(OI_VERSION_MAJOR * 10000L + OI_VERSION_MINOR * 100L + OI_VERSION_PATCH, OI_VERSION,
+              "OI_VERSION encoding");
+    assert_true(OI_VERSION_MINOR < 100 && OI_VERSION_PATCH < 100);
 }
 
 /* ---------------------------------------------------------------- scene */
@@ -743,7 +775,10 @@ static void test_scene_errors(void **state)
     il.e_earth = (oi_real)INFINITY;
     expect_scene_status(OI_ERR_NONFINITE, &c, &base, &il, NULL, "e_earth inf");
     il.e_earth = -1;
-    expect_scene_status(OI_ERR_MAGNITUDE, &c, &base, &il, NULL, "e_earth negative");
+    expect_scene_status(OI_ERR_INPUT, &c, &base, &il, NULL, "e_earth negative");
+    il = lit_illum(1e-15);
+    il.flux_obs = -1;
+    expect_scene_status(OI_ERR_INPUT, &c, &base, &il, NULL, "flux_obs negative");
     il = lit_illum(1e-15);
     memset(&m, 0, sizeof m);
     m.tsi_w_m2 = -1;
@@ -1272,6 +1307,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_status_names),
+        cmocka_unit_test(test_version),
 #ifndef OI_NO_EXPOSURE
         cmocka_unit_test(test_choice_best_snr),
         cmocka_unit_test(test_choice_custom_goal),

@@ -311,8 +311,16 @@ static void test_target_in_umbra(void **state)
     assert_true(oi_illuminate(&s, NULL, &out) >= 0);
     assert_int_equal(out.shadow.region, OI_SHADOW_UMBRA);
     assert_true(out.e_sun == 0);
+#ifdef OI_NO_EARTH_TABLE
+    /* the Lambert far field (R/r)^2 p(theta) at theta = pi to rounding: p of
+     * the rounding error of pi, ~(1e-16)^3 in double, far below anything
+     * measurable (lit, this scene's e_earth is ~400 W/m^2, flux ~1e-8) */
+    assert_true(out.e_earth >= 0 && out.e_earth < 1e-12);
+    assert_true(out.flux_obs >= 0 && out.flux_obs < 1e-25);
+#else
     assert_true(out.e_earth == 0); /* theta = pi: no lit Earth visible from 622 km */
     assert_true(out.flux_obs == 0);
+#endif
     check_rel(99.0, out.mag_v, 0, "dark magnitude");
 }
 

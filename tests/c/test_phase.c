@@ -16,7 +16,7 @@
 #include "ref_phase.h"
 
 #ifdef OI_SINGLE_PRECISION
-#define PHASE_REL 1e-5     /* goal, issue 2 */
+#define PHASE_REL 1e-5     /* the accuracy goal of oi_lambert_phase */
 #define ANGLE_ABS 4e-7     /* a few float epsilon */
 #define EPS ((double)FLT_EPSILON)
 #else

@@ -295,7 +295,7 @@ static void test_sun_vs_mpmath(void **state)
     print_message("  rows within 1 km of the surface: worst |err| %.3g (fraction, fraction_ld)\n",
                   low_abs);
 #ifndef OI_SINGLE_PRECISION
-    assert_true(worst_abs <= 1e-9); /* issue 2 goal */
+    assert_true(worst_abs <= 1e-9); /* the accuracy goal of oi_cap_overlap */
     /* |p|^2 - R^2 in compensated arithmetic: low altitudes are not
      * limited by the rounding of |p| (that alone would give ~4e-11 at 1 m) */
     assert_true(low_abs <= 1e-12);

@@ -1,0 +1,326 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * expose.c: oi_expose, the choice of exposure time and gain for a point-like
+ * target of known flux, and the flag names. The contract is in
+ * include/orbillum.h; the rule and the proof that the short search below is
+ * the full search's choice are written out in docs/camera.md.
+ */
+#include "oi_internal.h"
+
+#ifndef OI_NO_EXPOSURE
+
+/* Largest accepted background radiance (W/m^2/sr): five times the mean
+ * radiance of the solar disc, TSI / (pi (R_sun / 1 AU)^2) = 2.0e7. */
+#define IN_RADIANCE_MAX OI_R(1e8)
+
+/* Defaults of the goal. */
+#define GOAL_FILL_DEFAULT    OI_R(0.5)
+#define GOAL_SNR_DEFAULT     OI_R(5.0)
+#define GOAL_SNR_MAX         OI_R(1e6)
+
+/* Flags that describe the geometry (kept from the input); the others are
+ * computed here. */
+#define FLAGS_GEOMETRIC (OI_FLAG_SUN_EXCLUSION | OI_FLAG_EARTH_IN_FOV | OI_FLAG_ECLIPSED | \
+                         OI_FLAG_PENUMBRA | OI_FLAG_OCCULTED | OI_FLAG_RESOLVED)
+#define FLAGS_ALL (FLAGS_GEOMETRIC | OI_FLAG_TOO_FAINT | OI_FLAG_SATURATED)
+
+/* Brightest accepted target flux (W/m^2): magnitude OI_MAG_MIN at the
+ * nominal TSI, OI_TSI_W_M2 * 10^(-0.4 (OI_MAG_MIN - OI_SUN_MAG_V)) =
+ * 1361 * 10^1.304 = 27406.787040627104 W/m^2 exactly. The literals are
+ * pow of the exponent rounded to oi_real, times the TSI, as
+ * oi_flux_from_magnitude(OI_MAG_MIN) computes it: in double
+ * 0x1.ac3b25edfa68fp+14 (13 ulp above the exact value: the exponent
+ * -0.4 * -3.26 rounds to 1.3040000000000007); in single precision
+ * 0x1.ac3b28p+14 (powf(10, 1.304f) * 1361). tests/c/test_exposure.c checks
+ * both against pow. */
+#ifdef OI_SINGLE_PRECISION
+#define FLUX_MAX_W_M2 OI_R(27406.7890625)
+#else
+#define FLUX_MAX_W_M2 OI_R(27406.78704062715)
+#endif
+
+/* The search (docs/camera.md, "Cost of the search") takes the SNR at the
+ * longest time j that reaches the goal as the best of its gain when
+ * times_s[j] >= times_s[j-1] * TIME_SPACING: the computed SNR at j is then
+ * above the computed SNR at every shorter time (proof in docs/camera.md:
+ * SNR / sqrt(t) does not decrease with t, and each computed SNR is within
+ * 4.5 u of the exact one, u the unit roundoff), provided that no product is
+ * subnormal: the shortest time is at least TIME_FAST_MIN_S and the signal at
+ * the shortest time at least SIGNAL_FAST_MIN_E (the smallest SNR is then
+ * above 1e-35, as no pixel can hold more than 1e34 electrons). Otherwise
+ * the times that reach the goal are scanned. TIME_SPACING is 1 + 256 u,
+ * exactly representable: 1 + 2^-16 (float), 1 + 2^-45 (double). */
+#ifdef OI_SINGLE_PRECISION
+#define TIME_SPACING OI_R(1.0000152587890625)
+#else
+#define TIME_SPACING OI_R(1.0000000000000284)
+#endif
+#define TIME_FAST_MIN_S   OI_R(1e-30)
+#define SIGNAL_FAST_MIN_E OI_R(1e-18)
+
+/* Rates of photo-electrons in the brightest pixel (e-/s) and the goal. */
+typedef struct {
+    oi_real rate_s;     /* target */
+    oi_real rate_b;     /* background and dark current */
+    oi_real goal_fill;  /* goal fill, defaults filled in */
+    oi_real snr_min;    /* goal SNR, defaults filled in */
+} expose_rates;
+
+/* Goal with defaults filled in; 0 when a field is out of range. */
+static int goal_resolve(const oi_expose_goal *goal, oi_real *fill, oi_real *snr_min)
+{
+    *fill = GOAL_FILL_DEFAULT;
+    *snr_min = GOAL_SNR_DEFAULT;
+    if (goal == NULL) return 1;
+    if (goal->fill != 0) {
+        if (!oi__in_open_closed(goal->fill, 0, OI_R(1.0))) return 0;
+        *fill = goal->fill;
+    }
+    if (goal->snr_min != 0) {
+        if (!oi__in_open_closed(goal->snr_min, 0, GOAL_SNR_MAX)) return 0;
+        *snr_min = goal->snr_min;
+    }
+    return 1;
+}
+
+/* The goal and the photometric input checked, in this order: goal
+ * (OI_ERR_INPUT), non-finite values (OI_ERR_NONFINITE), a negative flux
+ * (OI_ERR_INPUT), a flux brighter than OI_MAG_MIN (OI_ERR_MAGNITUDE), the
+ * background (OI_ERR_INPUT), unknown flag bits (OI_ERR_FLAGS). */
+static int check_input(const oi_expose_in *in, const oi_expose_goal *goal, expose_rates *r)
+{
+    if (!goal_resolve(goal, &r->goal_fill, &r->snr_min)) return OI_ERR_INPUT;
+    if (!OI_ISFINITE(in->flux_w_m2) || !OI_ISFINITE(in->background_w_m2_sr)) {
+        return OI_ERR_NONFINITE;
+    }
+    if (!(in->flux_w_m2 >= 0)) return OI_ERR_INPUT;
+    if (!(in->flux_w_m2 <= FLUX_MAX_W_M2)) return OI_ERR_MAGNITUDE;
+    if (!oi__in_closed(in->background_w_m2_sr, 0, IN_RADIANCE_MAX)) return OI_ERR_INPUT;
+    if ((in->flags & ~(unsigned)FLAGS_ALL) != 0u) return OI_ERR_FLAGS;
+    return OI_OK;
+}
+
+/* Rates of the brightest pixel (oi_expose, Note 1). */
+static void pixel_rates(const oi_camera *camera, const oi_expose_in *in, expose_rates *r)
+{
+    oi_real area, k, ifov;
+    area = OI_PI_R * OI_R(0.25) * camera->aperture_m * camera->aperture_m;
+    k = camera->transmission * camera->band_fraction * camera->quantum_efficiency /
+        camera->photon_energy_j;
+    ifov = camera->pixel_pitch_m / camera->focal_length_m;
+    r->rate_s = in->flux_w_m2 * (area * k * camera->psf_peak_fraction); /* no underflow of flux * area */
+    r->rate_b = in->background_w_m2_sr * area * (ifov * ifov) * k + camera->dark_current_e_s;
+}
+
+/* Signal-to-noise ratio of signal s over background b (electrons) with
+ * read noise rn: s / sqrt(s + b + rn^2); 0 when there is no noise at all. */
+static oi_real snr_of(oi_real s, oi_real b, oi_real rn)
+{
+    oi_real var = s + b + rn * rn;
+    return var > 0 ? s / OI_SQRT(var) : OI_R(0.0);
+}
+
+/* Fill of time t at saturation sat, by the same operations as evaluate()
+ * (separate statements: nothing can be contracted differently). */
+static oi_real fill_of(const expose_rates *r, oi_real t, oi_real sat)
+{
+    oi_real s = r->rate_s * t;
+    oi_real b = r->rate_b * t;
+    oi_real peak = s + b;
+    return peak / sat;
+}
+
+/* Does time t at saturation sat reach the goal (fill < 1 and <= goal)? */
+static int reaches_goal(const expose_rates *r, oi_real t, oi_real sat)
+{
+    oi_real f = fill_of(r, t, sat);
+    return f < OI_R(1.0) && f <= r->goal_fill;
+}
+
+/* SNR of time t with read noise rn, by the same operations as evaluate(). */
+static oi_real snr_at(const expose_rates *r, oi_real t, oi_real rn)
+{
+    oi_real s = r->rate_s * t;
+    oi_real b = r->rate_b * t;
+    return snr_of(s, b, rn);
+}
+
+/* Fill *out for time index ti and gain index gi. */
+static void evaluate(const oi_camera *c, const expose_rates *r, int ti, int gi, oi_exposure *out)
+{
+    oi_real t = c->times_s[ti];
+    out->exposure_s = t;
+    out->gain = c->gains[gi];
+    out->time_index = ti;
+    out->gain_index = gi;
+    out->signal_e = r->rate_s * t;
+    out->background_e = r->rate_b * t;
+    out->peak_e = out->signal_e + out->background_e;
+    out->saturation_e = c->full_well_e / c->gains[gi];
+    out->fill = out->peak_e / out->saturation_e;
+    out->snr = snr_of(out->signal_e, out->background_e, c->read_noise_e[gi]);
+}
+
+/* Step 1: k_0, the first time at gain 0 that does not reach the goal
+ * (bisection: the fill does not decrease with time). */
+static int first_time_over_goal(const oi_camera *camera, const expose_rates *r)
+{
+    const oi_real sat = camera->full_well_e / camera->gains[0];
+    int lo = 0, hi = camera->n_times, mid;
+    while (lo < hi) {
+        mid = (int)((unsigned)(lo + hi) >> 1); /* both >= 0 */
+        if (reaches_goal(r, camera->times_s[mid], sat)) {
+            lo = mid + 1;
+        } else {
+            hi = mid;
+        }
+    }
+    return lo;
+}
+
+/* Step 5: the time of best SNR among times [0, kk) at read noise rn: the
+ * longest when it is spaced from the one before, else a scan. */
+static int best_time(const oi_camera *camera, const expose_rates *r, int kk, int fast, oi_real rn,
+                     oi_real *snr_out)
+{
+    const oi_real *times = camera->times_s;
+    int j = kk - 1, ti;
+    oi_real snr, x;
+    if (j == 0 || (fast && times[j] >= times[j - 1] * TIME_SPACING)) {
+        *snr_out = snr_at(r, times[j], rn);
+        return j;
+    }
+    j = 0;
+    snr = snr_at(r, times[0], rn);
+    for (ti = 1; ti < kk; ti++) {
+        x = snr_at(r, times[ti], rn);
+        if (x > snr) {
+            snr = x;
+            j = ti;
+        }
+    }
+    *snr_out = snr;
+    return j;
+}
+
+/* Steps 3-5 (kk = k_0 > 0): the best (time, gain) over the gains. */
+static void best_setting(const oi_camera *camera, const expose_rates *r, int kk, int *best_t,
+                         int *best_g)
+{
+    const oi_real *times = camera->times_s;
+    const int fast = r->rate_s * times[0] >= SIGNAL_FAST_MIN_E && times[0] >= TIME_FAST_MIN_S;
+    oi_real best_snr = 0, snr, rn, sat;
+    int gi, j;
+    *best_t = 0;
+    *best_g = 0;
+    for (gi = 0; gi < camera->n_gains && r->rate_s > 0; gi++) { /* 3: S = 0 keeps (0, 0) */
+        rn = camera->read_noise_e[gi];
+        if (gi > 0) {
+            if (!(rn < camera->read_noise_e[*best_g])) continue; /* 4 */
+            sat = camera->full_well_e / camera->gains[gi];
+            while (kk > 0 && !reaches_goal(r, times[kk - 1], sat)) kk--;
+            if (kk == 0) break;
+        }
+        j = best_time(camera, r, kk, fast, rn, &snr); /* 5 */
+        if (gi == 0 || snr > best_snr) {
+            best_snr = snr;
+            *best_t = j;
+            *best_g = gi;
+        }
+    }
+}
+
+/*
+ * oi__expose_valid: the choice of oi_expose for a valid camera; out already
+ * zeroed, and left so on error.
+ *
+ * The rule (include/orbillum.h, oi_expose Note 2) is a search over every
+ * (time, gain) pair, gains ascending outside and times ascending inside,
+ * with strict comparisons so that the first of equals wins. The same choice
+ * is made here from a few pairs (docs/camera.md, "Cost of the search")
+ * because the computed values are monotone (IEEE operations are correctly
+ * rounded, hence monotone in each operand):
+ *   1. fill = ((S t) + (B t)) / (full_well / g) does not decrease with t nor
+ *      with g, so the settings that reach the goal (fill < 1 and
+ *      fill <= goal) at gain g are the times [0, k_g), k_0 >= k_1 >= ...:
+ *      k_0 by bisection, the next ones by stepping down.
+ *   2. k_0 = 0: nothing reaches the goal, and the lowest fill is that of
+ *      (time 0, gain 0), the first setting: it is the choice, with
+ *      OI_FLAG_SATURATED when its fill is not below 1.
+ *   3. S = 0: every SNR is 0, the first setting (0, 0) is the choice.
+ *   4. The SNR does not increase with the read noise. A gain whose read
+ *      noise is not below that of the best gain so far cannot beat it (its
+ *      times are a subset of the best gain's, each with an SNR no higher):
+ *      it is skipped.
+ *   5. The best of gain g is time k_g - 1 when that time is spaced from the
+ *      one before (TIME_SPACING); otherwise times [0, k_g) are scanned.
+ */
+int oi__expose_valid(const oi_camera *camera, const oi_expose_in *in,
+                     const oi_expose_goal *goal, oi_exposure *out)
+{
+    expose_rates r;
+    int kk, best_t, best_g, st;
+    unsigned flags;
+
+    st = check_input(in, goal, &r);
+    if (st != OI_OK) return st;
+    pixel_rates(camera, in, &r);
+    kk = first_time_over_goal(camera, &r); /* 1 */
+    flags = in->flags & (unsigned)FLAGS_GEOMETRIC;
+    if (kk == 0) {
+        /* 2. */
+        evaluate(camera, &r, 0, 0, out);
+        if (!(out->fill < OI_R(1.0))) flags |= OI_FLAG_SATURATED;
+    } else {
+        best_setting(camera, &r, kk, &best_t, &best_g);
+        evaluate(camera, &r, best_t, best_g, out);
+    }
+    if (snr_at(&r, camera->times_s[camera->n_times - 1],
+               camera->read_noise_e[camera->n_gains - 1]) < r.snr_min) {
+        flags |= OI_FLAG_TOO_FAINT;
+    }
+    out->flags = flags;
+    out->sun_angle_rad = 0;
+    return OI_OK;
+}
+
+/* oi_expose: the contract is in include/orbillum.h; the method above
+ * (oi__expose_valid) and in docs/camera.md. */
+int oi_expose(const oi_camera *camera, const oi_expose_in *in,
+              const oi_expose_goal *goal, oi_exposure *out)
+{
+    if (out == NULL) return OI_ERR_NULL;
+    memset(out, 0, sizeof *out);
+    if (camera == NULL || in == NULL) return OI_ERR_NULL;
+    if (!oi__camera_valid(camera)) return OI_ERR_CAMERA;
+    return oi__expose_valid(camera, in, goal, out);
+}
+
+/*
+ * oi_flag_name: name of one exposure flag bit.
+ *
+ * Given:
+ *   flag_bit  unsigned  one OI_FLAG_* bit
+ *
+ * Returned (function value):
+ *             const char *  "sun_exclusion", "earth_in_fov", "eclipsed",
+ *                           "too_faint", "saturated", "penumbra",
+ *                           "occulted", "resolved"; NULL for 0, a combination of bits
+ *                           or an unknown bit.
+ */
+const char *oi_flag_name(unsigned flag_bit)
+{
+    switch (flag_bit) {
+    case OI_FLAG_SUN_EXCLUSION: return "sun_exclusion";
+    case OI_FLAG_EARTH_IN_FOV: return "earth_in_fov";
+    case OI_FLAG_ECLIPSED: return "eclipsed";
+    case OI_FLAG_TOO_FAINT: return "too_faint";
+    case OI_FLAG_SATURATED: return "saturated";
+    case OI_FLAG_PENUMBRA: return "penumbra";
+    case OI_FLAG_OCCULTED: return "occulted";
+    case OI_FLAG_RESOLVED: return "resolved";
+    default: return NULL;
+    }
+}
+
+#endif /* OI_NO_EXPOSURE */

@@ -1,0 +1,216 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * expose_scene.c: oi_expose_scene, the exposure choice from a scene and its
+ * illumination: the geometric flags (Sun exclusion, Earth in the field,
+ * occultation, eclipse), the background where the boresight meets the
+ * Earth, and the resolved target's bound on the brightest pixel; the choice
+ * itself is oi_expose's (src/expose.c). The contract is in
+ * include/orbillum.h; docs/camera.md explains the model.
+ */
+#include "oi_internal.h"
+
+#ifndef OI_NO_EXPOSURE
+
+/* What the steps share: the model's constants, the observer's distance and
+ * the boresight. */
+typedef struct {
+    oi_real re, au, tsi; /* Earth radius (km), AU (km), TSI (W/m^2) */
+    oi_real r_obs;       /* |observer| (km) */
+    oi_real range;       /* |target - observer| (km) */
+    oi_real b[3];        /* boresight target - observer (km) */
+    oi_real bh[3];       /* its unit vector */
+} scene_geom;
+
+/* The model constants oi_expose_scene needs (oi__model_resolve's status);
+ * out of line (OI_NOINLINE) so that its copy of the model is not in the frame
+ * of oi_expose_scene, which is live during the choice as well. */
+static OI_NOINLINE int scene_model(const oi_model *model, oi_real *re, oi_real *au, oi_real *tsi)
+{
+    oi_model m;
+    int st = oi__model_resolve(model, &m);
+    *re = m.earth_radius_km;
+    *au = m.au_km;
+    *tsi = m.tsi_w_m2;
+    return st;
+}
+
+/* The inputs checked in the order of the statuses of the contract, and the
+ * boresight formed. */
+static int check_scene(const oi_camera *camera, const oi_scene *scene, const oi_illum *illum,
+                       const oi_model *model, scene_geom *g)
+{
+    oi_real r_tgt, re, au, tsi; /* locals: g's address does not leave this file */
+    int st;
+    if (!scene->has_observer) return OI_ERR_NULL;
+    if (model == NULL) { /* the default model (src/model.c), without a copy */
+        re = (oi_real)OI_EARTH_RADIUS_KM;
+        au = (oi_real)OI_AU_KM;
+        tsi = (oi_real)OI_TSI_W_M2;
+    } else {
+        st = scene_model(model, &re, &au, &tsi);
+        if (st != OI_OK) return st;
+    }
+    g->re = re;
+    g->au = au;
+    g->tsi = tsi;
+    if (!oi__finite3(scene->sun_km) || !oi__finite3(scene->target_km) ||
+        !oi__finite3(scene->observer_km)) {
+        return OI_ERR_NONFINITE;
+    }
+    if (!(scene->earth_albedo >= 0 && scene->earth_albedo <= OI_R(1.0)) ||
+        !(scene->target_albedo >= 0 && scene->target_albedo <= OI_R(1.0))) {
+        return OI_ERR_ALBEDO;
+    }
+    if (!OI_ISFINITE(illum->e_sun) || !OI_ISFINITE(illum->e_earth) ||
+        !OI_ISFINITE(illum->e_moon) || !OI_ISFINITE(illum->flux_obs)) {
+        return OI_ERR_NONFINITE;
+    }
+    if (illum->e_sun < 0 || illum->e_earth < 0 || illum->e_moon < 0 || illum->flux_obs < 0) {
+        return OI_ERR_INPUT;
+    }
+    if (!oi__camera_valid(camera)) return OI_ERR_CAMERA;
+    g->r_obs = oi__norm(scene->observer_km);
+    r_tgt = oi__norm(scene->target_km);
+    if (g->r_obs == 0 ||
+        (scene->sun_km[0] == 0 && scene->sun_km[1] == 0 && scene->sun_km[2] == 0)) {
+        return OI_ERR_ZERO_VECTOR;
+    }
+    if (!(g->r_obs > g->re) || !(r_tgt > g->re)) return OI_ERR_BELOW_SURFACE;
+    oi__sub(scene->target_km, scene->observer_km, g->b);
+    g->range = oi__unit(g->b, g->bh);
+    if (g->range == 0) return OI_ERR_OBSERVER_AT_TARGET;
+    return OI_OK;
+}
+
+/* Sun to boresight (Note 1): the angle is an output, so it is the atan2
+ * form, by the same operations as oi_angle(sun - observer, b) (bh is its
+ * unit vector of b); 0, as there, when a difference overflows or the
+ * observer is at the Sun. */
+static oi_real sun_angle_of(const oi_scene *scene, const scene_geom *g)
+{
+    oi_real u[3], d; /* sun - observer, its unit vector, then u x bh */
+    oi__sub(scene->sun_km, scene->observer_km, u);
+    if (oi__finite3(g->b) && oi__finite3(u) && oi__unit(u, u) > 0) {
+        d = oi__dot(u, g->bh);
+        oi__cross(u, g->bh, u);
+        return OI_ATAN2(oi__norm(u), d);
+    }
+    return 0;
+}
+
+/* Earth's disc against the field (Note 2): the flag is the decision
+ * gamma - rho < h, gamma the angle from the boresight to the Earth's centre,
+ * rho = asin(R/r) the disc's radius, h = fov/2. The sine and cosine of
+ * gamma - rho come from unit vectors (cos and sin of gamma as dot and cross
+ * products, sin rho = R/r) and the difference formulas, so one atan2 gives
+ * gamma - rho where it matters, instead of two angles (docs/camera.md,
+ * "Cost of the search"): gamma < rho (sine negative) is on the disc,
+ * whatever h; gamma - rho >= pi/2 (cosine not positive) is at least
+ * pi/2 >= h away; only in between is the angle computed and compared with h. */
+static int earth_in_fov(const oi_scene *scene, const scene_geom *g, oi_real fov_rad)
+{
+    const oi_real one = OI_R(1.0);
+    oi_real sin_rho, cos_rho, cos_g, sin_g, sin_gr, cos_gr;
+    oi_real u[3]; /* unit vector of the observer, then u x bh */
+    sin_rho = g->re / g->r_obs;
+    cos_rho = OI_SQRT((one - sin_rho) * (one + sin_rho));
+    u[0] = scene->observer_km[0] / g->r_obs;
+    u[1] = scene->observer_km[1] / g->r_obs;
+    u[2] = scene->observer_km[2] / g->r_obs;
+    cos_g = -oi__dot(u, g->bh);
+    oi__cross(u, g->bh, u);
+    sin_g = OI_SQRT(oi__dot(u, u)); /* unit vectors: no overflow */
+    sin_gr = cos_rho * sin_g - sin_rho * cos_g; /* sin(gamma - rho) */
+    cos_gr = cos_rho * cos_g + sin_rho * sin_g; /* cos(gamma - rho) */
+    /* (b overflowed, positions near the largest oi_real: gamma was taken as
+     * 0, as oi_angle of a non-finite vector would: flag) */
+    return !oi__finite3(g->b) || sin_gr < 0 ||
+           (cos_gr > 0 && OI_ATAN2(sin_gr, cos_gr) < OI_R(0.5) * fov_rad);
+}
+
+/* Where the boresight meets the Earth (Notes 3 and 4): OI_FLAG_OCCULTED when
+ * that is before the target, and the Lambertian Earth's radiance there as
+ * the background. The ray o + s bh against the sphere |x| = R:
+ * s^2 + 2 ob s + c = 0 hits when ob < 0 and ob^2 >= c; the near root
+ * c / (-ob + sqrt(ob^2 - c)) avoids cancellation, and
+ * ob^2 - c = (-ob - sc)(-ob + sc). */
+static void ground_background(const oi_scene *scene, const scene_geom *g, oi_expose_in *in)
+{
+    oi_real c, sc, ob, s_hit, cos_i, au_d, e0;
+    oi_real hit[3], sun_hit[3]; /* then their unit vectors, in place */
+    c = (g->r_obs - g->re) * (g->r_obs + g->re); /* |o|^2 - R^2 > 0 */
+    sc = OI_SQRT(c);
+    ob = oi__dot(scene->observer_km, g->bh);
+    if (!(ob < 0 && -ob >= sc)) return;
+    s_hit = c / (-ob + OI_SQRT((-ob - sc) * (-ob + sc)));
+    hit[0] = scene->observer_km[0] + s_hit * g->bh[0];
+    hit[1] = scene->observer_km[1] + s_hit * g->bh[1];
+    hit[2] = scene->observer_km[2] + s_hit * g->bh[2];
+    if (s_hit < g->range) in->flags |= OI_FLAG_OCCULTED;
+    oi__sub(scene->sun_km, hit, sun_hit);
+    (void)oi__unit(hit, hit);
+    (void)oi__unit(sun_hit, sun_hit);
+    cos_i = oi__dot(hit, sun_hit);
+    if (cos_i > 0) {
+        au_d = g->au / oi__norm(scene->sun_km);
+        e0 = g->tsi * au_d * au_d;
+        in->background_w_m2_sr = scene->earth_albedo * e0 * cos_i / OI_PI_R;
+    }
+}
+
+/* Resolved target (Note 5): the brightest pixel sees at most the radiance
+ * albedo * sum(E) / pi over its solid angle. */
+static void limit_resolved(const oi_camera *camera, const oi_scene *scene, const oi_illum *illum,
+                           oi_expose_in *in)
+{
+    oi_real ifov = camera->pixel_pitch_m / camera->focal_length_m;
+    oi_real cap = scene->target_albedo * (illum->e_sun + illum->e_earth + illum->e_moon) /
+                  OI_PI_R * (ifov * ifov) / camera->psf_peak_fraction;
+    if (in->flux_w_m2 > cap) {
+        in->flux_w_m2 = cap;
+        in->flags |= OI_FLAG_RESOLVED;
+    }
+}
+
+/* Eclipse flags of the target's shadow region (Note 6). */
+static unsigned region_flags(int region)
+{
+    if (region == OI_SHADOW_UMBRA) return OI_FLAG_ECLIPSED;
+    if (region == OI_SHADOW_PENUMBRA || region == OI_SHADOW_ANNULAR) return OI_FLAG_PENUMBRA;
+    return 0u;
+}
+
+/* oi_expose_scene: the contract is in include/orbillum.h. */
+int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
+                    const oi_illum *illum, const oi_model *model,
+                    const oi_expose_goal *goal, oi_exposure *out)
+{
+    oi_expose_in in;
+    scene_geom g;
+    oi_real sun_angle;
+    int st;
+
+    if (out == NULL) return OI_ERR_NULL;
+    memset(out, 0, sizeof *out);
+    if (camera == NULL || scene == NULL || illum == NULL) return OI_ERR_NULL;
+    st = check_scene(camera, scene, illum, model, &g);
+    if (st != OI_OK) return st;
+
+    in.flux_w_m2 = illum->flux_obs;
+    in.background_w_m2_sr = 0;
+    in.flags = 0;
+    sun_angle = sun_angle_of(scene, &g);
+    if (sun_angle < camera->sun_exclusion_rad) in.flags |= OI_FLAG_SUN_EXCLUSION;
+    if (earth_in_fov(scene, &g, camera->fov_rad)) in.flags |= OI_FLAG_EARTH_IN_FOV;
+    ground_background(scene, &g, &in);
+    if (in.flags & OI_FLAG_OCCULTED) in.flux_w_m2 = 0;
+    limit_resolved(camera, scene, illum, &in);
+    in.flags |= region_flags(illum->shadow.region);
+
+    st = oi__expose_valid(camera, &in, goal, out);
+    if (st < 0) return st;
+    out->sun_angle_rad = sun_angle;
+    return st;
+}
+
+#endif /* OI_NO_EXPOSURE */
