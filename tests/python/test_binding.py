@@ -172,7 +172,7 @@ def test_error_statuses_and_zeroed_outputs():
 
 def test_closed_forms_through_the_binding():
     # far from the Earth with only the Sun term, observer on the Sun side:
-    # F = E alb a^2 p(0) / d^2 with p(0) = 2/3 (Lambert sphere, PHYSICS.md 3)
+    # F = E alb a^2 p(0) / d^2 with p(0) = 2/3 (Lambert sphere, docs/physics.md section 3)
     au = 149597870.7
     sun = np.array([au, 0, 0])
     tgt = np.array([0.0, 4.0e5, 0.0])
