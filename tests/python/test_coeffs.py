@@ -3,15 +3,16 @@
 
 The literals are found by name in src/*.c and src/*.h (whatever file they sit
 in), in the precision block (#ifdef OI_SINGLE_PRECISION ... #else) they
-belong to, read as the C compiler reads them (decimal to the precision,
-rounded once; a literal without the f suffix in a float block rounded to
-double first), and compared to the last bit with the generators of
+belong to, read as the C compiler reads them (decimal to the literal's
+type, rounded once: float with the f suffix or OI_R in the float build,
+double otherwise), and compared to the last bit with the generators of
 tools/coeffs/ (mpmath, exact rationals):
   - sin/cos: Cody-Waite parts of pi/2 and the Chebyshev fits (tools/coeffs/sincos.py);
   - atan2: the atan(k/16) table in two parts and pi/2 in two parts (tools/coeffs/atan2.py);
   - Gauss-Legendre nodes and weights (tools/coeffs/quadrature.py), themselves
     checked against numpy.polynomial.legendre.leggauss;
-  - the Neckel & Labs (1994) limb-darkening table (tools/coeffs/limb_darkening.py).
+  - the Neckel & Labs (1994) limb-darkening table (tools/coeffs/limb_darkening.py);
+  - pi in two parts, 2/(3 pi), the full Moon over the Sun (tools/coeffs/derived.py).
 A literal edited by hand, or a name that disappears, fails here.
 """
 import glob
@@ -27,7 +28,7 @@ import pytest
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 sys.path.insert(0, ROOT)
 
-from tools.coeffs import atan2, limb_darkening, quadrature, sincos  # noqa: E402
+from tools.coeffs import atan2, derived, limb_darkening, quadrature, sincos  # noqa: E402
 from tools.coeffs.common import round_to  # noqa: E402
 
 PRECISIONS = (False, True)  # single?
@@ -37,11 +38,11 @@ _LITERAL = re.compile(r"OI_R\(\s*(" + _NUMBER + r")\s*\)|(" + _NUMBER + r")")
 
 
 def _c_value(text, wrapped, single):
-    """The value the compiler stores for one literal."""
-    suffixed = wrapped or text[-1] in "fF"
-    if single and not suffixed:
-        return round_to(round_to(text, False), True)  # a double literal converted
-    return round_to(text, single)
+    """(the value the compiler stores for one literal, whether its type is float):
+    a literal with the f suffix, or OI_R(...) in the float build, is a float;
+    any other a double (and stays one in the expression that uses it)."""
+    is_float = text[-1] in "fF" or (wrapped and single)
+    return round_to(text, is_float), is_float
 
 
 def _values(expr, single):
@@ -103,14 +104,16 @@ _SRC = [(os.path.relpath(p, ROOT), entry)
 
 
 def src_literal(name, single):
-    """The values of the one definition of name in src/ for the precision."""
+    """[(value, is_float)] of the definition of name in src/ for the precision
+    (several files may define it, with the same values)."""
     found = [(f, text) for f, (n, text, adm) in _SRC if n == name and single in adm]
     prec = "float" if single else "double"
     assert found, f"{name} ({prec}): no definition in src/*.c, src/*.h"
-    assert len(found) == 1, f"{name} ({prec}): defined {len(found)} times: {[f for f, _ in found]}"
-    vals = _values(found[0][1], single)
-    assert vals, f"{name} ({prec}) in {found[0][0]}: no numeric literal in {found[0][1]!r}"
-    return found[0][0], vals
+    values = [(f, _values(text, single)) for f, text in found]
+    for f, vals in values:
+        assert vals, f"{name} ({prec}) in {f}: no numeric literal"
+        assert vals == values[0][1], f"{name} ({prec}): {f} and {values[0][0]} differ"
+    return ", ".join(f for f, _ in values), values[0][1]
 
 
 def _flatten(v):
@@ -123,9 +126,10 @@ def _check_against(generated, single):
     prec = "float" if single else "double"
     for name, value in generated.items():
         where, got = src_literal(name, single)
-        want = [round_to(v, single) for v in _flatten(value)]
+        want = _flatten(value)
         assert len(got) == len(want), f"{name} ({prec}, {where}): {len(got)} values, want {len(want)}"
-        for k, (g, w) in enumerate(zip(got, want)):
+        for k, ((g, is_float), w) in enumerate(zip(got, want)):
+            w = round_to(w, is_float)
             assert g == w, (f"{name}[{k}] ({prec}, {where}): src {float(g).hex()} = {float(g)!r}, "
                             f"generator {float(w).hex()} = {float(w)!r}")
 
@@ -148,6 +152,26 @@ def test_gauss_legendre_literals_are_the_generators(single):
 @pytest.mark.parametrize("single", PRECISIONS, ids=["double", "float"])
 def test_limb_darkening_literals_are_the_generators(single):
     _check_against(limb_darkening.constants(single), single)
+
+
+@pytest.mark.parametrize("single", PRECISIONS, ids=["double", "float"])
+def test_derived_literals_are_the_generators(single):
+    c = derived.constants(single)
+    del c["MOON_FULL_OVER_SUN"]  # below
+    _check_against(c, single)
+
+
+@pytest.mark.parametrize("single", [
+    pytest.param(False, id="double", marks=pytest.mark.xfail(strict=True, reason=(
+        "src/illuminate.c holds 2.48885731828238908997e-6, 7.2e-16 (5 ulp) below "
+        "10^(-0.4 x 14.01) = 2.48885731828239087274e-6: the exponent was rounded to double "
+        "before the power. Correcting it moves e_moon and flux_obs of the golden planner "
+        "output by a few ulp, which the reshaping may not do unasked; remove this mark "
+        "when the literal is corrected."))),
+    pytest.param(True, id="float"),
+])
+def test_moon_full_over_sun_literal(single):
+    _check_against({"MOON_FULL_OVER_SUN": derived.constants(single)["MOON_FULL_OVER_SUN"]}, single)
 
 
 @pytest.mark.parametrize("n", [6, 8, 12])
@@ -193,8 +217,8 @@ def test_sincos_polynomials_meet_their_bound(single):
         return mp.mpf(q.numerator) / q.denominator
 
     with mp.workdps(40):
-        s = [mpf(src_literal(f"S{k}", single)[1][0]) for k in range(3, 14, 2) if f"S{k}" in c]
-        cc = [mpf(src_literal(f"C{k}", single)[1][0]) for k in range(4, 15, 2) if f"C{k}" in c]
+        s = [mpf(src_literal(f"S{k}", single)[1][0][0]) for k in range(3, 14, 2) if f"S{k}" in c]
+        cc = [mpf(src_literal(f"C{k}", single)[1][0][0]) for k in range(4, 15, 2) if f"C{k}" in c]
     half_ulp = mp.mpf(2) ** -(24 if single else 53)
     with mp.workdps(40):
         worst_s = worst_c = mp.mpf(0)
