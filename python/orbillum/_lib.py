@@ -137,6 +137,8 @@ class oi_model(ctypes.Structure):
         ("earth_model", c_int), ("moon_model", c_int), ("limb_darkening", c_int),
         ("no_atmosphere", c_int), ("earth_table", POINTER(oi_earth_table)),
     ]
+
+
 class oi_shadow(ctypes.Structure):
     _fields_ = [
         ("fraction", real), ("fraction_ld", real), ("fraction_atm", real),

@@ -29,7 +29,7 @@ L = _oi_ctypes.load_mirror()
 _SCALARS = {
     "oi_real": ctypes.c_double, "double": ctypes.c_double, "float": ctypes.c_float,
     "int": ctypes.c_int, "unsigned": ctypes.c_uint, "unsigned int": ctypes.c_uint,
-    "unsigned long": ctypes.c_ulong, "unsigned short": ctypes.c_ushort,
+    "long": ctypes.c_long, "unsigned long": ctypes.c_ulong, "unsigned short": ctypes.c_ushort,
     "size_t": ctypes.c_size_t,
 }
 

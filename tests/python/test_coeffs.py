@@ -104,9 +104,11 @@ _SRC = [(os.path.relpath(p, ROOT), entry)
 
 
 def src_literal(name, single):
-    """[(value, is_float)] of the definition of name in src/ for the precision
+    """[(value, is_float)] of the definition of name (or OI_name, the prefix of
+    a constant shared through src/oi_internal.h) in src/ for the precision
     (several files may define it, with the same values)."""
-    found = [(f, text) for f, (n, text, adm) in _SRC if n == name and single in adm]
+    found = [(f, text) for f, (n, text, adm) in _SRC
+             if n in (name, "OI_" + name) and single in adm]
     prec = "float" if single else "double"
     assert found, f"{name} ({prec}): no definition in src/*.c, src/*.h"
     values = [(f, _values(text, single)) for f, text in found]
