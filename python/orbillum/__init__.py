@@ -18,17 +18,18 @@ import ctypes
 import numpy as np
 
 from . import _lib as L
-from ._lib import (OI_FLAG_ECLIPSED, OI_FLAG_EARTH_IN_FOV, OI_FLAG_PENUMBRA,  # noqa: F401
-                   OI_FLAG_OCCULTED, OI_FLAG_SATURATED, OI_FLAG_SUN_EXCLUSION, OI_FLAG_TOO_FAINT, OI_OK,
-                   OI_TERM_ALL, OI_TERM_EARTH, OI_TERM_MOON, OI_TERM_SUN,
-                   OI_WARN_TABLE_RANGE)
+
+# Every status, flag and term constant of the header, by its C name
+# (OI_OK, OI_WARN_*, OI_ERR_*, OI_FLAG_*, OI_TERM_*): taken from the mirror so
+# that a code added there is exported here too.
+_CONSTANTS = sorted(n for n in vars(L) if n == "OI_OK" or
+                    n.startswith(("OI_WARN_", "OI_ERR_", "OI_FLAG_", "OI_TERM_")))
+globals().update({n: getattr(L, n) for n in _CONSTANTS})
 
 __all__ = ["illuminate", "expose", "expose_flux", "sun_fraction", "earthshine",
            "lambert_phase", "moon_phase_law", "magnitude_v", "flux_from_magnitude",
-           "camera", "cameras", "status_name", "flag_names", "terms_mask", "library_path",
-           "OI_OK", "OI_WARN_TABLE_RANGE", "OI_TERM_SUN", "OI_TERM_EARTH", "OI_TERM_MOON",
-           "OI_TERM_ALL", "OI_FLAG_SUN_EXCLUSION", "OI_FLAG_EARTH_IN_FOV", "OI_FLAG_ECLIPSED",
-           "OI_FLAG_TOO_FAINT", "OI_FLAG_SATURATED", "OI_FLAG_PENUMBRA", "OI_FLAG_OCCULTED"]
+           "camera", "cameras", "status_name", "flag_names", "terms_mask",
+           "library_path"] + _CONSTANTS
 
 _lib = L.load()
 

@@ -1,17 +1,22 @@
 # SPDX-License-Identifier: MIT
 """ctypes mirror of include/orbillum.h (double build) and the library loader.
 
-Every structure here mirrors its C definition field by field, in order; the
-test suite compiles a C program that prints sizeof/offsetof of each and
-compares them with these (tests/python/test_binding_abi.py).
+The one mirror of the header in Python: the binding uses it, and so do the
+property tests (tests/python/_oi_ctypes.py). Every constant of the header
+(enum oi_status and every numeric OI_* #define of include/*.h) has its
+namesake here with the same value, and every structure mirrors its C
+definition field by field, in order, with the same types;
+tests/python/test_binding_abi.py parses the header and compiles a C program
+that prints each value, sizeof and offsetof, and fails on any difference or
+on anything the header has and this file lacks.
 """
 import ctypes
 import os
-from ctypes import POINTER, c_char_p, c_double, c_int, c_uint, c_void_p
+from ctypes import POINTER, c_char_p, c_double, c_int, c_uint, c_ulong, c_void_p
 
 real = c_double  # oi_real in the double build (the only one the binding loads)
 
-# enum oi_status
+# ---- enum oi_status
 OI_OK = 0
 OI_WARN_TABLE_RANGE = 1
 OI_ERR_NULL = -1
@@ -26,11 +31,44 @@ OI_ERR_CAMERA = -9
 OI_ERR_MAGNITUDE = -10
 OI_ERR_TERMS = -11
 OI_ERR_GEOMETRY = -12
+OI_ERR_INPUT = -13
+OI_ERR_FLAGS = -14
+
+# ---- include/orbillum.h
+OI_VERSION_MAJOR = 0
+OI_VERSION_MINOR = 2
+OI_VERSION_PATCH = 0
+OI_VERSION = OI_VERSION_MAJOR * 10000 + OI_VERSION_MINOR * 100 + OI_VERSION_PATCH
+
+OI_MAG_MIN = -30.0
+OI_MAG_MAX = 50.0
 
 OI_TERM_SUN = 1
 OI_TERM_EARTH = 2
 OI_TERM_MOON = 4
-OI_TERM_ALL = 7
+OI_TERM_ALL = OI_TERM_SUN | OI_TERM_EARTH | OI_TERM_MOON
+
+OI_MODEL_TSI_MIN = 1.0e-6
+OI_MODEL_TSI_MAX = 1.0e6
+OI_MODEL_AU_MIN = 1.0e3
+OI_MODEL_AU_MAX = 1.0e10
+OI_MODEL_RADIUS_MIN = 1.0e-3
+OI_MODEL_RADIUS_MAX = 1.0e8
+OI_POSITION_MAX_KM = 1.0e12
+OI_ATM_TOP_MAX_KM = 100.0
+OI_ATM_PSI_MAX_RAD = 0.05
+
+OI_EARTH_TABLE = 0    # oi_model.earth_model
+OI_EARTH_LAMBERT = 1
+OI_MOON_PHASE_LAW = 0  # oi_model.moon_model
+OI_MOON_LAMBERT = 1
+OI_LIMB_UNIFORM = 0   # oi_model.limb_darkening
+OI_LIMB_DARKENED = 1
+
+OI_SHADOW_LIT = 0     # oi_shadow.region
+OI_SHADOW_PENUMBRA = 1
+OI_SHADOW_UMBRA = 2
+OI_SHADOW_ANNULAR = 3
 
 OI_CAMERA_MAX_TIMES = 16
 OI_CAMERA_MAX_GAINS = 8
@@ -42,14 +80,72 @@ OI_FLAG_TOO_FAINT = 8
 OI_FLAG_SATURATED = 16
 OI_FLAG_PENUMBRA = 32
 OI_FLAG_OCCULTED = 64
+OI_FLAG_RESOLVED = 128
+
+# ---- include/oi_table.h
+OI_TABLE_FORMAT = 4
+OI_ATM_FORMAT = 3
+OI_TABLE_KIND_EARTHSHINE = 1
+OI_TABLE_KIND_ATMOSPHERE = 2
+
+# ---- include/oi_constants.h (defaults; oi_model overrides each)
+OI_AU_KM = 149597870.7
+OI_TSI_W_M2 = 1361.0
+OI_SUN_RADIUS_KM = 695700.0
+OI_EARTH_RADIUS_KM = 6378.137
+OI_MOON_RADIUS_KM = 1737.4
+OI_MOON_MEAN_DISTANCE_KM = 384400.0
+OI_EARTH_ALBEDO_DEFAULT = 0.30
+OI_MOON_ALBEDO_DEFAULT = 0.12
+OI_SUN_MAG_V = -26.74
+OI_MOON_MAG_V_FULL = -12.73
+OI_TARGET_ALBEDO_DEFAULT = 0.2
+OI_TARGET_RADIUS_M_DEFAULT = 1.0
+OI_MAG_DARK = 99.0
+OI_PI = 3.14159265358979323846264338327950288
+OI_DEG_PER_RAD = 180.0 / OI_PI
 
 
+# ---- include/oi_table.h structures
+class oi_table_info(ctypes.Structure):
+    _fields_ = [
+        ("name", c_char_p), ("generator", c_char_p), ("parameters", c_char_p),
+        ("payload_sha256", c_char_p), ("seed", c_ulong), ("max_error", c_double),
+        ("goal", c_double),
+    ]
+
+
+class oi_earth_table(ctypes.Structure):
+    _fields_ = [
+        ("format", c_int), ("n_lit", c_int), ("n_term", c_int), ("n_alt", c_int),
+        ("w_min", c_double), ("w_max", c_double), ("term_k0", c_double), ("term_kp", c_double),
+        ("max_rel_err", c_double), ("max_abs_err", c_double),
+        ("q", POINTER(ctypes.c_float)), ("psi", POINTER(ctypes.c_float)),
+        ("kind", c_int), ("info", POINTER(oi_table_info)),
+    ]
+
+
+class oi_atm_table(ctypes.Structure):
+    _fields_ = [
+        ("format", c_int), ("kind", c_int), ("info", POINTER(oi_table_info)),
+        ("nz", c_int), ("nt", c_int), ("na", c_int), ("nb", c_int),
+        ("z_min_km", real), ("z_max_km", real), ("h_a_km", real), ("v_mid_km", real),
+        ("alpha_c_rad", real), ("h_c_km", real), ("top_km", real), ("w_rho", real),
+        ("f_floor", real), ("earth_radius_km", real), ("sun_radius_km", real), ("au_km", real),
+        ("q_min", real), ("q_scale", real), ("psi_min_rad", real), ("psi_scale_rad", real),
+        ("e_mid", real), ("c_iu", real), ("ln10", real),
+        ("q", POINTER(ctypes.c_ushort)), ("psi", POINTER(ctypes.c_ushort)),
+    ]
+
+
+# ---- include/orbillum.h structures
 class oi_model(ctypes.Structure):
     _fields_ = [
         ("tsi_w_m2", real), ("au_km", real), ("sun_radius_km", real),
         ("earth_radius_km", real), ("moon_radius_km", real), ("moon_albedo", real),
         ("earth_model", c_int), ("moon_model", c_int), ("limb_darkening", c_int),
-        ("no_atmosphere", c_int), ("earth_table", c_void_p), ("atm_table", c_void_p),
+        ("no_atmosphere", c_int), ("earth_table", POINTER(oi_earth_table)),
+        ("atm_table", POINTER(oi_atm_table)),
     ]
 
 
@@ -111,19 +207,22 @@ class oi_exposure(ctypes.Structure):
     ]
 
 
-STRUCTS = (oi_model, oi_shadow, oi_scene, oi_illum, oi_camera, oi_expose_goal,
-           oi_expose_in, oi_exposure)
+STRUCTS = (oi_table_info, oi_earth_table, oi_atm_table, oi_model, oi_shadow, oi_scene,
+           oi_illum, oi_camera, oi_expose_goal, oi_expose_in, oi_exposure)
 
 _R3 = POINTER(real)
 # name: (restype, argtypes). Pointers to arrays of structures are passed as
 # c_void_p so that the vectorised calls can step through numpy buffers.
 _PROTOS = {
+    "oi_version": (ctypes.c_long, []),
     "oi_status_name": (c_char_p, [c_int]),
     "oi_lambert_phase": (real, [real]),
     "oi_angle": (real, [_R3, _R3]),
     "oi_cap_overlap": (real, [real, real, real]),
     "oi_sun_fraction": (c_int, [c_void_p, c_void_p, c_void_p, c_void_p]),
     "oi_earthshine": (c_int, [real, real, c_void_p, POINTER(real), POINTER(real)]),
+    "oi_earth_table_default": (POINTER(oi_earth_table), []),
+    "oi_atm_table_default": (POINTER(oi_atm_table), []),
     "oi_moon_phase_law": (real, [real]),
     "oi_scene_defaults": (None, [c_void_p]),
     "oi_illuminate": (c_int, [c_void_p, c_void_p, c_void_p]),
@@ -165,9 +264,16 @@ def load():
                       "). Install with `pip install ./python` from the repository, or run "
                       "`make shared` and set ORBILLUM_LIB=build/liborbillum.so")
     lib._orbillum_path = path
+    return bind(lib)
+
+
+def bind(lib):
+    """Set the prototypes of every public function on a loaded ctypes library
+    (the binding's, or any build of the double-precision runtime); functions
+    compiled out (OI_NO_MOON, OI_NO_EXPOSURE) are skipped. Returns lib."""
     for name, (res, args) in _PROTOS.items():
         fn = getattr(lib, name, None)
-        if fn is None:  # compiled out (OI_NO_MOON, OI_NO_EXPOSURE)
+        if fn is None:
             continue
         fn.restype = res
         fn.argtypes = args

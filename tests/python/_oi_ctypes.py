@@ -1,60 +1,44 @@
 # SPDX-License-Identifier: MIT
-"""Thin ctypes binding of the double-precision runtime for the property tests
-(issue 5). Loads build/libori_test.so (mk/fuzz.mk builds it from src/*.c and
-tables/*.c; this module runs `make` for it when it is missing) and mirrors the
-structs of include/orbillum.h, checked against sizeof() reported by the
-library itself. Not the public binding (python/orbillum)."""
+"""Test-side helpers over the binding's one mirror of the header.
+
+The structures and constants are those of python/orbillum/_lib.py (loaded
+from its file, so that no installed package is needed and no second mirror
+exists); the library is build/libori_test.so, the double-precision runtime
+plus a struct-size probe (tests/stability/ori_test_abi.c; this module runs
+`make` for it when it is missing). Used by the property tests.
+"""
 import ctypes as C
+import importlib.util
 import os
 import subprocess
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 SO = os.path.join(ROOT, "build", "libori_test.so")
-
-R3 = C.c_double * 3
-
-
-class Model(C.Structure):
-    _fields_ = [("tsi_w_m2", C.c_double), ("au_km", C.c_double),
-                ("sun_radius_km", C.c_double), ("earth_radius_km", C.c_double),
-                ("moon_radius_km", C.c_double), ("moon_albedo", C.c_double),
-                ("earth_model", C.c_int), ("moon_model", C.c_int),
-                ("limb_darkening", C.c_int), ("no_atmosphere", C.c_int),
-                ("earth_table", C.c_void_p), ("atm_table", C.c_void_p)]
+MIRROR_PATH = os.path.join(ROOT, "python", "orbillum", "_lib.py")
 
 
-class Shadow(C.Structure):
-    _fields_ = [("fraction", C.c_double), ("fraction_ld", C.c_double),
-                ("fraction_atm", C.c_double), ("sun_radius_rad", C.c_double),
-                ("earth_radius_rad", C.c_double), ("separation_rad", C.c_double),
-                ("sun_distance_km", C.c_double), ("region", C.c_int)]
+def load_mirror():
+    """python/orbillum/_lib.py alone (importing the package would load its library)."""
+    spec = importlib.util.spec_from_file_location("orbillum_lib_mirror", MIRROR_PATH)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
 
 
-class Scene(C.Structure):
-    _fields_ = [("sun_km", R3), ("moon_km", R3), ("target_km", R3), ("observer_km", R3),
-                ("has_observer", C.c_int), ("terms", C.c_uint),
-                ("earth_albedo", C.c_double), ("target_albedo", C.c_double),
-                ("target_radius_m", C.c_double)]
-
+M = load_mirror()
+R3 = M.real * 3
+Model, Shadow, Scene, Illum = M.oi_model, M.oi_shadow, M.oi_scene, M.oi_illum
 
 ILLUM_SCALARS = ["e_sun", "e_earth", "e_moon"]
-_ILLUM_AFTER_DIRS = ["earth_theta", "earth_h_km", "earth_phi", "earth_psi",
-                     "moon_sun_fraction", "phase_sun", "phase_earth", "phase_moon",
-                     "flux_sun", "flux_earth", "flux_moon", "flux_obs", "mag_v", "range_km"]
-
-
-class Illum(C.Structure):
-    _fields_ = ([("shadow", Shadow)] + [(n, C.c_double) for n in ILLUM_SCALARS] +
-                [("dir_sun", R3), ("dir_earth", R3), ("dir_moon", R3)] +
-                [(n, C.c_double) for n in _ILLUM_AFTER_DIRS])
-
+_ILLUM_NAMES = [n for n, _ in Illum._fields_]
+_ILLUM_AFTER_DIRS = _ILLUM_NAMES[_ILLUM_NAMES.index("dir_moon") + 1:]
 
 # every rotation-invariant scalar output of oi_illuminate
 SCALAR_OUTPUTS = (["shadow." + n for n, _ in Shadow._fields_ if n != "region"] +
                   ILLUM_SCALARS + _ILLUM_AFTER_DIRS)
 
-TERM_SUN, TERM_EARTH, TERM_MOON = 1, 2, 4
-EARTH_TABLE, EARTH_LAMBERT = 0, 1
+TERM_SUN, TERM_EARTH, TERM_MOON = M.OI_TERM_SUN, M.OI_TERM_EARTH, M.OI_TERM_MOON
+EARTH_TABLE, EARTH_LAMBERT = M.OI_EARTH_TABLE, M.OI_EARTH_LAMBERT
 
 _lib = None
 
@@ -68,22 +52,14 @@ def lib():
     L = C.CDLL(SO)
     L.ori_test_sizeof.restype = C.c_size_t
     L.ori_test_sizeof.argtypes = [C.c_int]
+    # the library under test was built from the same header as the mirror
     for i, st in enumerate((Model, Shadow, Scene, Illum)):
         assert L.ori_test_sizeof(i) == C.sizeof(st), (st.__name__, L.ori_test_sizeof(i),
                                                      C.sizeof(st))
     assert L.ori_test_sizeof(4) == Illum.range_km.offset
     assert L.ori_test_sizeof(5) == Scene.target_radius_m.offset
-    L.oi_illuminate.argtypes = [C.POINTER(Scene), C.POINTER(Model), C.POINTER(Illum)]
-    L.oi_illuminate.restype = C.c_int
-    L.oi_sun_fraction.argtypes = [R3, R3, C.POINTER(Model), C.POINTER(Shadow)]
-    L.oi_sun_fraction.restype = C.c_int
-    L.oi_earthshine.argtypes = [C.c_double, C.c_double, C.POINTER(Model),
-                                C.POINTER(C.c_double), C.POINTER(C.c_double)]
-    L.oi_earthshine.restype = C.c_int
-    L.oi_scene_defaults.argtypes = [C.POINTER(Scene)]
-    L.oi_scene_defaults.restype = None
-    _lib = L
-    return L
+    _lib = M.bind(L)
+    return _lib
 
 
 def model(**kw):

@@ -172,7 +172,7 @@ def test_error_statuses_and_zeroed_outputs():
 
 def test_closed_forms_through_the_binding():
     # far from the Earth with only the Sun term, observer on the Sun side:
-    # F = E alb a^2 p(0) / d^2 with p(0) = 2/3 (Lambert sphere, PHYSICS.md 3)
+    # F = E alb a^2 p(0) / d^2 with p(0) = 2/3 (Lambert sphere, docs/physics.md section 3)
     au = 149597870.7
     sun = np.array([au, 0, 0])
     tgt = np.array([0.0, 4.0e5, 0.0])
@@ -241,3 +241,18 @@ def test_other_entry_points_agree_with_illuminate():
     lam = orbillum.illuminate(kw["sun"][0], None, kw["target"][0],
                               model={"earth_model": "lambert"})
     assert lam["status"][0] >= 0
+
+
+def test_every_status_and_flag_is_exported_under_its_c_name():
+    """Each OI_* status and flag of the header (the mirror holds them all,
+    test_binding_abi.py) is a name of the package, and the C library names
+    it as the header does: oi_status_name drops "OI_", oi_flag_name is the
+    lower-case rest after "OI_FLAG_"."""
+    statuses = [n for n in orbillum.__all__ if n == "OI_OK" or n.startswith(("OI_WARN_", "OI_ERR_"))]
+    flags = [n for n in orbillum.__all__ if n.startswith("OI_FLAG_")]
+    assert "OI_ERR_GEOMETRY" in statuses and "OI_FLAG_RESOLVED" in flags
+    for n in statuses:
+        assert orbillum.status_name(getattr(orbillum, n)) == n[len("OI_"):], n
+    for n in flags:
+        assert orbillum.flag_names(getattr(orbillum, n)) == n[len("OI_FLAG_"):].lower(), n
+    assert len({getattr(orbillum, n) for n in statuses}) == len(statuses), "duplicate status"

@@ -1,8 +1,8 @@
 # SPDX-License-Identifier: MIT
 """The planner's batch interface (build/oi-plan --csv) on normal and hostile
-input: the CSV contract of issue 2 (header, columns in any order, unknown
-columns ignored, %.17g numbers, statuses, exit codes 0/1/2) and the
-usability of issue 7 (messages with line and column, --help, cameras).
+input: the CSV contract of docs/planner.md (header, columns in any order,
+unknown columns ignored, %.17g numbers, statuses, exit codes 0/1/2) and its
+usability (messages with line and column, --help, cameras).
 
 Numbers are checked against closed forms written here (inverse-square Sun,
 full shadow), never against the planner itself.

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: MIT
-"""Property tests (issue 5, item 3): hypothesis on the runtime through the thin
-ctypes binding tests/python/_oi_ctypes.py, and on the baker's geometry.
+"""Property tests: hypothesis on the runtime through tests/python/_oi_ctypes.py
+(the binding's ctypes mirror over build/libori_test.so), and on the baker's geometry.
 
 - rotation invariance: rotating every input position leaves every scalar
   output of oi_illuminate unchanged (and rotates the direction outputs);
