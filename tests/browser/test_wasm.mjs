@@ -1,0 +1,124 @@
+// SPDX-License-Identifier: MIT
+// test_wasm.mjs: the runtime compiled to wasm32 gives the native double build's results bit for
+// bit: the shipped cases through the JavaScript module (build/wasm/orbillum.js) against
+// build/oi-plan --csv, and every double-precision stability vector (web/wasm/stab_dump.c built
+// natively and for WASI). Run by `make test-wasm` (node --test).
+//
+// Two native runs each: with glibc's generic libm code (GLIBC_TUNABLES hides FMA and AVX2 from
+// its function selection) every number must be the same double; with glibc's default choice
+// within 1 ulp: on a CPU with fused multiply-add glibc runs its FMA variant of exp (and log,
+// pow), which rounds differently from the same algorithm without FMA in rare cases, and wasm
+// has no FMA, so wasi-libc's exp is that algorithm without it (docs/viewer.md).
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import fs from 'node:fs';
+import path from 'node:path';
+import { WASI } from 'node:wasi';
+
+const ROOT = path.resolve(path.dirname(new URL(import.meta.url).pathname), '../..');
+const BUILD = process.env.BUILDDIR ? path.resolve(ROOT, process.env.BUILDDIR) : path.join(ROOT, 'build');
+const { loadOrbillum, parseCsv, PLAN_COLUMNS } = await import(path.join(BUILD, 'wasm/orbillum.js'));
+const oi = await loadOrbillum(fs.readFileSync(path.join(BUILD, 'wasm/orbillum.wasm')));
+
+const f64 = new Float64Array(1);
+const u64 = new BigUint64Array(f64.buffer);
+function bits(x) { f64[0] = x; return u64[0]; }
+/** Distance in units in the last place between two finite doubles of one sign. */
+function ulps(a, b) { const d = bits(a) - bits(b); return d < 0n ? -d : d; }
+
+const CASES = fs.readdirSync(path.join(ROOT, 'tests/golden')).filter((f) => f.endsWith('.in.csv')).sort();
+
+test('the shipped cases exist', () => assert.ok(CASES.length >= 3, CASES.join(' ')));
+
+const GENERIC_LIBM = { ...process.env, GLIBC_TUNABLES: 'glibc.cpu.hwcaps=-AVX2,-FMA' };
+const RUNS = [
+  { what: "glibc's generic libm: bit for bit", env: GENERIC_LIBM, maxUlp: 0n },
+  { what: "glibc's default libm: within 1 ulp", env: process.env, maxUlp: 1n },
+];
+
+for (const name of CASES) for (const run of RUNS) {
+  test(`${name}: wasm through the JavaScript module vs build/oi-plan --csv, ${run.what}`, () => {
+    const input = path.join(ROOT, 'tests/golden', name);
+    const native = parseCsv(execFileSync(path.join(BUILD, 'oi-plan'), ['--csv', input],
+      { encoding: 'utf8', env: run.env }));
+    assert.deepEqual(native[0], PLAN_COLUMNS);
+    const mine = oi.planCsv(fs.readFileSync(input, 'utf8'));
+    assert.equal(mine.error, undefined);
+    assert.equal(mine.rows.length, native.length - 1);
+    let numbers = 0;
+    const differ = [];
+    const near = [];
+    mine.rows.forEach((row, i) => {
+      const want = native[i + 1];
+      PLAN_COLUMNS.forEach((c, k) => {
+        const w = want[k];
+        const got = row[c];
+        if (c === 'id' || c === 'status' || c === 'flags') {
+          assert.equal(got ?? '', w, `row ${i + 1} ${c}`);
+          return;
+        }
+        if (w === '') { assert.equal(got, null, `row ${i + 1} ${c}: the planner leaves it empty`); return; }
+        // the planner prints %.17g (negative zero as 0): the double round-trips exactly
+        const g = got + 0.0 === 0 ? 0 : got;
+        numbers++;
+        if (bits(g) === bits(Number(w))) return;
+        const d = ulps(g, Number(w));
+        (d <= run.maxUlp ? near : differ).push(`row ${i + 1} ${c}: ${g} vs ${w} (${d} ulp)`);
+      });
+    });
+    assert.deepEqual(differ, [], `${differ.length} of ${numbers} numbers differ by more than ${run.maxUlp} ulp`);
+    console.log(`# ${name} (${run.what}): ${mine.rows.length} rows, ${numbers} numbers, ` +
+      `${numbers - near.length} bit-identical${near.length ? `, 1 ulp: ${near.join('; ')}` : ''}`);
+  });
+}
+
+function wasiDump(file) {
+  const out = path.join(BUILD, 'wasm/stab_dump.wasm.txt');
+  const fd = fs.openSync(out, 'w');
+  const wasi = new WASI({ version: 'preview1', args: ['stab_dump'], env: {}, stdout: fd, returnOnExit: true });
+  const mod = new WebAssembly.Module(fs.readFileSync(file));
+  const inst = new WebAssembly.Instance(mod, wasi.getImportObject());
+  const rc = wasi.start(inst);
+  fs.closeSync(fd);
+  assert.equal(rc, 0);
+  return fs.readFileSync(out, 'utf8');
+}
+
+for (const run of RUNS) test(`every double-precision stability vector: wasm vs native, ${run.what}`, () => {
+  const native = execFileSync(path.join(BUILD, 'wasm/stab_dump'), { encoding: 'utf8', env: run.env })
+    .trim().split('\n');
+  const wasm = wasiDump(path.join(BUILD, 'wasm/stab_dump.wasm')).trim().split('\n');
+  assert.equal(wasm.length, native.length);
+  assert.ok(native.length > 500, `${native.length} vectors`);
+  const differ = [];
+  const near = [];
+  const tables = new Set();
+  let outputs = 0;
+  native.forEach((line, i) => {
+    const a = line.split(' ');
+    const b = wasm[i].split(' ');
+    tables.add(a[0]);
+    assert.deepEqual(b.slice(0, 4), a.slice(0, 4), `line ${i + 1}: table, index, status, region`);
+    for (let k = 4; k < a.length; k++) {
+      outputs++;
+      if (a[k] !== b[k]) {
+        let d = BigInt(`0x${a[k]}`) - BigInt(`0x${b[k]}`);
+        if (d < 0n) d = -d;
+        (d <= run.maxUlp ? near : differ).push(`${a[0]}[${a[1]}] output ${k - 4}: ${a[k]} vs ${b[k]} (${d} ulp)`);
+      }
+    }
+  });
+  assert.deepEqual(differ, [], `${differ.length} of ${outputs} outputs differ by more than ${run.maxUlp} ulp`);
+  console.log(`# stability (${run.what}): ${native.length} vectors in ${tables.size} tables, ${outputs} ` +
+    `outputs, ${outputs - near.length} bit-identical${near.length ? `, 1 ulp: ${near.join('; ')}` : ''}`);
+});
+
+test('struct layout comes from the compiler (wasm32: 4-byte pointers, 8-byte oi_real)', () => {
+  assert.equal(oi.layout['sizeof.void *'], 4);
+  assert.equal(oi.layout['sizeof.oi_real'], 8);
+  assert.ok(oi.layout['oi_illum.mag_v'] > oi.layout['oi_illum.flux_obs']);
+  assert.ok(oi.cameras().length >= 1);
+  assert.equal(oi.findCamera(oi.cameras()[0].name).index, 0);
+  assert.equal(oi.findCamera('no such camera'), null);
+});
