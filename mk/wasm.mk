@@ -111,7 +111,7 @@ $(VIEWER_VENV)/.deps: web/requirements-viewer.txt
 
 test-viewer: viewer $(PLAN) ## the page in headless Chromium: numbers equal oi-plan's, controls act
 	@$(MAKE) --no-print-directory browser-deps || true
-	@if [ ! -x $(CHROMIUM) ] || [ ! -x $(VIEWER_PY) ]; then \
+	@if [ ! -x $(CHROMIUM) ] || ! $(VIEWER_PY) -c 'import playwright' >/dev/null 2>&1; then \
 	  echo "test-viewer: SKIPPED: no browser ($(CHROMIUM)) or no Playwright could be installed"; \
 	else \
 	  CHROMIUM=$(CHROMIUM) VIEWER_DIR=$(VIEWER_DIR) PLAN=$(PLAN) \

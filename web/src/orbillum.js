@@ -115,7 +115,11 @@ export class Orbillum {
     }
   }
 
-  get dv() { return new DataView(this.memory.buffer); }
+  // one view of the memory, renewed only if the memory grew (the runtime allocates nothing)
+  get dv() {
+    if (!this.view || this.view.buffer !== this.memory.buffer) this.view = new DataView(this.memory.buffer);
+    return this.view;
+  }
 
   cString(ptr) {
     if (!ptr) return null;
