@@ -122,3 +122,42 @@ test('struct layout comes from the compiler (wasm32: 4-byte pointers, 8-byte oi_
   assert.equal(oi.findCamera(oi.cameras()[0].name).index, 0);
   assert.equal(oi.findCamera('no such camera'), null);
 });
+
+// The viewer's built-in scenario (web/src/scenario.js) against the planner's own table (oi-plan
+// without --csv): every printed column of every printed row, to the printed digits (half a unit
+// of the last digit). Its positions come from JavaScript's Math.cos/sin, so this check is at the
+// table's precision, not bit for bit.
+test("the viewer's built-in scenario is oi-plan's, to the digits its table prints", async () => {
+  const { builtinScenario, SCENARIO_STEP_S } = await import(path.join(ROOT, 'web/src/scenario.js'));
+  const rows = builtinScenario(oi);
+  const text = execFileSync(path.join(BUILD, 'oi-plan'), { encoding: 'utf8' });
+  const table = text.split('\n').filter((l) => /^ +\d+\.\d\d +\d\.\d{3} /.test(l));
+  assert.ok(table.length >= 40, `${table.length} table rows`);
+  const halfUnit = (s) => {
+    const [m, e] = s.toLowerCase().split('e');
+    const d = m.includes('.') ? m.split('.')[1].length : 0;
+    return 0.5 * 10 ** ((e ? Number(e) : 0) - d) * (1 + 1e-9);
+  };
+  const camera = oi.cameras()[0];
+  const DEG = 180 / Math.PI;
+  let checked = 0;
+  for (const line of table) {
+    const f = line.trim().split(/ +/);
+    const k = Math.round((Number(f[0]) * 60) / SCENARIO_STEP_S);
+    const row = rows[k];
+    assert.ok(Math.abs(row.t_s - Number(f[0]) * 60) < 1e-6);
+    const r = oi.compute(row.scene, row.model, camera);
+    const planned = oi.fillRow({ id: row.id }, r);
+    const il = r.illum;
+    const dx = row.scene.target_km.map((x, i) => x - row.scene.observer_km[i]);
+    const got = [il.shadow.fraction_atm, il.e_sun, il.e_earth, il.e_moon, Math.hypot(...dx),
+      r.expo.sun_angle_rad * DEG, il.mag_v, r.expo.exposure_s, r.expo.gain, r.expo.snr];
+    got.forEach((g, j) => {
+      const want = f[1 + j];
+      assert.ok(Math.abs(g - Number(want)) <= halfUnit(want), `t = ${f[0]} min, column ${j + 2}: ${g} vs ${want}`);
+    });
+    assert.equal(planned.flags, f[11] ?? '', `t = ${f[0]} min flags`);
+    checked++;
+  }
+  console.log(`# built-in scenario: ${checked} rows of oi-plan's table, every column to its printed digits`);
+});
