@@ -196,3 +196,16 @@ def test_manual_exposure_uses_the_camera_step(browser, server):
     assert float(p.numbers()["exposure_s"]) == cam[int(k)]
     assert p.errors == []
     p.close()
+
+
+def test_facet_shape_changes_the_picture_not_the_numbers(browser, server):
+    p = Page(browser, f"{server}?dataset=geo-inspector-eclipse&row=0")
+    shapes = p.page.evaluate("[...document.querySelectorAll('#shape option')].map(o => o.value)")
+    assert shapes[0] == "sphere" and "boxwing" in shapes
+    n0, hdr0 = p.numbers(), p.canvas("hdr")
+    p.act(choose("shape", "boxwing"))
+    assert p.numbers() == n0, "the runtime's numbers are the sphere's whatever the picture's shape"
+    assert p.canvas("hdr") != hdr0
+    assert "facet model boxwing" in p.page.text_content("#view-note")
+    assert p.errors == []
+    p.close()

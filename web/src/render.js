@@ -46,10 +46,70 @@ export function basis(forward, observer) {
   return { f, r, u };
 }
 
-/** Noiseless radiance per source on a sub-pixel grid, and its geometry. */
-export function radianceImage(scene, illum, cam) {
+/** Vertices (metres) and triangles of a Wavefront OBJ text (v and f records; faces fanned). */
+export function parseObj(text) {
+  const verts = []; const tris = [];
+  for (const line of text.split('\n')) {
+    const p = line.trim().split(/\s+/);
+    if (p[0] === 'v') verts.push(p.slice(1, 4).map(Number));
+    else if (p[0] === 'f') {
+      const idx = p.slice(1).map((q) => { const k = parseInt(q.split('/')[0], 10); return k > 0 ? k - 1 : verts.length + k; });
+      for (let j = 1; j + 1 < idx.length; j++) tris.push([idx[0], idx[j], idx[j + 1]]);
+    }
+  }
+  return { verts, tris };
+}
+
+/**
+ * Attitude "nadir-sun" (examples/render/facets.py): body +z to the Earth's centre, +x towards
+ * the Sun projected on the plane normal to nadir, +y = z x x. Returns the body axes [x, y, z].
+ */
+export function nadirSunAttitude(targetKm, sunKm) {
+  const z = unit(targetKm.map((v) => -v));
+  const s = unit(sub(sunKm, targetKm));
+  let x = sub(s, z.map((v) => v * dot(s, z)));
+  if (norm(x) < 1e-9) x = cross(z, Math.abs(z[0]) < 0.9 ? [1, 0, 0] : [0, 1, 0]);
+  x = unit(x);
+  return [x, cross(z, x), z];
+}
+
+/* Facets in the inertial frame (km, target-centred) with their unit normals. */
+function placeModel(model, axes) {
+  const P = model.verts.map((v) => [0, 1, 2].map((i) => (v[0] * axes[0][i] + v[1] * axes[1][i] + v[2] * axes[2][i]) / 1000));
+  return model.tris.map(([a, b, c]) => {
+    const A = P[a]; const e1 = sub(P[b], A); const e2 = sub(P[c], A);
+    return { A, e1, e2, n: unit(cross(e1, e2)) };
+  });
+}
+
+/* Nearest facet hit by the ray o + t d (Moller & Trumbore 1997), or null. */
+function castFacets(o, d, facets) {
+  let best = Infinity; let hit = null;
+  for (const f of facets) {
+    const pv = cross(d, f.e2);
+    const det = dot(pv, f.e1);
+    if (Math.abs(det) < 1e-30) continue;
+    const inv = 1 / det;
+    const tv = sub(o, f.A);
+    const u = dot(pv, tv) * inv;
+    if (u < 0 || u > 1) continue;
+    const qv = cross(tv, f.e1);
+    const v = dot(d, qv) * inv;
+    if (v < 0 || u + v > 1) continue;
+    const t = dot(qv, f.e2) * inv;
+    if (t > 0 && t < best) { best = t; hit = f; }
+  }
+  return hit;
+}
+
+/**
+ * Noiseless radiance per source on a sub-pixel grid, and its geometry. model: null (the sphere of
+ * the scene's radius) or parseObj()'s facets, in the nadir-sun attitude, two-sided facets.
+ */
+export function radianceImage(scene, illum, cam, model = null) {
   const tgt = scene.target_km; const obs = scene.observer_km;
-  const aKm = (scene.target_radius_m ?? 1.0) / 1000.0;
+  const facets = model ? placeModel(model, nadirSunAttitude(tgt, scene.sun_km)) : null;
+  const aKm = model ? Math.max(...model.verts.map(norm)) / 1000 : (scene.target_radius_m ?? 1.0) / 1000.0;
   const albedo = scene.target_albedo ?? 0.2;
   const los = sub(tgt, obs);
   const d = norm(los);
@@ -78,6 +138,13 @@ export function radianceImage(scene, illum, cam) {
     for (let ix = 0; ix < m; ix++) {
       const tx = Math.tan((ix - (m - 1) / 2) * step);
       const dir = unit([f[0] + tx * r[0] + ty * u[0], f[1] + tx * r[1] + ty * u[1], f[2] + tx * r[2] + ty * u[2]]);
+      if (facets) {
+        const hit = castFacets(oc, dir, facets);
+        if (!hit) continue;
+        const n = dot(hit.n, dir) > 0 ? hit.n.map((v) => -v) : hit.n; // the side facing the viewer
+        for (const x of src) L[x.s][iy * m + ix] = (albedo / Math.PI) * x.e * Math.max(0, dot(n, x.dir));
+        continue;
+      }
       const b = dot(dir, oc);
       const disc = b * b - cc;
       if (disc < 0) continue;
@@ -87,7 +154,7 @@ export function radianceImage(scene, illum, cam) {
       for (const x of src) L[x.s][iy * m + ix] = (albedo / Math.PI) * x.e * Math.max(0, dot(n, x.dir));
     }
   }
-  return { L, m, meta: { range_km: d, ifov, diamPx, cropPx, os, subpixSr: step * step, resolved } };
+  return { L, m, meta: { range_km: d, ifov, diamPx, cropPx, os, subpixSr: step * step, resolved, shape: model ? 'facets' : 'sphere' } };
 }
 
 /** Electrons per (W/m^2/sr) in one sub-pixel during the exposure. */
@@ -149,8 +216,8 @@ export function rng(seed) {
  * The three panels: frame (detector pixels, fraction of saturation, with noise), hdr and false
  * colour (sub-pixel grid), plus what the picture measured. expo: the runtime's exposure.
  */
-export function renderView(scene, illum, expo, cam, seed = 1) {
-  const { L, m, meta } = radianceImage(scene, illum, cam);
+export function renderView(scene, illum, expo, cam, seed = 1, model = null) {
+  const { L, m, meta } = radianceImage(scene, illum, cam, model);
   const ePerL = electronsPerRadiance(cam, expo.exposure_s, meta.subpixSr);
   const sigmaPx = psfSigmaPx(cam.psf_peak_fraction);
   let n; let signal;

@@ -6,6 +6,7 @@
 // shortened distances (the view says so).
 import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
+import { nadirSunAttitude } from './render.js';
 
 const MOON_DRAW_R = 9;     // Earth radii: where the Moon is drawn along its direction
 const SUN_DRAW_R = 30;
@@ -124,7 +125,31 @@ export class SceneView {
   }
 
   /** One instant: scene (km), the runtime's illumination and the camera (for its field). */
-  update(scene, illum, cam) {
+  /* The target as a facet model (metres) in the nadir-Sun attitude, or null for the sphere. */
+  setModel(model, scene) {
+    if (model !== this.modelSrc) {
+      this.modelSrc = model;
+      if (this.modelMesh) { this.scene.remove(this.modelMesh); this.modelMesh.geometry.dispose(); this.modelMesh = null; }
+      if (model) {
+        const g = new THREE.BufferGeometry();
+        const pos = [];
+        for (const t of model.tris) for (const k of t) pos.push(...model.verts[k]);
+        g.setAttribute('position', new THREE.Float32BufferAttribute(pos, 3));
+        g.computeVertexNormals();
+        this.modelMesh = new THREE.Mesh(g, new THREE.MeshLambertMaterial({ color: 0xe8d9a8, emissive: 0x3a3630, side: THREE.DoubleSide }));
+        this.modelRadius = Math.max(...model.verts.map((v) => Math.hypot(...v)));
+        this.scene.add(this.modelMesh);
+      }
+    }
+    this.target.visible = !model;
+    if (model) {
+      const [x, y, z] = nadirSunAttitude(scene.target_km, scene.sun_km).map((a) => v3(a));
+      this.modelMesh.quaternion.setFromRotationMatrix(new THREE.Matrix4().makeBasis(x, y, z));
+    }
+  }
+
+  update(scene, illum, cam, model = null) {
+    this.setModel(model, scene);
     const re = 6378.137; const r = 1 / re;
     const s = v3(scene.sun_km, 1).normalize();
     this.sunLight.position.copy(s.clone().multiplyScalar(50));
@@ -151,6 +176,7 @@ export class SceneView {
     }
     const t = v3(scene.target_km, r);
     this.target.position.copy(t);
+    if (this.modelMesh) this.modelMesh.position.copy(t);
     this.target.material.color.set(illum && illum.shadow.region === 2 ? 0x555566 : 0xf4f4f4);
     this.tgtPos = t;
     if (scene.observer_km) {
@@ -204,6 +230,7 @@ export class SceneView {
     // markers keep a constant size on screen
     const px = (p) => this.camera.position.distanceTo(p) * 0.012;
     if (this.tgtPos) this.target.scale.setScalar(px(this.tgtPos));
+    if (this.tgtPos && this.modelMesh) this.modelMesh.scale.setScalar((px(this.tgtPos) * 4) / this.modelRadius);
     if (this.obsPos) this.observer.scale.setScalar(px(this.obsPos) * 1.4);
     this.renderer.render(this.scene, this.camera);
   }

@@ -5,10 +5,11 @@
 import wasmBytes from 'viewer-data:wasm';
 import { loadOrbillum } from './orbillum.js';
 import { builtinScenario } from './scenario.js';
-import { renderView, drawImage, HDR_DECADES } from './render.js';
+import { renderView, drawImage, parseObj, HDR_DECADES } from './render.js';
 import { SceneView } from './scene3d.js';
 import cases from 'viewer-data:cases';
 import stars from 'viewer-data:stars';
+import models from 'viewer-data:models';
 
 const $ = (id) => document.getElementById(id);
 const DEG = 180 / Math.PI;
@@ -177,12 +178,13 @@ function update() {
   const c = compute(row);
   state.last = c;
   showNumbers(c);
-  state.view.update(c.scene, c.r.illum, c.cam);
+  state.view.update(c.scene, c.r.illum, c.cam, currentModel());
   const msg = [];
   if (c.r.status < 0) msg.push(`runtime: ${c.out.status}`);
   if (!row.scene.has_observer) msg.push('no observer in this row: no camera view');
   if (c.r.expo && c.r.illum) {
-    const v = renderView(c.scene, c.r.illum, c.r.expo, c.cam, Number($('seed').value) || 1);
+    const model = currentModel();
+    const v = renderView(c.scene, c.r.illum, c.r.expo, c.cam, Number($('seed').value) || 1, model);
     drawImage($('frame'), v.frame, v.n);
     drawImage($('hdr'), v.hdr, v.m);
     drawImage($('fc'), v.fc, v.m, true);
@@ -191,10 +193,19 @@ function update() {
     $('hdr-caption').textContent = `log radiance, ${HDR_DECADES} decades, noiseless`;
     $('view-note').textContent = `target ${mt.diamPx.toPrecision(3)} px across, crop ${mt.cropPx}×${mt.cropPx} px` +
       (mt.resolved ? '' : ': UNRESOLVED, the frame is the PSF blob; the HDR and colour panels show the sphere finer than a pixel') +
+      (model ? `; facet model ${$('shape').value} (${model.tris.length} triangles, nadir-Sun attitude): the runtime's numbers and exposure are still the sphere's` : '') +
       `; up = away from the Earth. Picture flux ${fmt(mt.fluxRender)} W/m² (runtime ${fmt(c.r.illum.flux_obs)}).`;
   }
   $('message').textContent = msg.join('; ');
   document.body.dataset.ready = String(Number(document.body.dataset.ready || 0) + 1);
+}
+
+const parsedModels = {};
+function currentModel() {
+  const name = $('shape').value;
+  if (name === 'sphere' || !models[name]) return null;
+  parsedModels[name] = parsedModels[name] ?? parseObj(models[name]);
+  return parsedModels[name];
 }
 
 async function main() {
@@ -208,7 +219,9 @@ async function main() {
   for (const id of ['earth-albedo', 'target-albedo', 'target-radius']) {
     $(id).addEventListener('input', () => { state.touched[id] = true; update(); });
   }
-  for (const id of ['src-sun', 'src-earth', 'src-moon', 'atmosphere', 'exposure', 'gain', 'seed']) {
+  $('shape').innerHTML = '<option value="sphere">sphere (the runtime\'s)</option>' +
+    Object.keys(models).map((k) => `<option value="${k}">${k} (facets, examples/render/models)</option>`).join('');
+  for (const id of ['src-sun', 'src-earth', 'src-moon', 'atmosphere', 'exposure', 'gain', 'seed', 'shape']) {
     $(id).addEventListener('change', update);
   }
   $('camera').addEventListener('change', () => { $('exposure').value = ''; $('gain').value = ''; fillExposureChoice(); update(); });

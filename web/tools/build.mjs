@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // build.mjs: bundles the viewer into one static folder (make viewer): index.html, style.css and
 // viewer.js, which holds three.js, the runtime's wasm module, the shipped cases
-// (tests/golden/*.in.csv) and the star catalogue, so the page needs no network and opens from disk.
+// (tests/golden/*.in.csv), the facet models (examples/render/models) and the star catalogue, so the page needs no network and opens from disk.
 // Usage: node web/tools/build.mjs --npm DIR/node_modules --wasm build/wasm/orbillum.wasm --out build/viewer
 import fs from 'node:fs';
 import path from 'node:path';
@@ -28,6 +28,17 @@ function cases() {
   return o;
 }
 
+// the facet models of examples/render (OBJ text by name)
+function models() {
+  const dir = path.join(ROOT, 'examples/render/models');
+  const o = {};
+  if (!fs.existsSync(dir)) return o;
+  for (const f of fs.readdirSync(dir).filter((x) => x.endsWith('.obj')).sort()) {
+    o[f.replace(/\.obj$/, '')] = fs.readFileSync(path.join(dir, f), 'utf8');
+  }
+  return o;
+}
+
 const data = {
   name: 'viewer-data',
   setup(b) {
@@ -36,6 +47,7 @@ const data = {
       if (a.path === 'wasm') return { contents: fs.readFileSync(wasm), loader: 'binary', watchFiles: [wasm] };
       if (a.path === 'stars') return { contents: JSON.stringify(stars()), loader: 'json' };
       if (a.path === 'cases') return { contents: JSON.stringify(cases()), loader: 'json' };
+      if (a.path === 'models') return { contents: JSON.stringify(models()), loader: 'json' };
       return null;
     });
   },
