@@ -209,3 +209,31 @@ def test_facet_shape_changes_the_picture_not_the_numbers(browser, server):
     assert "facet model boxwing" in p.page.text_content("#view-note")
     assert p.errors == []
     p.close()
+
+
+def test_a_planner_csv_given_to_the_page(browser, server, tmp_path):
+    """A user's CSV (here the GEO case's first 40 rows with an albedo changed) through the file
+    input, the path a dropped file takes too: its rows are the planner's."""
+    lines = (GOLDEN / "geo-inspector-eclipse.in.csv").read_text().splitlines()[:41]
+    head = lines[0].split(",")
+    k = head.index("target_albedo")
+    body = []
+    for line in lines[1:]:
+        f = line.split(",")
+        f[k] = "0.35"
+        body.append(",".join(f))
+    text = "\n".join([lines[0]] + body) + "\n"
+    path = tmp_path / "mine.csv"
+    path.write_text(text)
+    rows = plan(text)
+    p = Page(browser, server)
+    before = p.ready()
+    p.page.set_input_files("#file", str(path))
+    p.wait_ready(before)
+    assert "mine.csv" in p.page.evaluate("document.getElementById('dataset').selectedOptions[0].textContent")
+    assert int(p.page.get_attribute("#time", "max")) == len(rows) - 1
+    for i in (0, 17, len(rows) - 1):
+        p.act(slide(i))
+        assert_same(p.numbers(), rows[i], f"mine.csv row {i + 1}")
+    assert p.errors == []
+    p.close()
