@@ -161,3 +161,74 @@ test("the viewer's built-in scenario is oi-plan's, to the digits its table print
   }
   console.log(`# built-in scenario: ${checked} rows of oi-plan's table, every column to its printed digits`);
 });
+
+// The stability vectors again, now through the JavaScript module's entry points (the wrappers
+// a page calls, and their struct copies), against the native dump: the same evaluations as
+// tests/stability/evaluators.h, input by input.
+function vectorInputs(name) {
+  const text = fs.readFileSync(path.join(ROOT, 'tests/stability/vectors.h'), 'utf8');
+  const start = text.indexOf(`static const stab_vec stab_${name}_d[] = {`);
+  assert.ok(start >= 0, `no table ${name}`);
+  const block = text.slice(start, text.indexOf('\n};', start));
+  return block.split('\n').filter((l) => /^\s*\{\{/.test(l)).map((l) => l.match(/^\s*\{\{([^}]*)\}/)[1].split(',').map(Number));
+}
+
+const STAB_CAMERA = { aperture_m: 0.15, focal_length_m: 1.2, pixel_pitch_m: 5.5e-6, transmission: 0.8,
+  quantum_efficiency: 0.6, band_fraction: 0.4, photon_energy_j: 3.6e-19, full_well_e: 30000, dark_current_e_s: 10,
+  psf_peak_fraction: 0.3, fov_rad: 0.02, sun_exclusion_rad: 0.5, times_s: [1e-4, 1e-3, 1e-2, 0.1, 1, 10],
+  gains: [1, 4, 16], read_noise_e: [10, 4, 2] }; // gen_vectors.py CAM, as evaluators.h test_camera
+
+const JS_EVAL = {
+  phase: (v) => [0, -1, [oi.x.oi_lambert_phase(v[0])]],
+  moon: (v) => [0, -1, [oi.x.oi_moon_phase_law(v[0])]],
+  angle: (v) => [0, -1, [oi.angle(v.slice(0, 3), v.slice(3, 6))]],
+  overlap: (v) => [0, -1, [oi.x.oi_cap_overlap(v[0], v[1], v[2])]],
+  shadow: (v) => {
+    const { status, shadow: s } = oi.sunFraction(v.slice(0, 3), v.slice(3, 6), { no_atmosphere: 1 });
+    return [status, s.region, [s.fraction, s.sun_radius_rad, s.earth_radius_rad, s.separation_rad, s.sun_distance_km, s.fraction_ld]];
+  },
+  magnitude: (v) => [0, -1, [oi.x.oi_magnitude_v(v[0], 0)]],
+  earth_lambert: (v) => {
+    const r = oi.earthshine(v[0], v[1], { earth_model: oi.c.OI_EARTH_LAMBERT });
+    return [r.psi !== 0 ? -100 : (r.status > 0 ? 0 : r.status), -1, [r.phi]];
+  },
+  illum: (v) => {
+    const r = oi.compute({ sun_km: v.slice(0, 3), target_km: v.slice(3, 6), observer_km: v.slice(6, 9), has_observer: true,
+      terms: oi.c.OI_TERM_SUN | oi.c.OI_TERM_EARTH, earth_albedo: 0.3, target_albedo: 0.2, target_radius_m: 1 },
+    { no_atmosphere: 1, earth_model: oi.c.OI_EARTH_LAMBERT }, null);
+    const o = r.illum ?? {};
+    return [r.status > 0 ? 0 : r.status, -1, [o.e_sun, o.e_earth, o.earth_theta, o.earth_h_km, o.flux_sun, o.mag_v, o.flux_obs]];
+  },
+  earth_table: (v) => { const r = oi.earthshine(v[0], v[1]); return [r.status, -1, [r.phi, r.psi]]; },
+  camera: (v) => {
+    const cam = oi.writeCamera(STAB_CAMERA);
+    const { status, expo: e } = oi.expose(cam, v[0], v[1]);
+    return [status, e.time_index * 100 + e.gain_index * 10 + ((e.flags >>> 3) & 3), [e.signal_e, e.background_e, e.peak_e, e.fill, e.snr]];
+  },
+};
+
+for (const run of RUNS) test(`every double-precision stability vector through the JavaScript module vs native, ${run.what}`, () => {
+  const native = execFileSync(path.join(BUILD, 'wasm/stab_dump'), { encoding: 'utf8', env: run.env }).trim().split('\n')
+    .map((l) => l.split(' '));
+  const inputs = {};
+  const differ = [];
+  const near = [];
+  let outputs = 0;
+  for (const [name, idx, st, region, ...want] of native) {
+    inputs[name] = inputs[name] ?? vectorInputs(name);
+    const v = inputs[name][Number(idx)];
+    const [gst, gregion, got] = JS_EVAL[name](v);
+    assert.equal(gst, Number(st), `${name}[${idx}] status`);
+    if (name === 'shadow' || name === 'camera') assert.equal(gregion, Number(region), `${name}[${idx}] region`);
+    want.forEach((w, k) => {
+      outputs++;
+      const g = bits(got[k] ?? 0);
+      const d = g > BigInt(`0x${w}`) ? g - BigInt(`0x${w}`) : BigInt(`0x${w}`) - g;
+      if (d === 0n) return;
+      (d <= run.maxUlp ? near : differ).push(`${name}[${idx}] output ${k}: ${got[k]} (${d} ulp)`);
+    });
+  }
+  assert.deepEqual(differ, [], `${differ.length} of ${outputs} outputs differ by more than ${run.maxUlp} ulp`);
+  console.log(`# stability through orbillum.js (${run.what}): ${native.length} vectors, ${outputs} outputs, ` +
+    `${outputs - near.length} bit-identical${near.length ? `, 1 ulp: ${near.join('; ')}` : ''}`);
+});

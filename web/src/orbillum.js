@@ -104,7 +104,8 @@ export class Orbillum {
       scene: slot(L['sizeof.oi_scene']), model: slot(L['sizeof.oi_model']),
       illum: slot(L['sizeof.oi_illum']), expo: slot(L['sizeof.oi_exposure']),
       camera: slot(L['sizeof.oi_camera']), goal: slot(L['sizeof.oi_expose_goal']),
-      name: slot(256),
+      expoIn: slot(L['sizeof.oi_expose_in']),
+      name: slot(256), vecs: slot(24 * 4),
     };
     if (at - base > this.x.oi_wasm_scratch_bytes()) throw new Error('scratch area too small');
     this.cameraList = [];
@@ -282,6 +283,60 @@ export class Orbillum {
       if (manual) out.expo.gain_index = manual.gain_index;
     }
     return out;
+  }
+
+  /* Scratch pointers for small arrays: vectors after the struct slots. */
+  vecs(...vs) {
+    const base = this.p.vecs;
+    vs.forEach((v, k) => { for (let i = 0; i < 3; i++) this.dv.setFloat64(base + 24 * k + 8 * i, v[i], true); });
+    return vs.map((_, k) => base + 24 * k);
+  }
+
+  /** oi_angle(a, b). */
+  angle(a, b) { const [pa, pb] = this.vecs(a, b); return this.x.oi_angle(pa, pb); }
+
+  /** oi_sun_fraction: {status, shadow}. */
+  sunFraction(sun, point, model = {}) {
+    const [ps, pp] = this.vecs(sun, point);
+    const pm = this.writeModel(model);
+    const out = this.p.illum + this.off('oi_illum', 'shadow');
+    const st = this.x.oi_sun_fraction(ps, pp, pm, out);
+    return { status: st, shadow: this.readIllum(this.p.illum).shadow };
+  }
+
+  /** oi_earthshine: {status, phi, psi}. */
+  earthshine(theta, hKm, model = null) {
+    const pm = model ? this.writeModel(model) : 0;
+    const [pphi] = this.vecs([0, 0, 0]);
+    const st = this.x.oi_earthshine(theta, hKm, pm, pphi, pphi + 8);
+    return { status: st, phi: this.dv.getFloat64(pphi, true), psi: this.dv.getFloat64(pphi + 8, true) };
+  }
+
+  /** A camera of the caller's (the fields of cameras()' entries) in the scratch camera slot. */
+  writeCamera(spec) {
+    const p = this.p.camera;
+    const C = 'oi_camera';
+    new Uint8Array(this.memory.buffer, p, this.layout['sizeof.oi_camera']).fill(0);
+    for (const f of ['aperture_m', 'focal_length_m', 'pixel_pitch_m', 'transmission',
+      'quantum_efficiency', 'band_fraction', 'photon_energy_j', 'full_well_e',
+      'dark_current_e_s', 'psf_peak_fraction', 'fov_rad', 'sun_exclusion_rad']) this.setR(p, C, f, spec[f]);
+    this.setI(p, C, 'n_times', spec.times_s.length);
+    spec.times_s.forEach((t, k) => this.setR(p, C, 'times_s', t, k));
+    this.setI(p, C, 'n_gains', spec.gains.length);
+    spec.gains.forEach((g, k) => this.setR(p, C, 'gains', g, k));
+    spec.read_noise_e.forEach((r, k) => this.setR(p, C, 'read_noise_e', r, k));
+    return { ...spec, ptr: p };
+  }
+
+  /** oi_expose on a photometric input (default goal): {status, expo}. */
+  expose(camera, flux, background, flags = 0) {
+    const E = 'oi_expose_in';
+    const p = this.p.expoIn;
+    this.setR(p, E, 'flux_w_m2', flux);
+    this.setR(p, E, 'background_w_m2_sr', background);
+    this.setU(p, E, 'flags', flags);
+    const st = this.x.oi_expose(camera.ptr, p, 0, this.p.expo);
+    return { status: st, expo: this.readExposure(this.p.expo) };
   }
 
   /**
