@@ -4,7 +4,8 @@
 #                      and its JavaScript module build/wasm/orbillum.js
 #   make test-wasm     the wasm module against the native build, bit for bit: the shipped
 #                      cases (through the JavaScript module, vs build/oi-plan --csv) and every
-#                      double-precision stability vector (the same evaluators, both builds)
+#                      double-precision stability vector (the same evaluators, both builds; and
+#                      through the JavaScript module); the page's picture against the runtime's flux
 #   make viewer        build/viewer/: the static page (three.js bundled, no network at run time)
 #   make test-viewer   the page in headless Chromium (Playwright); skips, saying so, when no
 #                      browser can be installed
@@ -82,7 +83,7 @@ $(WASM_DIR)/stab_dump.wasm: $(STAB_DUMP_SRC) $(WASM_OBJ) $(wildcard tests/stabil
 	  $(WASM_OBJ) -lm -o $@
 
 test-wasm: wasm $(PLAN) $(WASM_DIR)/stab_dump $(WASM_DIR)/stab_dump.wasm ## wasm vs native, bit for bit
-	$(NODE) --test tests/browser/test_wasm.mjs
+	$(NODE) --test tests/browser/test_wasm.mjs tests/browser/test_render.mjs
 
 # ---- the page
 $(NPM_DIR)/.deps: web/package.json web/package-lock.json

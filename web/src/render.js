@@ -106,7 +106,7 @@ function castFacets(o, d, facets) {
  * Noiseless radiance per source on a sub-pixel grid, and its geometry. model: null (the sphere of
  * the scene's radius) or parseObj()'s facets, in the nadir-sun attitude, two-sided facets.
  */
-export function radianceImage(scene, illum, cam, model = null) {
+export function radianceImage(scene, illum, cam, model = null, { subpixAcross = MIN_SUBPIX_ACROSS, maxGrid = 480 } = {}) {
   const tgt = scene.target_km; const obs = scene.observer_km;
   const facets = model ? placeModel(model, nadirSunAttitude(tgt, scene.sun_km)) : null;
   const aKm = model ? Math.max(...model.verts.map(norm)) / 1000 : (scene.target_radius_m ?? 1.0) / 1000.0;
@@ -121,11 +121,11 @@ export function radianceImage(scene, illum, cam, model = null) {
   const resolved = diamPx >= RESOLVED_PX;
   let m; let step; let os;
   if (resolved) {
-    os = Math.max(1, Math.ceil(MIN_SUBPIX_ACROSS / diamPx));
-    os = Math.min(os, Math.max(1, Math.floor(480 / cropPx))); // keep the grid drawable
+    os = Math.max(1, Math.ceil(subpixAcross / diamPx));
+    os = Math.min(os, Math.max(1, Math.floor(maxGrid / cropPx))); // keep the grid drawable
     m = cropPx * os; step = ifov / os;
   } else {
-    m = Math.ceil(1.25 * MIN_SUBPIX_ACROSS); step = (2 * rho) / MIN_SUBPIX_ACROSS; os = ifov / step;
+    m = Math.ceil(1.25 * subpixAcross); step = (2 * rho) / subpixAcross; os = ifov / step;
   }
   const oc = sub(obs, tgt);
   const cc = dot(oc, oc) - aKm * aKm;
