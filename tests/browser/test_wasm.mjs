@@ -1,0 +1,234 @@
+// SPDX-License-Identifier: MIT
+// test_wasm.mjs: the runtime compiled to wasm32 gives the native double build's results bit for
+// bit: the shipped cases through the JavaScript module (build/wasm/orbillum.js) against
+// build/oi-plan --csv, and every double-precision stability vector (web/wasm/stab_dump.c built
+// natively and for WASI). Run by `make test-wasm` (node --test).
+//
+// Two native runs each: with glibc's generic libm code (GLIBC_TUNABLES hides FMA and AVX2 from
+// its function selection) every number must be the same double; with glibc's default choice
+// within 1 ulp: on a CPU with fused multiply-add glibc runs its FMA variant of exp (and log,
+// pow), which rounds differently from the same algorithm without FMA in rare cases, and wasm
+// has no FMA, so wasi-libc's exp is that algorithm without it (docs/viewer.md).
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import fs from 'node:fs';
+import path from 'node:path';
+import { WASI } from 'node:wasi';
+
+const ROOT = path.resolve(path.dirname(new URL(import.meta.url).pathname), '../..');
+const BUILD = process.env.BUILDDIR ? path.resolve(ROOT, process.env.BUILDDIR) : path.join(ROOT, 'build');
+const { loadOrbillum, parseCsv, PLAN_COLUMNS } = await import(path.join(BUILD, 'wasm/orbillum.js'));
+const oi = await loadOrbillum(fs.readFileSync(path.join(BUILD, 'wasm/orbillum.wasm')));
+
+const f64 = new Float64Array(1);
+const u64 = new BigUint64Array(f64.buffer);
+function bits(x) { f64[0] = x; return u64[0]; }
+/** Distance in units in the last place between two finite doubles of one sign. */
+function ulps(a, b) { const d = bits(a) - bits(b); return d < 0n ? -d : d; }
+
+const CASES = fs.readdirSync(path.join(ROOT, 'tests/golden')).filter((f) => f.endsWith('.in.csv')).sort();
+
+test('the shipped cases exist', () => assert.ok(CASES.length >= 3, CASES.join(' ')));
+
+const GENERIC_LIBM = { ...process.env, GLIBC_TUNABLES: 'glibc.cpu.hwcaps=-AVX2,-FMA' };
+const RUNS = [
+  { what: "glibc's generic libm: bit for bit", env: GENERIC_LIBM, maxUlp: 0n },
+  { what: "glibc's default libm: within 1 ulp", env: process.env, maxUlp: 1n },
+];
+
+for (const name of CASES) for (const run of RUNS) {
+  test(`${name}: wasm through the JavaScript module vs build/oi-plan --csv, ${run.what}`, () => {
+    const input = path.join(ROOT, 'tests/golden', name);
+    const native = parseCsv(execFileSync(path.join(BUILD, 'oi-plan'), ['--csv', input],
+      { encoding: 'utf8', env: run.env }));
+    assert.deepEqual(native[0], PLAN_COLUMNS);
+    const mine = oi.planCsv(fs.readFileSync(input, 'utf8'));
+    assert.equal(mine.error, undefined);
+    assert.equal(mine.rows.length, native.length - 1);
+    let numbers = 0;
+    const differ = [];
+    const near = [];
+    mine.rows.forEach((row, i) => {
+      const want = native[i + 1];
+      PLAN_COLUMNS.forEach((c, k) => {
+        const w = want[k];
+        const got = row[c];
+        if (c === 'id' || c === 'status' || c === 'flags') {
+          assert.equal(got ?? '', w, `row ${i + 1} ${c}`);
+          return;
+        }
+        if (w === '') { assert.equal(got, null, `row ${i + 1} ${c}: the planner leaves it empty`); return; }
+        // the planner prints %.17g (negative zero as 0): the double round-trips exactly
+        const g = got + 0.0 === 0 ? 0 : got;
+        numbers++;
+        if (bits(g) === bits(Number(w))) return;
+        const d = ulps(g, Number(w));
+        (d <= run.maxUlp ? near : differ).push(`row ${i + 1} ${c}: ${g} vs ${w} (${d} ulp)`);
+      });
+    });
+    assert.deepEqual(differ, [], `${differ.length} of ${numbers} numbers differ by more than ${run.maxUlp} ulp`);
+    console.log(`# ${name} (${run.what}): ${mine.rows.length} rows, ${numbers} numbers, ` +
+      `${numbers - near.length} bit-identical${near.length ? `, 1 ulp: ${near.join('; ')}` : ''}`);
+  });
+}
+
+function wasiDump(file) {
+  const out = path.join(BUILD, 'wasm/stab_dump.wasm.txt');
+  const fd = fs.openSync(out, 'w');
+  const wasi = new WASI({ version: 'preview1', args: ['stab_dump'], env: {}, stdout: fd, returnOnExit: true });
+  const mod = new WebAssembly.Module(fs.readFileSync(file));
+  const inst = new WebAssembly.Instance(mod, wasi.getImportObject());
+  const rc = wasi.start(inst);
+  fs.closeSync(fd);
+  assert.equal(rc, 0);
+  return fs.readFileSync(out, 'utf8');
+}
+
+for (const run of RUNS) test(`every double-precision stability vector: wasm vs native, ${run.what}`, () => {
+  const native = execFileSync(path.join(BUILD, 'wasm/stab_dump'), { encoding: 'utf8', env: run.env })
+    .trim().split('\n');
+  const wasm = wasiDump(path.join(BUILD, 'wasm/stab_dump.wasm')).trim().split('\n');
+  assert.equal(wasm.length, native.length);
+  assert.ok(native.length > 500, `${native.length} vectors`);
+  const differ = [];
+  const near = [];
+  const tables = new Set();
+  let outputs = 0;
+  native.forEach((line, i) => {
+    const a = line.split(' ');
+    const b = wasm[i].split(' ');
+    tables.add(a[0]);
+    assert.deepEqual(b.slice(0, 4), a.slice(0, 4), `line ${i + 1}: table, index, status, region`);
+    for (let k = 4; k < a.length; k++) {
+      outputs++;
+      if (a[k] !== b[k]) {
+        let d = BigInt(`0x${a[k]}`) - BigInt(`0x${b[k]}`);
+        if (d < 0n) d = -d;
+        (d <= run.maxUlp ? near : differ).push(`${a[0]}[${a[1]}] output ${k - 4}: ${a[k]} vs ${b[k]} (${d} ulp)`);
+      }
+    }
+  });
+  assert.deepEqual(differ, [], `${differ.length} of ${outputs} outputs differ by more than ${run.maxUlp} ulp`);
+  console.log(`# stability (${run.what}): ${native.length} vectors in ${tables.size} tables, ${outputs} ` +
+    `outputs, ${outputs - near.length} bit-identical${near.length ? `, 1 ulp: ${near.join('; ')}` : ''}`);
+});
+
+test('struct layout comes from the compiler (wasm32: 4-byte pointers, 8-byte oi_real)', () => {
+  assert.equal(oi.layout['sizeof.void *'], 4);
+  assert.equal(oi.layout['sizeof.oi_real'], 8);
+  assert.ok(oi.layout['oi_illum.mag_v'] > oi.layout['oi_illum.flux_obs']);
+  assert.ok(oi.cameras().length >= 1);
+  assert.equal(oi.findCamera(oi.cameras()[0].name).index, 0);
+  assert.equal(oi.findCamera('no such camera'), null);
+});
+
+// The viewer's built-in scenario (web/src/scenario.js) against the planner's own table (oi-plan
+// without --csv): every printed column of every printed row, to the printed digits (half a unit
+// of the last digit). Its positions come from JavaScript's Math.cos/sin, so this check is at the
+// table's precision, not bit for bit.
+test("the viewer's built-in scenario is oi-plan's, to the digits its table prints", async () => {
+  const { builtinScenario, SCENARIO_STEP_S } = await import(path.join(ROOT, 'web/src/scenario.js'));
+  const rows = builtinScenario(oi);
+  const text = execFileSync(path.join(BUILD, 'oi-plan'), { encoding: 'utf8' });
+  const table = text.split('\n').filter((l) => /^ +\d+\.\d\d +\d\.\d{3} /.test(l));
+  assert.ok(table.length >= 40, `${table.length} table rows`);
+  const halfUnit = (s) => {
+    const [m, e] = s.toLowerCase().split('e');
+    const d = m.includes('.') ? m.split('.')[1].length : 0;
+    return 0.5 * 10 ** ((e ? Number(e) : 0) - d) * (1 + 1e-9);
+  };
+  const camera = oi.cameras()[0];
+  const DEG = 180 / Math.PI;
+  let checked = 0;
+  for (const line of table) {
+    const f = line.trim().split(/ +/);
+    const k = Math.round((Number(f[0]) * 60) / SCENARIO_STEP_S);
+    const row = rows[k];
+    assert.ok(Math.abs(row.t_s - Number(f[0]) * 60) < 1e-6);
+    const r = oi.compute(row.scene, row.model, camera);
+    const planned = oi.fillRow({ id: row.id }, r);
+    const il = r.illum;
+    const dx = row.scene.target_km.map((x, i) => x - row.scene.observer_km[i]);
+    const got = [il.shadow.fraction_atm, il.e_sun, il.e_earth, il.e_moon, Math.hypot(...dx),
+      r.expo.sun_angle_rad * DEG, il.mag_v, r.expo.exposure_s, r.expo.gain, r.expo.snr];
+    got.forEach((g, j) => {
+      const want = f[1 + j];
+      assert.ok(Math.abs(g - Number(want)) <= halfUnit(want), `t = ${f[0]} min, column ${j + 2}: ${g} vs ${want}`);
+    });
+    assert.equal(planned.flags, f[11] ?? '', `t = ${f[0]} min flags`);
+    checked++;
+  }
+  console.log(`# built-in scenario: ${checked} rows of oi-plan's table, every column to its printed digits`);
+});
+
+// The stability vectors again, now through the JavaScript module's entry points (the wrappers
+// a page calls, and their struct copies), against the native dump: the same evaluations as
+// tests/stability/evaluators.h, input by input.
+function vectorInputs(name) {
+  const text = fs.readFileSync(path.join(ROOT, 'tests/stability/vectors.h'), 'utf8');
+  const start = text.indexOf(`static const stab_vec stab_${name}_d[] = {`);
+  assert.ok(start >= 0, `no table ${name}`);
+  const block = text.slice(start, text.indexOf('\n};', start));
+  return block.split('\n').filter((l) => /^\s*\{\{/.test(l)).map((l) => l.match(/^\s*\{\{([^}]*)\}/)[1].split(',').map(Number));
+}
+
+const STAB_CAMERA = { aperture_m: 0.15, focal_length_m: 1.2, pixel_pitch_m: 5.5e-6, transmission: 0.8,
+  quantum_efficiency: 0.6, band_fraction: 0.4, photon_energy_j: 3.6e-19, full_well_e: 30000, dark_current_e_s: 10,
+  psf_peak_fraction: 0.3, fov_rad: 0.02, sun_exclusion_rad: 0.5, times_s: [1e-4, 1e-3, 1e-2, 0.1, 1, 10],
+  gains: [1, 4, 16], read_noise_e: [10, 4, 2] }; // gen_vectors.py CAM, as evaluators.h test_camera
+
+const JS_EVAL = {
+  phase: (v) => [0, -1, [oi.x.oi_lambert_phase(v[0])]],
+  moon: (v) => [0, -1, [oi.x.oi_moon_phase_law(v[0])]],
+  angle: (v) => [0, -1, [oi.angle(v.slice(0, 3), v.slice(3, 6))]],
+  overlap: (v) => [0, -1, [oi.x.oi_cap_overlap(v[0], v[1], v[2])]],
+  shadow: (v) => {
+    const { status, shadow: s } = oi.sunFraction(v.slice(0, 3), v.slice(3, 6), { no_atmosphere: 1 });
+    return [status, s.region, [s.fraction, s.sun_radius_rad, s.earth_radius_rad, s.separation_rad, s.sun_distance_km, s.fraction_ld]];
+  },
+  magnitude: (v) => [0, -1, [oi.x.oi_magnitude_v(v[0], 0)]],
+  earth_lambert: (v) => {
+    const r = oi.earthshine(v[0], v[1], { earth_model: oi.c.OI_EARTH_LAMBERT });
+    return [r.psi !== 0 ? -100 : (r.status > 0 ? 0 : r.status), -1, [r.phi]];
+  },
+  illum: (v) => {
+    const r = oi.compute({ sun_km: v.slice(0, 3), target_km: v.slice(3, 6), observer_km: v.slice(6, 9), has_observer: true,
+      terms: oi.c.OI_TERM_SUN | oi.c.OI_TERM_EARTH, earth_albedo: 0.3, target_albedo: 0.2, target_radius_m: 1 },
+    { no_atmosphere: 1, earth_model: oi.c.OI_EARTH_LAMBERT }, null);
+    const o = r.illum ?? {};
+    return [r.status > 0 ? 0 : r.status, -1, [o.e_sun, o.e_earth, o.earth_theta, o.earth_h_km, o.flux_sun, o.mag_v, o.flux_obs]];
+  },
+  earth_table: (v) => { const r = oi.earthshine(v[0], v[1]); return [r.status, -1, [r.phi, r.psi]]; },
+  camera: (v) => {
+    const cam = oi.writeCamera(STAB_CAMERA);
+    const { status, expo: e } = oi.expose(cam, v[0], v[1]);
+    return [status, e.time_index * 100 + e.gain_index * 10 + ((e.flags >>> 3) & 3), [e.signal_e, e.background_e, e.peak_e, e.fill, e.snr]];
+  },
+};
+
+for (const run of RUNS) test(`every double-precision stability vector through the JavaScript module vs native, ${run.what}`, () => {
+  const native = execFileSync(path.join(BUILD, 'wasm/stab_dump'), { encoding: 'utf8', env: run.env }).trim().split('\n')
+    .map((l) => l.split(' '));
+  const inputs = {};
+  const differ = [];
+  const near = [];
+  let outputs = 0;
+  for (const [name, idx, st, region, ...want] of native) {
+    inputs[name] = inputs[name] ?? vectorInputs(name);
+    const v = inputs[name][Number(idx)];
+    const [gst, gregion, got] = JS_EVAL[name](v);
+    assert.equal(gst, Number(st), `${name}[${idx}] status`);
+    if (name === 'shadow' || name === 'camera') assert.equal(gregion, Number(region), `${name}[${idx}] region`);
+    want.forEach((w, k) => {
+      outputs++;
+      const g = bits(got[k] ?? 0);
+      const d = g > BigInt(`0x${w}`) ? g - BigInt(`0x${w}`) : BigInt(`0x${w}`) - g;
+      if (d === 0n) return;
+      (d <= run.maxUlp ? near : differ).push(`${name}[${idx}] output ${k}: ${got[k]} (${d} ulp)`);
+    });
+  }
+  assert.deepEqual(differ, [], `${differ.length} of ${outputs} outputs differ by more than ${run.maxUlp} ulp`);
+  console.log(`# stability through orbillum.js (${run.what}): ${native.length} vectors, ${outputs} outputs, ` +
+    `${outputs - near.length} bit-identical${near.length ? `, 1 ulp: ${near.join('; ')}` : ''}`);
+});

@@ -1,0 +1,474 @@
+// SPDX-License-Identifier: MIT
+// orbillum.js: the flight runtime compiled to WebAssembly, called from JavaScript (browser or node).
+//
+// Structs are laid out in the module's scratch memory at the offsets the compiler reports
+// (web/wasm/oi_wasm.c exports them): no offset is typed here. planCsv() applies the planner's
+// batch rules (examples/oi_plan/batch.c) to a planner input CSV, row by row, so its numbers
+// are the ones `oi-plan --csv` prints for the same rows.
+
+const RAD_TO_DEG = 180.0 / 3.14159265358979323846;
+
+/** Load the module: `source` is a URL (browser), or the bytes (ArrayBuffer / Uint8Array). */
+export async function loadOrbillum(source) {
+  let instance;
+  if (source instanceof ArrayBuffer || ArrayBuffer.isView(source)) {
+    ({ instance } = await WebAssembly.instantiate(source, {}));
+  } else {
+    const response = await fetch(source);
+    const bytes = await response.arrayBuffer();
+    ({ instance } = await WebAssembly.instantiate(bytes, {}));
+  }
+  return new Orbillum(instance);
+}
+
+/** Text of a CSV (RFC 4180 as the planner reads it): records of trimmed fields, blank lines skipped. */
+export function parseCsv(text) {
+  const records = [];
+  let i = 0;
+  if (text.charCodeAt(0) === 0xfeff) i = 1;
+  const n = text.length;
+  while (i < n) {
+    const fields = [];
+    let content = false;
+    for (;;) {
+      while (i < n && (text[i] === ' ' || text[i] === '\t')) i++;
+      let field = '';
+      if (text[i] === '"') {
+        content = true;
+        i++;
+        for (;;) {
+          if (i >= n) throw new Error('a quote never closed');
+          if (text[i] === '"') {
+            if (text[i + 1] === '"') { field += '"'; i += 2; continue; }
+            i++;
+            break;
+          }
+          field += text[i++];
+        }
+        while (i < n && (text[i] === ' ' || text[i] === '\t')) i++;
+      } else {
+        const start = i;
+        while (i < n && text[i] !== ',' && text[i] !== '\n' && text[i] !== '\r') i++;
+        field = text.slice(start, i).replace(/[ \t]+$/, '');
+        if (field !== '') content = true;
+      }
+      fields.push(field);
+      if (i < n && text[i] === ',') { content = true; i++; continue; }
+      break;
+    }
+    if (text[i] === '\r') i++;
+    if (text[i] === '\n') i++;
+    if (content) records.push(fields);
+  }
+  return records;
+}
+
+/* strtod's syntax as the planner accepts it: 0 = number, 1 = empty, -1 = not a number. */
+function parseReal(s) {
+  const t = s.replace(/^[ \t]+|[ \t]+$/g, '');
+  if (t === '') return [1, 0];
+  if (/^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/.test(t)) return [0, Number(t)];
+  if (/^[+-]?inf(inity)?$/i.test(t)) return [0, t[0] === '-' ? -Infinity : Infinity];
+  if (/^[+-]?nan(\([0-9A-Za-z_]*\))?$/i.test(t)) return [0, NaN];
+  return [-1, 0];
+}
+
+const COLUMNS = ['id', 'sun_x', 'sun_y', 'sun_z', 'target_x', 'target_y', 'target_z',
+  'moon_x', 'moon_y', 'moon_z', 'observer_x', 'observer_y', 'observer_z', 'terms',
+  'earth_albedo', 'target_albedo', 'target_radius_m', 'camera', 'atmosphere'];
+
+/** The planner's output columns, in its order. */
+export const PLAN_COLUMNS = ['id', 'status', 'sun_fraction', 'sun_fraction_atm', 'e_sun',
+  'e_earth', 'e_moon', 'earth_theta_deg', 'earth_h_km', 'flux_obs', 'mag_v', 'exposure_s',
+  'gain', 'snr', 'flags'];
+
+export class Orbillum {
+  constructor(instance) {
+    this.x = instance.exports;
+    this.memory = this.x.memory;
+    this.layout = {};
+    const count = this.x.oi_wasm_layout_count();
+    for (let k = 0; k < count; k++) {
+      this.layout[this.cString(this.x.oi_wasm_layout_name(k))] = this.x.oi_wasm_layout_value(k);
+    }
+    const L = this.layout;
+    if (L['sizeof.oi_real'] !== 8) throw new Error('the viewer needs the double-precision build');
+    if (L['sizeof.void *'] !== 4) throw new Error('unexpected pointer size');
+    this.c = {};
+    for (const [k, v] of Object.entries(L)) if (k.startsWith('const.')) this.c[k.slice(6)] = v;
+    // scratch slots, each 8-byte aligned
+    const base = this.x.oi_wasm_scratch();
+    let at = base;
+    const slot = (bytes) => { const p = at; at += Math.ceil(bytes / 8) * 8; return p; };
+    this.p = {
+      scene: slot(L['sizeof.oi_scene']), model: slot(L['sizeof.oi_model']),
+      illum: slot(L['sizeof.oi_illum']), expo: slot(L['sizeof.oi_exposure']),
+      camera: slot(L['sizeof.oi_camera']), goal: slot(L['sizeof.oi_expose_goal']),
+      expoIn: slot(L['sizeof.oi_expose_in']),
+      name: slot(256), vecs: slot(24 * 4),
+    };
+    if (at - base > this.x.oi_wasm_scratch_bytes()) throw new Error('scratch area too small');
+    this.cameraList = [];
+    for (let i = 0; ; i++) {
+      const ptr = this.x.oi_camera_builtin(i);
+      if (ptr === 0) break;
+      this.cameraList.push(this.readCamera(ptr, i));
+    }
+  }
+
+  // one view of the memory, renewed only if the memory grew (the runtime allocates nothing)
+  get dv() {
+    if (!this.view || this.view.buffer !== this.memory.buffer) this.view = new DataView(this.memory.buffer);
+    return this.view;
+  }
+
+  cString(ptr) {
+    if (!ptr) return null;
+    const b = new Uint8Array(this.memory.buffer);
+    let e = ptr;
+    while (b[e] !== 0) e++;
+    return new TextDecoder().decode(b.subarray(ptr, e));
+  }
+
+  off(struct, field) {
+    const v = this.layout[`${struct}.${field}`];
+    if (v === undefined) throw new Error(`no layout for ${struct}.${field}`);
+    return v;
+  }
+
+  getR(ptr, s, f, k = 0) { return this.dv.getFloat64(ptr + this.off(s, f) + 8 * k, true); }
+  setR(ptr, s, f, v, k = 0) { this.dv.setFloat64(ptr + this.off(s, f) + 8 * k, v, true); }
+  getI(ptr, s, f) { return this.dv.getInt32(ptr + this.off(s, f), true); }
+  setI(ptr, s, f, v) { this.dv.setInt32(ptr + this.off(s, f), v, true); }
+  getU(ptr, s, f) { return this.dv.getUint32(ptr + this.off(s, f), true); }
+  setU(ptr, s, f, v) { this.dv.setUint32(ptr + this.off(s, f), v >>> 0, true); }
+  get3(ptr, s, f) { return [0, 1, 2].map((k) => this.getR(ptr, s, f, k)); }
+  set3(ptr, s, f, v) { for (let k = 0; k < 3; k++) this.setR(ptr, s, f, v[k], k); }
+
+  readCamera(ptr, index) {
+    const S = 'oi_camera';
+    const cam = { index, ptr, name: this.cString(this.dv.getUint32(ptr + this.off(S, 'name'), true)) };
+    for (const f of ['aperture_m', 'focal_length_m', 'pixel_pitch_m', 'transmission',
+      'quantum_efficiency', 'band_fraction', 'photon_energy_j', 'full_well_e',
+      'dark_current_e_s', 'psf_peak_fraction', 'fov_rad', 'sun_exclusion_rad']) {
+      cam[f] = this.getR(ptr, S, f);
+    }
+    const nt = this.getI(ptr, S, 'n_times');
+    const ng = this.getI(ptr, S, 'n_gains');
+    cam.times_s = Array.from({ length: nt }, (_, k) => this.getR(ptr, S, 'times_s', k));
+    cam.gains = Array.from({ length: ng }, (_, k) => this.getR(ptr, S, 'gains', k));
+    cam.read_noise_e = Array.from({ length: ng }, (_, k) => this.getR(ptr, S, 'read_noise_e', k));
+    return cam;
+  }
+
+  /** The built-in cameras, as the runtime defines them. */
+  cameras() { return this.cameraList; }
+
+  /** Camera by exact name (oi_camera_find); null if none. */
+  findCamera(name) {
+    const bytes = new TextEncoder().encode(name);
+    if (bytes.length > 255) return null;
+    const b = new Uint8Array(this.memory.buffer);
+    b.set(bytes, this.p.name);
+    b[this.p.name + bytes.length] = 0;
+    const ptr = this.x.oi_camera_find(this.p.name);
+    return ptr === 0 ? null : this.cameraList.find((c) => c.ptr === ptr);
+  }
+
+  statusName(st) { return this.cString(this.x.oi_status_name(st)); }
+
+  /** Flag names of a mask, lowest bit first, joined by '+' (as the planner prints them). */
+  flagNames(flags) {
+    const names = [];
+    for (let bit = 1; bit !== 0 && bit <= flags; bit = (bit << 1) >>> 0) {
+      if (!(flags & bit)) continue;
+      names.push(this.cString(this.x.oi_flag_name(bit)) ?? 'unknown');
+    }
+    return names.join('+');
+  }
+
+  /* Write a scene (defaults first, then the given fields) and a model into scratch. */
+  writeScene(scene) {
+    const p = this.p.scene;
+    const S = 'oi_scene';
+    this.x.oi_scene_defaults(p);
+    for (const f of ['sun_km', 'moon_km', 'target_km', 'observer_km']) {
+      if (scene[f]) this.set3(p, S, f, scene[f]);
+    }
+    if (scene.has_observer !== undefined) this.setI(p, S, 'has_observer', scene.has_observer ? 1 : 0);
+    if (scene.terms !== undefined) this.setU(p, S, 'terms', scene.terms);
+    for (const f of ['earth_albedo', 'target_albedo', 'target_radius_m']) {
+      if (scene[f] !== undefined) this.setR(p, S, f, scene[f]);
+    }
+    return p;
+  }
+
+  writeModel(model = {}) {
+    const p = this.p.model;
+    new Uint8Array(this.memory.buffer, p, this.layout['sizeof.oi_model']).fill(0);
+    const M = 'oi_model';
+    for (const f of ['tsi_w_m2', 'au_km', 'sun_radius_km', 'earth_radius_km', 'moon_radius_km', 'moon_albedo']) {
+      if (model[f] !== undefined) this.setR(p, M, f, model[f]);
+    }
+    for (const f of ['earth_model', 'moon_model', 'limb_darkening', 'no_atmosphere']) {
+      if (model[f] !== undefined) this.setI(p, M, f, model[f] ? Number(model[f]) : 0);
+    }
+    return p;
+  }
+
+  readIllum(p) {
+    const I = 'oi_illum';
+    const sh = p + this.off(I, 'shadow');
+    const H = 'oi_shadow';
+    const out = {
+      shadow: {
+        fraction: this.getR(sh, H, 'fraction'), fraction_ld: this.getR(sh, H, 'fraction_ld'),
+        fraction_atm: this.getR(sh, H, 'fraction_atm'), sun_radius_rad: this.getR(sh, H, 'sun_radius_rad'),
+        earth_radius_rad: this.getR(sh, H, 'earth_radius_rad'),
+        separation_rad: this.getR(sh, H, 'separation_rad'),
+        sun_distance_km: this.getR(sh, H, 'sun_distance_km'), region: this.getI(sh, H, 'region'),
+      },
+    };
+    for (const f of ['e_sun', 'e_earth', 'e_moon', 'earth_theta', 'earth_h_km', 'earth_phi',
+      'earth_psi', 'moon_sun_fraction', 'phase_sun', 'phase_earth', 'phase_moon', 'flux_sun',
+      'flux_earth', 'flux_moon', 'flux_obs', 'mag_v', 'range_km']) {
+      out[f] = this.getR(p, I, f);
+    }
+    for (const f of ['dir_sun', 'dir_earth', 'dir_moon']) out[f] = this.get3(p, I, f);
+    return out;
+  }
+
+  readExposure(p) {
+    const E = 'oi_exposure';
+    const out = {};
+    for (const f of ['exposure_s', 'gain', 'signal_e', 'background_e', 'peak_e', 'saturation_e',
+      'fill', 'snr', 'sun_angle_rad']) out[f] = this.getR(p, E, f);
+    out.time_index = this.getI(p, E, 'time_index');
+    out.gain_index = this.getI(p, E, 'gain_index');
+    out.flags = this.getU(p, E, 'flags');
+    return out;
+  }
+
+  /**
+   * oi_illuminate and, with an observer, oi_expose_scene on one scene.
+   * camera: a camera of cameras(); manual: null (the runtime's choice) or {time_s, gain_index}
+   * (the runtime then exposes with that one time and gain: a copy of the camera that has only them).
+   * Returns {status, illum, expo (or null), expoStatus}.
+   */
+  compute(scene, model, camera, manual = null) {
+    const ps = this.writeScene(scene);
+    const pm = this.writeModel(model);
+    const st = this.x.oi_illuminate(ps, pm, this.p.illum);
+    const out = { status: st, illum: null, expo: null, expoStatus: 0 };
+    if (st < 0) return out;
+    out.illum = this.readIllum(this.p.illum);
+    if (!scene.has_observer || !camera) return out;
+    let cptr = camera.ptr;
+    if (manual) {
+      const C = 'oi_camera';
+      const size = this.layout['sizeof.oi_camera'];
+      const b = new Uint8Array(this.memory.buffer);
+      b.copyWithin(this.p.camera, camera.ptr, camera.ptr + size);
+      cptr = this.p.camera;
+      this.setI(cptr, C, 'n_times', 1);
+      this.setR(cptr, C, 'times_s', manual.time_s, 0);
+      this.setI(cptr, C, 'n_gains', 1);
+      this.setR(cptr, C, 'gains', camera.gains[manual.gain_index], 0);
+      this.setR(cptr, C, 'read_noise_e', camera.read_noise_e[manual.gain_index], 0);
+    }
+    const st2 = this.x.oi_expose_scene(cptr, ps, this.p.illum, pm, 0, this.p.expo);
+    out.expoStatus = st2;
+    if (st2 >= 0) {
+      out.expo = this.readExposure(this.p.expo);
+      if (manual) out.expo.gain_index = manual.gain_index;
+    }
+    return out;
+  }
+
+  /* Scratch pointers for small arrays: vectors after the struct slots. */
+  vecs(...vs) {
+    const base = this.p.vecs;
+    vs.forEach((v, k) => { for (let i = 0; i < 3; i++) this.dv.setFloat64(base + 24 * k + 8 * i, v[i], true); });
+    return vs.map((_, k) => base + 24 * k);
+  }
+
+  /** oi_angle(a, b). */
+  angle(a, b) { const [pa, pb] = this.vecs(a, b); return this.x.oi_angle(pa, pb); }
+
+  /** oi_sun_fraction: {status, shadow}. */
+  sunFraction(sun, point, model = {}) {
+    const [ps, pp] = this.vecs(sun, point);
+    const pm = this.writeModel(model);
+    const out = this.p.illum + this.off('oi_illum', 'shadow');
+    const st = this.x.oi_sun_fraction(ps, pp, pm, out);
+    return { status: st, shadow: this.readIllum(this.p.illum).shadow };
+  }
+
+  /** oi_earthshine: {status, phi, psi}. */
+  earthshine(theta, hKm, model = null) {
+    const pm = model ? this.writeModel(model) : 0;
+    const [pphi] = this.vecs([0, 0, 0]);
+    const st = this.x.oi_earthshine(theta, hKm, pm, pphi, pphi + 8);
+    return { status: st, phi: this.dv.getFloat64(pphi, true), psi: this.dv.getFloat64(pphi + 8, true) };
+  }
+
+  /** A camera of the caller's (the fields of cameras()' entries) in the scratch camera slot. */
+  writeCamera(spec) {
+    const p = this.p.camera;
+    const C = 'oi_camera';
+    new Uint8Array(this.memory.buffer, p, this.layout['sizeof.oi_camera']).fill(0);
+    for (const f of ['aperture_m', 'focal_length_m', 'pixel_pitch_m', 'transmission',
+      'quantum_efficiency', 'band_fraction', 'photon_energy_j', 'full_well_e',
+      'dark_current_e_s', 'psf_peak_fraction', 'fov_rad', 'sun_exclusion_rad']) this.setR(p, C, f, spec[f]);
+    this.setI(p, C, 'n_times', spec.times_s.length);
+    spec.times_s.forEach((t, k) => this.setR(p, C, 'times_s', t, k));
+    this.setI(p, C, 'n_gains', spec.gains.length);
+    spec.gains.forEach((g, k) => this.setR(p, C, 'gains', g, k));
+    spec.read_noise_e.forEach((r, k) => this.setR(p, C, 'read_noise_e', r, k));
+    return { ...spec, ptr: p };
+  }
+
+  /** oi_expose on a photometric input (default goal): {status, expo}. */
+  expose(camera, flux, background, flags = 0) {
+    const E = 'oi_expose_in';
+    const p = this.p.expoIn;
+    this.setR(p, E, 'flux_w_m2', flux);
+    this.setR(p, E, 'background_w_m2_sr', background);
+    this.setU(p, E, 'flags', flags);
+    const st = this.x.oi_expose(camera.ptr, p, 0, this.p.expo);
+    return { status: st, expo: this.readExposure(this.p.expo) };
+  }
+
+  /**
+   * The planner's batch on a CSV text: {columns, rows, error}. Each row has the planner's
+   * output fields (numbers as doubles, null where the planner leaves the field empty), and
+   * `scene`, `camera`, `result` (compute()'s answer) for drawing it.
+   */
+  planCsv(text, defaultCamera = null) {
+    const records = parseCsv(text);
+    if (records.length === 0) return { error: 'empty input: no header row', rows: [] };
+    const header = records[0];
+    const col = {};
+    for (const c of COLUMNS) col[c] = -1;
+    header.forEach((h, i) => {
+      const k = h.toLowerCase();
+      if (k in col && col[k] < 0) col[k] = i;
+    });
+    for (const c of ['sun_x', 'sun_y', 'sun_z', 'target_x', 'target_y', 'target_z']) {
+      if (col[c] < 0) return { error: `missing required column '${c}'`, rows: [] };
+    }
+    const cam0 = defaultCamera ?? this.cameraList[0];
+    const rows = records.slice(1).map((fields, k) => this.planRow(header.length, col, fields, k + 1, cam0));
+    return { columns: PLAN_COLUMNS, rows };
+  }
+
+  planRow(nHeader, col, fields, rowNumber, defaultCamera) {
+    const row = { id: col.id >= 0 ? (fields[col.id] ?? '') : String(rowNumber), status: 'ERR_PARSE' };
+    for (const c of PLAN_COLUMNS.slice(2)) row[c] = null;
+    row.flags = null;
+    const field = (name) => (col[name] < 0 ? null : (fields[col[name]] ?? ''));
+    if (fields.length < nHeader) {
+      for (const c of COLUMNS) if (col[c] >= 0 && col[c] >= fields.length) return row;
+    }
+    const vec = (base, required) => {
+      const v = [0, 0, 0];
+      let given = 0;
+      for (let k = 0; k < 3; k++) {
+        const s = field(`${base}_${'xyz'[k]}`);
+        if (s === null) return [0, null];
+        const [st, x] = parseReal(s);
+        if (st < 0) return [-1, null];
+        if (st === 0) { given++; v[k] = x; }
+      }
+      if (given === 3) return [1, v];
+      if (given === 0 && !required) return [0, null];
+      return [-1, null];
+    };
+    const [sSun, sun] = vec('sun', true);
+    if (sSun < 0) return row;
+    const [sTgt, target] = vec('target', true);
+    if (sTgt < 0) return row;
+    const [hasMoon, moon] = vec('moon', false);
+    if (hasMoon < 0) return row;
+    const [hasObs, observer] = vec('observer', false);
+    if (hasObs < 0) return row;
+    const C = this.c;
+    let terms = C.OI_TERM_SUN | C.OI_TERM_EARTH | (hasMoon ? C.OI_TERM_MOON : 0);
+    const ts = field('terms');
+    if (ts !== null && ts !== '') {
+      let t = 0;
+      let all = false;
+      for (const tok of ts.split('+')) {
+        const w = tok.trim().toLowerCase();
+        if (w === 'sun') t |= C.OI_TERM_SUN;
+        else if (w === 'earth') t |= C.OI_TERM_EARTH;
+        else if (w === 'moon') t |= C.OI_TERM_MOON;
+        else if (w === 'all') all = true;
+        else return row;
+      }
+      if (all) t |= C.OI_TERM_SUN | C.OI_TERM_EARTH | (hasMoon ? C.OI_TERM_MOON : 0);
+      if ((t & C.OI_TERM_MOON) && !hasMoon) return row;
+      terms = t;
+    }
+    const scene = { sun_km: sun, target_km: target, terms, has_observer: hasObs === 1 };
+    if (moon) scene.moon_km = moon;
+    if (observer) scene.observer_km = observer;
+    for (const f of ['earth_albedo', 'target_albedo', 'target_radius_m']) {
+      const s = field(f);
+      if (s === null) continue;
+      const [st, x] = parseReal(s);
+      if (st < 0) return row;
+      if (st === 0) scene[f] = x;
+    }
+    let atm = 1;
+    const as = field('atmosphere');
+    if (as !== null) {
+      const [st, x] = parseReal(as);
+      if (st < 0) return row;
+      if (st === 0) atm = x;
+    }
+    if (atm !== 0 && atm !== 1) return row;
+    const model = { no_atmosphere: atm === 0 ? 1 : 0 };
+    let camera = defaultCamera;
+    const cs = field('camera');
+    if (cs !== null && cs !== '') {
+      camera = this.findCamera(cs);
+      if (!camera) { row.status = this.statusName(C.OI_ERR_CAMERA); return row; }
+    }
+    row.scene = scene;
+    row.model = model;
+    row.camera = camera;
+    return this.fillRow(row, this.compute(scene, model, camera));
+  }
+
+  /** Planner fields of a row from compute()'s result (as examples/oi_plan/output.c prints them). */
+  fillRow(row, r) {
+    row.result = r;
+    row.status = this.statusName(r.status);
+    if (r.status < 0) return row;
+    if (r.expoStatus < 0) { row.status = this.statusName(r.expoStatus); return row; }
+    const il = r.illum;
+    const C = this.c;
+    let flags = 0;
+    if (il.shadow.region === C.OI_SHADOW_UMBRA) flags |= C.OI_FLAG_ECLIPSED;
+    else if (il.shadow.region !== C.OI_SHADOW_LIT) flags |= C.OI_FLAG_PENUMBRA;
+    row.sun_fraction = il.shadow.fraction;
+    row.sun_fraction_atm = il.shadow.fraction_atm;
+    row.e_sun = il.e_sun;
+    row.e_earth = il.e_earth;
+    row.e_moon = il.e_moon;
+    row.earth_theta_deg = il.earth_theta * RAD_TO_DEG;
+    row.earth_h_km = il.earth_h_km;
+    if (r.expo) {
+      flags = r.expo.flags;
+      row.flux_obs = il.flux_obs;
+      row.mag_v = il.mag_v;
+      row.exposure_s = r.expo.exposure_s;
+      row.gain = r.expo.gain;
+      row.snr = r.expo.snr;
+    }
+    row.flagBits = flags;
+    row.flags = this.flagNames(flags);
+    return row;
+  }
+}
