@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""The earthshine quadrature reference (bake/reference.py) against closed
+"""The earthshine quadrature reference (bake/earthshine/reference.py) against closed
 forms, limits, symmetry, an independent mpmath integration and itself at a
 higher order."""
 
@@ -12,7 +12,7 @@ import pytest
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", ".."))
 
-from bake import reference as ref  # noqa: E402
+from bake.earthshine import reference as ref  # noqa: E402
 
 XS = np.array([0.999, 0.98456, 0.9, 0.7, 0.5, 0.2, 0.05, 0.0166, 1e-3])
 

@@ -3,9 +3,9 @@
 
 import math
 
-from . import __version__
-from .common import emit as cemit
-from .common.emit import c_double, c_float, f32  # noqa: F401  (re-exported)
+from .. import __version__
+from ..common import emit as cemit
+from ..common.emit import c_double, c_float, f32  # noqa: F401  (re-exported)
 
 TABLE_FORMAT = 4  # OI_TABLE_FORMAT in include/oi_table.h
 GENERATOR = "bake.earthshine"
@@ -57,7 +57,7 @@ def provenance_lines(meta):
 
 
 def table(name, spec, q, psi, meta):
-    """The Table of one earthshine bake (meta: see bake/scene.py)."""
+    """The Table of one earthshine bake (meta: see bake/earthshine/scenes.py)."""
     q32 = f32(q)
     p32 = f32(psi)
     if q32.shape != (spec.n_alt, spec.n_theta) or p32.shape != q32.shape:
