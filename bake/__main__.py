@@ -46,8 +46,6 @@ def outputs(target, scenes=()):
     if target in ("atmosphere", "all") and not scenes:
         from .atmosphere import table as at
         out += ["%s/%s.%s" % (TABLES, at.NAME, e) for e in ("c", "h", "json")]
-        if at.COMPAT_HEADER:
-            out.append("%s/oi_atm_table.h" % TABLES)
     return out
 
 

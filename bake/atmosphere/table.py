@@ -18,16 +18,17 @@ import numpy as np
 from .. import __version__
 from ..common import emit as cemit
 from ..common.constants import AU_KM, SUN_RADIUS_KM
-from ..common.emit import c_double, round_sig
+from ..common.emit import round_sig
 from ..common.progress import Progress
 from . import profile as ap
 from . import rays as ar
-from .measure import MEASURE_SEED, measure
+from .measure import measure
 from .quantise import quantise
-from .window import (ALPHA_C, ALPHA_C_REL_TOL, F_FLOOR, H_A, N_BISECT, NA, NB, ND, NT, NZ, V_MID,
+from .window import (ALPHA_C, ALPHA_C_REL_TOL, F_FLOOR, H_A, NA, NB, ND, NT, NZ, V_MID,
                      W_RHO, Z_MAX, Z_MIN, Window, grid_d, grid_z, load_config)
 
 CFG = load_config()
+MEASURE_SEED = int(CFG["measure"]["seed"])
 
 
 def reach(rays: ar.Rays) -> float:
@@ -64,9 +65,6 @@ NAME = "oi_atm_vband"
 TABLE_FORMAT = 3         # OI_ATM_FORMAT in include/oi_table.h
 GENERATOR = "bake.atmosphere"
 GOAL_ABS_F = float(CFG["goal_abs_f"])  # goal: max |F error| of the lookup (absolute fraction)
-# Transitional: tables/oi_atm_table.h with the former macros, read by
-# src/atmosphere.c and tests/c/test_atmosphere.c until they take the struct.
-COMPAT_HEADER = True
 LAYOUT = ("format", "kind", "info", "nz", "nt", "na", "nb", "z_min_km", "z_max_km", "h_a_km",
           "v_mid_km", "alpha_c_rad", "h_c_km", "top_km", "w_rho", "f_floor", "earth_radius_km",
           "sun_radius_km", "au_km", "q_min", "q_scale", "psi_min_rad", "psi_scale_rad", "e_mid",
@@ -127,9 +125,6 @@ def table(uq, up, scales, alpha_c, h_c, err, profile: ap.Profile, alpha_c_comput
         f"  max psi error where F > 1e-3: {err['max_psi_error_rad_F_gt_1e-3']:.3e} rad.",
     ]
     grid = dict(ints + reals[:12])
-    compat = None
-    if COMPAT_HEADER:
-        compat = True
     t = cemit.Table(
         name=NAME, kind="atmosphere", ctype="oi_atm_table", format=("OI_ATM_FORMAT", TABLE_FORMAT),
         summary="baked atmosphere table (V band): sunlight refracted into the shadow.",
@@ -138,43 +133,12 @@ def table(uq, up, scales, alpha_c, h_c, err, profile: ap.Profile, alpha_c_comput
         generator=GENERATOR, version=__version__, parameters=params, seed=MEASURE_SEED,
         goal=GOAL_ABS_F, max_error=cemit.round_sig(err["max_abs_error"] / GOAL_ABS_F),
         measured=err, grid=grid, provenance=prov)
-    t.compat = compat and dict(ints + reals)
     return t
 
 
 def write(outdir, t):
-    """Write outdir/oi_atm_vband.{c,h,json} (and the transitional header)."""
-    paths = cemit.write(outdir, t)
-    if t.compat:
-        p = os.path.join(outdir, "oi_atm_table.h")
-        with open(p, "w", encoding="ascii", newline="\n") as f:
-            f.write(compat_header(t))
-        paths.append(p)
-    return paths
-
-
-def compat_header(t):
-    """Text of the transitional tables/oi_atm_table.h (the former macros)."""
-    c = t.compat
-    lines = ["/* SPDX-License-Identifier: MIT */",
-             "/*",
-             " * oi_atm_table.h: transitional names of the atmosphere table %s" % t.name,
-             " * for src/atmosphere.c and tests/c/test_atmosphere.c until they read the",
-             " * struct (generated with it by `python -m bake atmosphere`; do not edit).",
-             " */",
-             "#ifndef OI_ATM_TABLE_H", "#define OI_ATM_TABLE_H", "",
-             '#include "%s.h"' % t.name, "",
-             "#define OI_ATM_TABLE_FORMAT 2",
-             "#define OI_ATM_NZ (%d)" % c["nz"], "#define OI_ATM_NT (%d)" % c["nt"],
-             "#define OI_ATM_NA (%d)" % c["na"], "#define OI_ATM_NB (%d)" % c["nb"],
-             "#define OI_ATM_N_BISECT (%d)" % N_BISECT]
-    for k in ("z_min_km", "z_max_km", "h_a_km", "v_mid_km", "alpha_c_rad", "h_c_km", "top_km",
-              "w_rho", "f_floor", "earth_radius_km", "sun_radius_km", "au_km", "q_min", "q_scale",
-              "psi_min_rad", "psi_scale_rad"):
-        lines.append("#define OI_ATM_%s (%s)" % (k.upper(), c_double(c[k])))
-    lines += ["#define oi__atm_q (%s.q)" % t.name, "#define oi__atm_psi (%s.psi)" % t.name,
-              "", "#endif /* OI_ATM_TABLE_H */", ""]
-    return "\n".join(lines)
+    """Write outdir/oi_atm_vband.{c,h,json}."""
+    return cemit.write(outdir, t)
 
 
 def run(outdir, progress=None, log=print):
@@ -184,7 +148,7 @@ def run(outdir, progress=None, log=print):
     q, psi, alpha_c, h_c = bake(rays, progress=progress)
     uq, up, q, psi, scales = quantise(q, psi)     # measure what the runtime stores
     err, _ = measure(rays, q, psi, alpha_c, h_c, n=int(CFG["measure"]["n_points"]),
-                     seed=int(CFG["measure"]["seed"]), progress=progress)
+                     seed=MEASURE_SEED, progress=progress)
     t = table(uq, up, scales, alpha_c, h_c, err, prof, alpha_c_computed=reach(rays))
     paths = write(outdir, t)
     log("%s: %d bytes, max |dF| %.3e (%.3f of the goal)" % (

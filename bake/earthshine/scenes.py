@@ -12,7 +12,6 @@ import json
 import math
 import time
 
-import numpy as np
 
 from .. import __version__
 from . import grid

@@ -15,7 +15,7 @@ import numpy as np
 from ..common.constants import R_EARTH_KM as R
 from ..earthshine.reference import phi_psi_reference
 from ..photon import mapping as photon
-from ..photon.mapping import bake_phi, gather, gather_function, photon_map
+from ..photon.mapping import gather, gather_function, photon_map
 from ..photon.shells import Atmosphere
 
 GOAL = 1e-3            # the goal: max relative error where phi >= 1% of phi(0, x)
