@@ -87,7 +87,7 @@ def phase_points(prec):
         pts.add(rnd(mp.pi * i / 200, prec))
     # within 1e-8 of 0 and of pi, log-spaced offsets, and ulps of pi
     for e in np.arange(-16.0, -0.5, 0.5):
-        off = 10.0 ** e
+        off = mp.mpf(10) ** mp.mpf(float(e))  # exact exponent, correctly rounded below
         pts.add(rnd(off, prec))
         pts.add(rnd(mp.pi - off, prec))
     pd = rnd(mp.pi, prec)
@@ -361,21 +361,26 @@ def sun_cases():
     # random geometries (fixed seed): Sun 0.983-1.017 AU in a random direction,
     # altitude log-uniform 1 m .. 2e6 km, separation across the penumbra and
     # 20 % beyond either edge
+    # (the draws in double, everything after them in mpmath: no libm or BLAS
+    # last bits in the inputs)
     rng = np.random.default_rng(20261122)
     for _ in range(100):
         d = mp.mpf(rng.uniform(0.983, 1.017)) * AU_KM
-        u = rng.normal(size=3)
-        u /= np.linalg.norm(u)
-        r = R_EARTH_KM + 10.0 ** rng.uniform(-3, 6.3)
+        u = [mp.mpf(x) for x in rng.normal(size=3)]
+        nu = mp.sqrt(sum(x * x for x in u))
+        u = [x / nu for x in u]
+        r = R_EARTH_KM + mp.mpf(10) ** mp.mpf(rng.uniform(-3, 6.3))
         re_app = float(mp.asin(R_EARTH_KM / r))
         rs_app = float(mp.asin(R_SUN_KM / d))
         lo, hi = abs(re_app - rs_app), re_app + rs_app
-        psi = rng.uniform(max(lo - 0.2 * (hi - lo), 0.0), hi + 0.2 * (hi - lo))
-        v = rng.normal(size=3)
-        v -= v.dot(u) * u
-        v /= np.linalg.norm(v)
-        P = r * (-np.cos(psi) * u + np.sin(psi) * v)
-        cases.append(([d * mp.mpf(x) for x in u], [mp.mpf(x) for x in P]))
+        psi = mp.mpf(rng.uniform(max(lo - 0.2 * (hi - lo), 0.0), hi + 0.2 * (hi - lo)))
+        v = [mp.mpf(x) for x in rng.normal(size=3)]
+        vu = sum(a * b for a, b in zip(v, u))
+        v = [a - vu * b for a, b in zip(v, u)]
+        nv = mp.sqrt(sum(x * x for x in v))
+        v = [x / nv for x in v]
+        P = [r * (-mp.cos(psi) * a + mp.sin(psi) * b) for a, b in zip(u, v)]
+        cases.append(([d * x for x in u], P))
     # exactly collinear, not axis-aligned
     cases.append(([mp.mpf(1e8), mp.mpf(1e8), 0], [mp.mpf(-5000), mp.mpf(-5000), 0]))
     cases.append(([mp.mpf(1e8), mp.mpf(-1e8), mp.mpf(2e7)], [mp.mpf(-5000), mp.mpf(5000), mp.mpf(-1000)]))
