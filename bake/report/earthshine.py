@@ -143,7 +143,7 @@ BAND_EDGES_KM = [0.0, 0.01, 0.1, 1.0, 10.0, 30.0, 100.0, 1000.0, 1e5, math.inf]
 
 def bands(spec, q, psi, n_random=4000, seed=12345):
     """Max error / goal and psi error by altitude band, at the bake's
-    measurement points (grid.sample_points). Returns markdown rows."""
+    measurement points (measure.sample_points). Returns markdown rows."""
     theta, w = measure.sample_points(spec, n_random, seed, True)
     x = np.cos(w)
     phi_r, psi_r = grid.reference_chunked(theta, x, 32, "bands", False)
