@@ -8,7 +8,7 @@
    `valgrind --tool=callgrind` for two run lengths N1 < N2 and divides the
    difference of the instruction totals by (N2 - N1) * scenes, so start-up,
    scene set-up and the dynamic loader cancel out.
-3. The slow way: the baker's quadrature `bake.reference.phi_psi_reference`
+3. The slow way: the baker's quadrature `bake.earthshine.reference.phi_psi_reference`
    called per scene (scalar calls, as a runtime would have to), timed here;
    the runtime's table (and the analytic Lambert model) compared with it:
    speed-up and the error the table costs.
@@ -173,7 +173,7 @@ def main():
 
 def quadrature(args, out):
     try:
-        from bake import reference as ref
+        from bake.earthshine import reference as ref
     except Exception as e:  # the baker is another module; say so, do not fail
         out.put("bench.quadrature", "unavailable", "-", "bake.reference: %s" % e)
         return

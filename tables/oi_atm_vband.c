@@ -722,13 +722,15 @@ static const unsigned short oi_atm_vband_psi[4080] = {
 const oi_table_info oi_atm_vband_info = {
     .name = "oi_atm_vband",
     .generator = "bake.atmosphere 2.0.0",
-    .parameters = "{\"goal_abs_f\":0.01,\"grid\":{\"f_floor\":1e-08,\"h_a_km\":6.5,"
-        "\"na\":72,\"nb\":13,\"nz\":48,\"v_mid_km\":60.0,\"w_rho\":0.5,\""
-        "z_max_km\":500000.0,\"z_min_km\":500.0},\"measure\":{\"n_points\""
-        ":300,\"seed\":1},\"n_bisect\":48,\"profile\":{\"aer_strat_tau\":"
-        "0.005,\"aer_trop_tau\":0.1,\"cloud_top_km\":10.0,\"extinction\":"
-        "true,\"kind\":\"us1976\",\"n0\":0.000277837619880773,\"ozone_du\""
-        ":300.0,\"top_km\":100.0}}",
+    .parameters = "{\"goal_abs_f\":0.01,\"grid\":{\"alpha_c_rad\":0.007199403794924"
+        "052,\"alpha_c_rel_tol\":1e-09,\"d_max_au\":1.0168,\"d_min_au\":0"
+        ".9832,\"f_floor\":1e-08,\"h_a_km\":6.5,\"n_bisect\":48,\"na\":72"
+        ",\"nb\":13,\"nz\":48,\"q_max\":0.001,\"v_mid_km\":60.0,\"w_rho\""
+        ":0.5,\"z_max_km\":500000.0,\"z_min_km\":500.0},\"measure\":{\"n_"
+        "points\":300,\"seed\":1},\"profile\":{\"aer_strat_tau\":0.005,\""
+        "aer_trop_tau\":0.1,\"cloud_top_km\":10.0,\"extinction\":true,\"k"
+        "ind\":\"us1976\",\"n0\":0.000277837619880773,\"ozone_du\":300.0,"
+        "\"top_km\":100.0}}",
     .payload_sha256 = "70ca3d417f5f767d4bef5dab469c839756a7af2eabd0e31f6aa154ba02aa6840",
     .seed = 1UL,
     .max_error = 0.2973,

@@ -13,15 +13,4 @@
 extern const oi_earth_table oi_earth_diffuse;
 extern const oi_table_info oi_earth_diffuse_info;
 
-/* Transitional (removed once src/earthshine.c reads the grid from the
- * struct): the grid as constants. */
-#define OI_EARTH_DIFFUSE_N_LIT 2
-#define OI_EARTH_DIFFUSE_N_TERM 49
-#define OI_EARTH_DIFFUSE_N_ALT 122
-#define OI_EARTH_DIFFUSE_N_VALUES 6222
-#define OI_EARTH_DIFFUSE_W_MIN 0.0
-#define OI_EARTH_DIFFUSE_W_MAX 1.5707963267948966
-#define OI_EARTH_DIFFUSE_TERM_K0 2.0
-#define OI_EARTH_DIFFUSE_TERM_KP 8.0
-
 #endif /* OI_EARTH_DIFFUSE_H */

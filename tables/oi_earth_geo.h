@@ -13,15 +13,4 @@
 extern const oi_earth_table oi_earth_geo;
 extern const oi_table_info oi_earth_geo_info;
 
-/* Transitional (removed once src/earthshine.c reads the grid from the
- * struct): the grid as constants. */
-#define OI_EARTH_GEO_N_LIT 2
-#define OI_EARTH_GEO_N_TERM 49
-#define OI_EARTH_GEO_N_ALT 2
-#define OI_EARTH_GEO_N_VALUES 102
-#define OI_EARTH_GEO_W_MIN 1.4160366207099628
-#define OI_EARTH_GEO_W_MAX 1.4232255460852268
-#define OI_EARTH_GEO_TERM_K0 2.0
-#define OI_EARTH_GEO_TERM_KP 8.0
-
 #endif /* OI_EARTH_GEO_H */

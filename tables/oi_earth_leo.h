@@ -13,15 +13,4 @@
 extern const oi_earth_table oi_earth_leo;
 extern const oi_table_info oi_earth_leo_info;
 
-/* Transitional (removed once src/earthshine.c reads the grid from the
- * struct): the grid as constants. */
-#define OI_EARTH_LEO_N_LIT 2
-#define OI_EARTH_LEO_N_TERM 49
-#define OI_EARTH_LEO_N_ALT 24
-#define OI_EARTH_LEO_N_VALUES 1224
-#define OI_EARTH_LEO_W_MIN 0.24722083680408072
-#define OI_EARTH_LEO_W_MAX 0.7055061602738149
-#define OI_EARTH_LEO_TERM_K0 2.0
-#define OI_EARTH_LEO_TERM_KP 8.0
-
 #endif /* OI_EARTH_LEO_H */

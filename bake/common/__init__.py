@@ -1,0 +1,2 @@
+# SPDX-License-Identifier: MIT
+"""What every bake shares: constants, the emitter, progress, quadrature."""

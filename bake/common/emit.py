@@ -126,7 +126,6 @@ class Table:
                   "measured", "grid", "provenance"):
             setattr(self, k, kw.pop(k))
         self.kind_macro = "OI_TABLE_KIND_" + self.kind.upper()
-        self.compat_h = kw.pop("compat_h", None)  # extra lines appended to the .h
         if kw:
             raise TypeError("unknown Table fields: %s" % ", ".join(sorted(kw)))
 
@@ -207,8 +206,6 @@ def render(t):
          "extern const %s %s;" % (t.ctype, t.name),
          "extern const oi_table_info %s_info;" % t.name,
          ""]
-    if t.compat_h:
-        h += list(t.compat_h) + [""]
     h += ["#endif /* %s */" % guard, ""]
 
     prov = [(" * " + s).rstrip() for s in provenance_lines(t)]

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: MIT
-"""Tests of the atmosphere reference (bake.atm_profile, bake.atm_rays) and
-table (bake.atm_table): each against an independent closed form, another
+"""Tests of the atmosphere reference (bake.atmosphere.profile, bake.atmosphere.rays) and
+table (bake.atmosphere): each against an independent closed form, another
 algorithm, or a published value."""
 import json
 import os
@@ -8,10 +8,11 @@ import os
 import numpy as np
 import pytest
 
-from bake import atm_profile as ap
-from bake import atm_rays as ar
-from bake import atm_table as at
-from bake import shells
+from bake.atmosphere import measure as am
+from bake.atmosphere import profile as ap
+from bake.atmosphere import rays as ar
+from bake.atmosphere import table as at
+from bake.photon import shells
 
 ROOT = os.path.join(os.path.dirname(__file__), "..", "..")
 
@@ -105,7 +106,7 @@ def test_shells_converge_to_continuous():
 
 
 def test_shell_bending_matches_tracer():
-    # The analytic shell formula against bake.shells' vector-Snell tracer.
+    # The analytic shell formula against bake.photon.shells' vector-Snell tracer.
     prof = ap.us1976()
     radii, idx = ar.shell_model(prof, 40)
     atm = shells.Atmosphere(prof.earth_radius_km, radii[1:], idx)
@@ -221,5 +222,5 @@ def test_table_lookup_against_reference(rays_default):
     q, psi, alpha_c, h_c = at.load_table(os.path.join(ROOT, "tables"))
     with open(os.path.join(ROOT, "tables", "oi_atm_vband.json")) as f:
         meta = json.load(f)
-    err, _ = at.measure(rays_default, q, psi, alpha_c, h_c, n=40, seed=99)
+    err, _ = am.measure(rays_default, q, psi, alpha_c, h_c, n=40, seed=99)
     assert err["max_abs_error"] < 1.5 * meta["measured"]["max_abs_error"] + 1e-3

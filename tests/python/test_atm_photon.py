@@ -1,13 +1,13 @@
 # SPDX-License-Identifier: MIT
-"""Photon mapping through the shells with directions (bake.atm_photon) against
-the deterministic reference through the same shells (bake.atm_rays): two
+"""Photon mapping through the shells with directions (bake.photon.atmosphere) against
+the deterministic reference through the same shells (bake.atmosphere.rays): two
 independent algorithms (Monte Carlo vector-Snell tracing vs quadrature of
 the flux-conservation integral)."""
 import numpy as np
 
-from bake import atm_photon as ph
-from bake import atm_profile as ap
-from bake import atm_rays as ar
+from bake.atmosphere import profile as ap
+from bake.atmosphere import rays as ar
+from bake.photon import atmosphere as ph
 
 
 def test_photon_map_matches_reference_through_same_shells():

@@ -19,7 +19,8 @@ import pytest
 ROOT = os.path.join(os.path.dirname(__file__), "..", "..")
 sys.path.insert(0, ROOT)
 
-from bake import emit, grid  # noqa: E402
+from bake.earthshine import grid  # noqa: E402
+from bake.earthshine import table as emit  # noqa: E402
 from bake.common import emit as cemit  # noqa: E402
 
 WARN = ["-std=c99", "-Wall", "-Wextra", "-Wpedantic", "-Wconversion", "-Wshadow",

@@ -1,14 +1,14 @@
 # SPDX-License-Identifier: MIT
-"""Photon mapper (bake/photon.py): energy conservation, calibration, zero
+"""Photon mapper (bake/photon/mapping.py): energy conservation, calibration, zero
 shells == no atmosphere, agreement with the independent quadrature
-(bake.reference) within statistical tolerances, convergence order ~N^-1/2."""
+(bake.earthshine.reference) within statistical tolerances, convergence order ~N^-1/2."""
 import numpy as np
 import pytest
 
-from bake.photon import bake_phi, gather, gather_function, photon_map
-from bake.shells import Atmosphere
+from bake.photon.mapping import bake_phi, gather, gather_function, photon_map
+from bake.photon.shells import Atmosphere
 
-reference = pytest.importorskip("bake.reference")
+reference = pytest.importorskip("bake.earthshine.reference")
 
 R = 6378.137
 
@@ -69,7 +69,7 @@ def test_gathering_exact_map_matches_reference():
 
 
 def test_far_field_lambert_limit():
-    # far away phi -> x^2 p(theta) (independent of bake.reference)
+    # far away phi -> x^2 p(theta) (independent of bake.earthshine.reference)
     # corrections are O(x) (0.75 x at theta = 0): test at x = 1e-4 with an
     # absolute tolerance 1e-4 x^2 p(0)
     x = 1e-4

@@ -171,7 +171,7 @@ def test_irradiance_scales_with_sun_distance(sdir, tdir, logh, k, moon_r):
 def test_reference_monotone_domain():
     """Where physics demands monotonicity: the deterministic reference falls
     with altitude for theta <= 86 deg and rises in a band from 87 deg on."""
-    ref = pytest.importorskip("bake.reference")
+    ref = pytest.importorskip("bake.earthshine.reference")
     h = np.geomspace(1e-3, 1e7, 1500)
     for deg, rising in ((0, False), (45, False), (85, False), (86, False), (88, True)):
         phi = ref.phi_reference(np.full_like(h, math.radians(deg)), ref.x_from_h(h))
@@ -254,7 +254,7 @@ def test_sun_fraction_monotonic_across_penumbra(logh, u1, u2, axis, au):
 @settings(max_examples=40, deadline=None)
 @given(rotations(), st.integers(0, 2 ** 32 - 1), st.sampled_from(["bare", "exp"]))
 def test_shell_tracer_rotation_invariant(rot, seed, kind):
-    shells = pytest.importorskip("bake.shells")
+    shells = pytest.importorskip("bake.photon.shells")
     atm = shells.Atmosphere.bare() if kind == "bare" else shells.Atmosphere.exponential(n_shells=12)
     rng = np.random.default_rng(seed)
     n = 64
@@ -279,12 +279,12 @@ def test_shell_tracer_rotation_invariant(rot, seed, kind):
 @settings(max_examples=30, deadline=None)
 @given(st.floats(0, math.pi), st.floats(-3, 6), st.floats(4, 6))
 def test_reference_far_field_and_order(theta, lh1, lh2):
-    """bake.reference: phi >= 0, psi in [-pi/2, pi/2], and phi tends to the
+    """bake.earthshine.reference: phi >= 0, psi in [-pi/2, pi/2], and phi tends to the
     Lambert far field (R/r)^2 p(theta): on the day side the relative
     difference is O(x), x = R/r: below 1.0 x for theta < 80 deg and h >= 1e4 km
     (measured max 0.79 x). A ratio test between r and 10 r is not valid: the
     x and x^2 terms can cancel at r (hypothesis found theta = 1.28, h = 1e4 km)."""
-    ref = pytest.importorskip("bake.reference")
+    ref = pytest.importorskip("bake.earthshine.reference")
     for lh in (lh1, lh2):
         x = ref.x_from_h(10 ** lh)
         phi, psi = ref.phi_psi_reference(np.array([theta]), np.array([x]))
@@ -306,7 +306,7 @@ def test_reference_extreme_inputs_finite(theta, h):
     """The baker's reference quadrature at stiff inputs (1e-9 km to 1e15 km,
     theta exactly 0, pi/2, pi): finite, phi >= 0, psi in [0, pi/2], and phi
     below its subsolar value at that altitude."""
-    ref = pytest.importorskip("bake.reference")
+    ref = pytest.importorskip("bake.earthshine.reference")
     x = np.array([ref.x_from_h(h)])
     with np.errstate(all="raise"):
         phi, psi = ref.phi_psi_reference(np.array([theta]), x)

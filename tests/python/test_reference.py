@@ -1,18 +1,22 @@
 # SPDX-License-Identifier: MIT
-"""The earthshine quadrature reference (bake/reference.py) against closed
+"""The earthshine quadrature reference (bake/earthshine/reference.py) against closed
 forms, limits, symmetry, an independent mpmath integration and itself at a
 higher order."""
 
+import glob
 import math
 import os
+import re
 import sys
 
+import mpmath
 import numpy as np
 import pytest
 
-sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", ".."))
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+sys.path.insert(0, ROOT)
 
-from bake import reference as ref  # noqa: E402
+from bake.earthshine import reference as ref  # noqa: E402
 
 XS = np.array([0.999, 0.98456, 0.9, 0.7, 0.5, 0.2, 0.05, 0.0166, 1e-3])
 
@@ -157,3 +161,77 @@ def test_h_form_matches_x_form():
         a = ref.phi_psi_reference_h(th, hr)
         b = ref.phi_psi_reference(th, 1 / (1 + hr))
         assert np.allclose(a[0], b[0], rtol=1e-12, atol=0) and np.allclose(a[1], b[1], atol=1e-12)
+
+
+# ----------------------------------------------------------- literals in the runtime
+
+_ARR = re.compile(r"static const oi_real (\w+)\[\w+(?: \+ 1)?\]\[(\d+)\] = \{(.*?)\n\};", re.S)
+_VAL = re.compile(r"OI_R\(([-+0-9.eE]+)\)")
+
+
+def _runtime_arrays():
+    """(file, name, rows, comment before it) of every 2-D oi_real array in src/."""
+    out = []
+    for path in sorted(glob.glob(os.path.join(ROOT, "src", "*.c"))):
+        with open(path, encoding="ascii") as f:
+            text = f.read()
+        for m in _ARR.finditer(text):
+            ncol = int(m.group(2))
+            vals = [mpmath.mpf(v) for v in _VAL.findall(m.group(3))]
+            rows = [vals[k:k + ncol] for k in range(0, len(vals), ncol)]
+            out.append((os.path.basename(path), m.group(1), rows, text[max(0, m.start() - 700):m.start()]))
+    return out
+
+
+def test_runtime_gauss_legendre_literals_match_generator():
+    """Every Gauss-Legendre table pasted into src/ (nodes x < 1/2 on [0, 1],
+    weights, and where given sin/cos(pi x / 2)) equals the rule computed here
+    in mpmath to the 21 digits written (the generator: tests/ref/shadow.py
+    --gauss N, bake/common/quadrature.py)."""
+    checked = 0
+    with mpmath.workdps(40):
+        for fname, name, rows, before in _runtime_arrays():
+            if "Gauss-Legendre" not in before:
+                continue
+            n = 2 * len(rows)
+            t, w = [], []
+            for k in range(1, n + 1):  # roots of P_n by Newton, at 40 digits
+                x = mpmath.cos(mpmath.pi * (k - mpmath.mpf(1) / 4) / (n + mpmath.mpf(1) / 2))
+                for _ in range(60):
+                    dx = mpmath.legendre(n, x) / mpmath.diff(lambda s: mpmath.legendre(n, s), x)
+                    x -= dx
+                    if abs(dx) < mpmath.mpf(10) ** -38:
+                        break
+                dp = mpmath.diff(lambda s: mpmath.legendre(n, s), x)
+                t.append(x)
+                w.append(1 / ((1 - x * x) * dp * dp))  # weight on [0, 1]
+            half = sorted(((1 - x) / 2, wk) for x, wk in zip(t, w))[: n // 2]
+            for row, (x01, w01) in zip(rows, half):
+                assert abs(row[0] - x01) <= 1e-20 * abs(x01), (fname, name, row[0], x01)
+                assert abs(row[1] - w01) <= 1e-20 * abs(w01), (fname, name, row[1], w01)
+                if len(row) >= 4:
+                    s, c = mpmath.sin(mpmath.pi * x01 / 2), mpmath.cos(mpmath.pi * x01 / 2)
+                    assert abs(row[2] - s) <= 1e-20 * abs(s) and abs(row[3] - c) <= 1e-20, (fname, name)
+            checked += 1
+    assert checked >= 2  # the cap segment's and the limb darkening's rules (both precisions)
+
+
+def test_runtime_limb_darkening_literals_match_generator():
+    """The limb-darkening series table of src/ is c_j A_i / (i + 2j + 2)
+    (c_j = binomial(-1/2, j)) of the Neckel & Labs (1994) 559.95 nm
+    coefficients the baker uses (bake/atmosphere/rays.py NL94_559)."""
+    from fractions import Fraction
+
+    from bake.atmosphere.rays import NL94_559
+    A = [Fraction(repr(float(a))) for a in NL94_559]
+    tables = [(f, n, rows) for f, n, rows, _ in _runtime_arrays() if n == "ld_coef"]
+    assert len(tables) == 1
+    _, _, rows = tables[0]
+    c = Fraction(1)
+    for j, row in enumerate(rows):
+        if j:
+            c *= Fraction(-1, 2) - (j - 1)
+            c /= j
+        for i, v in enumerate(row):
+            want = c * A[i] / (i + 2 * j + 2)
+            assert abs(v - mpmath.mpf(want.numerator) / want.denominator) <= 1e-20 * abs(float(want)) + 1e-30

@@ -1,11 +1,11 @@
 # SPDX-License-Identifier: MIT
-"""Shell tracer (bake/shells.py) against closed forms: Snell's law, total
+"""Shell tracer (bake/photon/shells.py) against closed forms: Snell's law, total
 internal reflection, single-shell chords, Bouguer's invariant n r sin z,
 the Lambertian direction distribution."""
 import numpy as np
 import pytest
 
-from bake.shells import (ESCAPED, HIT_EARTH, TRAPPED, Atmosphere, lambert_directions,
+from bake.photon.shells import (ESCAPED, HIT_EARTH, TRAPPED, Atmosphere, lambert_directions,
                          orthonormal_basis, refract, trace)
 
 

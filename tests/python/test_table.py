@@ -3,7 +3,6 @@
 nodes (a seed the bake did not use) within the goal, the byte budget, the
 altitude range, the sidecar's facts, and why the table runs to infinity."""
 
-import json
 import math
 import os
 import re
@@ -15,8 +14,10 @@ import pytest
 ROOT = os.path.join(os.path.dirname(__file__), "..", "..")
 sys.path.insert(0, ROOT)
 
-from bake import emit, grid, scene  # noqa: E402
-from bake import reference as ref  # noqa: E402
+from bake.earthshine import grid, lookup  # noqa: E402
+from bake.earthshine import reference as ref  # noqa: E402
+from bake.earthshine import scenes as scene  # noqa: E402
+from bake.earthshine import table as emit  # noqa: E402
 
 TABLES = os.path.join(ROOT, "tables")
 
@@ -81,8 +82,8 @@ def _check_error(spec, q, psi, n, seed, rel_goal=1e-3):
     x = np.cos(w)
     phi_r, psi_r = ref.phi_psi_reference(th, x, 32, 32)
     phi0 = ref.phi_reference(np.zeros_like(x), x, 32, 32)
-    phi_i, psi_i = grid.lookup(spec, q.astype(float), psi.astype(float), th, x)
-    s, big = grid.goal_score(phi_i, phi_r, phi0, rel_goal=rel_goal)
+    phi_i, psi_i = lookup.lookup(spec, q.astype(float), psi.astype(float), th, x)
+    s, big = lookup.goal_score(phi_i, phi_r, phi0, rel_goal=rel_goal)
     return s, big, np.abs(psi_i - psi_r)
 
 
@@ -117,8 +118,8 @@ def test_low_altitude_named(default_table):
                              math.pi / 2 + w * np.linspace(-1, 1, 201)])
         phi_r, psi_r = ref.phi_psi_reference_h(th, hk / ref.R_EARTH_KM, 32, 32)
         phi0 = ref.phi_psi_reference_h(0.0, hk / ref.R_EARTH_KM, 32, 32)[0]
-        phi_i, psi_i = grid.lookup(spec, q.astype(float), psi.astype(float), th, np.full_like(th, x))
-        s, big = grid.goal_score(phi_i, phi_r, phi0)
+        phi_i, psi_i = lookup.lookup(spec, q.astype(float), psi.astype(float), th, np.full_like(th, x))
+        s, big = lookup.goal_score(phi_i, phi_r, phi0)
         assert s.max() <= 1.0, (hk, s.max())
         assert np.abs(psi_i - psi_r)[big].max() <= 1e-3, hk
 
@@ -159,5 +160,5 @@ def test_far_field_fails_at_lunar_distance():
     x = float(ref.x_from_h(384400.0))
     th = np.linspace(0, math.pi, 2001)
     phi = ref.phi_reference(th, x, 32, 32)
-    s, _ = grid.goal_score(ref.far_field(th, x), phi, phi[0])
+    s, _ = lookup.goal_score(ref.far_field(th, x), phi, phi[0])
     assert s.max() > 50

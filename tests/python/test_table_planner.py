@@ -15,7 +15,7 @@ import pytest
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 sys.path.insert(0, ROOT)
 
-from bake import reference as ref  # noqa: E402
+from bake.earthshine import reference as ref  # noqa: E402
 
 PLAN = os.environ.get("OI_PLAN", os.path.join(ROOT, "build", "oi-plan"))
 AU = 149597870.7

@@ -3,15 +3,12 @@
 
 import math
 
-from . import __version__
-from .common import emit as cemit
-from .common.emit import c_double, c_float, f32  # noqa: F401  (re-exported)
+from .. import __version__
+from ..common import emit as cemit
+from ..common.emit import c_double, c_float, f32  # noqa: F401  (re-exported)
 
 TABLE_FORMAT = 4  # OI_TABLE_FORMAT in include/oi_table.h
 GENERATOR = "bake.earthshine"
-# Transitional: the grid as macros in the header, read by src/earthshine.c
-# until it takes the default table's grid from the struct.
-COMPAT_MACROS = True
 
 LAYOUT = ("format", "n_lit", "n_term", "n_alt", "w_min", "w_max", "term_k0", "term_kp",
           "max_rel_err", "max_abs_err", "q", "psi", "kind", "info")
@@ -57,7 +54,7 @@ def provenance_lines(meta):
 
 
 def table(name, spec, q, psi, meta):
-    """The Table of one earthshine bake (meta: see bake/scene.py)."""
+    """The Table of one earthshine bake (meta: see bake/earthshine/scenes.py)."""
     q32 = f32(q)
     p32 = f32(psi)
     if q32.shape != (spec.n_alt, spec.n_theta) or p32.shape != q32.shape:
@@ -69,19 +66,6 @@ def table(name, spec, q, psi, meta):
                 radius_km=meta["radius_km"])
     params = dict(meta["parameters"])
     params["method"] = meta["method"]
-    compat = None
-    if COMPAT_MACROS:
-        up = name.upper()
-        compat = ["/* Transitional (removed once src/earthshine.c reads the grid from the",
-                  " * struct): the grid as constants. */",
-                  "#define %s_N_LIT %d" % (up, spec.n_lit),
-                  "#define %s_N_TERM %d" % (up, spec.n_term),
-                  "#define %s_N_ALT %d" % (up, spec.n_alt),
-                  "#define %s_N_VALUES %d" % (up, spec.n_values),
-                  "#define %s_W_MIN %s" % (up, c_double(spec.w_min)),
-                  "#define %s_W_MAX %s" % (up, c_double(spec.w_max)),
-                  "#define %s_TERM_K0 %s" % (up, c_double(spec.term_k0)),
-                  "#define %s_TERM_KP %s" % (up, c_double(spec.term_kp))]
     return cemit.Table(
         name=name, kind="earthshine", ctype="oi_earth_table",
         format=("OI_TABLE_FORMAT", TABLE_FORMAT),
@@ -96,7 +80,7 @@ def table(name, spec, q, psi, meta):
         arrays=[("q", q32, "float"), ("psi", p32, "float")],
         layout=LAYOUT, generator=GENERATOR, version=__version__, parameters=params,
         seed=m["seed"], goal=meta["rel_goal"], max_error=m["max_score"], measured=m,
-        grid=grid, provenance=provenance_lines(meta), compat_h=compat)
+        grid=grid, provenance=provenance_lines(meta))
 
 
 def render(name, spec, q, psi, meta):

@@ -5,12 +5,12 @@ The seed's refracted photons were stored without direction and never
 gathered (its chapter V). Here each photon keeps its direction: photons are
 launched from random points of the limb-darkened solar disc towards random
 points of the annulus R < b < B_max around the Earth, traced through the
-constant-index shells by `bake.shells.trace` (vector Snell, seed IV.1.1), and
+constant-index shells by `bake.photon.shells.trace` (vector Snell, seed IV.1.1), and
 followed along their recorded exit direction to the plane z km behind the
 Earth, where they are binned in rings about the shadow axis: the photon
 estimate of F(z, rho) and of the light's mean direction psi.
 
-The deterministic reference through the *same* shells (`bake.atm_rays.fraction`
+The deterministic reference through the *same* shells (`bake.atmosphere.rays.fraction`
 with the shell bending) isolates the Monte Carlo noise; the continuous
 profile shows the shells' own bias (see docs/atmosphere.md). Seed mode:
 refraction only.
@@ -21,8 +21,8 @@ import time
 
 import numpy as np
 
-from . import atm_profile as ap
-from . import atm_rays as ar
+from ..atmosphere import profile as ap
+from ..atmosphere import rays as ar
 from . import shells
 
 
@@ -81,7 +81,7 @@ def photon_fraction(profile: ap.Profile, n_shells: int, z: float, rho_edges, n_p
         k = np.searchsorted(rho_edges, rr) - 1
         inb = (k >= 0) & (k < counts.size)
         np.add.at(counts, k[inb], 1.0)
-        # mean 'from' direction (as atm_rays.fraction): transverse part along
+        # mean 'from' direction (as bake.atmosphere.rays.fraction): transverse part along
         # the point's radial unit vector, minus that of the Sun's centre
         rhat = xs / np.maximum(rr, 1e-9)[:, None]
         ephi_r = np.cos(ph) * rhat[:, 0] + np.sin(ph) * rhat[:, 1]

@@ -23,7 +23,7 @@ as in the seed, each ray carries its whole power across a boundary.
 
 Invariant: in spherically symmetric shells n r sin(z) (z the angle from the
 local vertical) is conserved along a ray (Bouguer's formula). The tests use
-it, and `bake.photon` uses it to find the apparent limb of the Earth.
+it, and `bake.photon.mapping` uses it to find the apparent limb of the Earth.
 
 API
 ---
@@ -55,7 +55,7 @@ __all__ = [
     "R_EARTH_KM",
 ]
 
-R_EARTH_KM = 6378.137  # WGS-84 equatorial radius, as OI_EARTH_RADIUS_KM
+from ..common.constants import R_EARTH_KM
 
 # Final status of a traced ray.
 ESCAPED = 0    # in the vacuum, moving away: left the outer shell (n_cross > 0)

@@ -5,7 +5,7 @@ Pass 1, photon map: rays from random points of the solar disc (radius
 695700 km at 1 AU) to random points of a disc through the Earth's centre,
 facing the Sun, 2% larger than the outermost shell; each photon carries
 power E0 * pi rho_d^2 / N (E0 = 1: everything is per unit solar irradiance).
-Photons are traced through the shells (bake.shells); at the Earth they are
+Photons are traced through the shells (bake.photon.shells); at the Earth they are
 reflected with the Lambertian COSINE distribution (seed IV.1.1 says uniform
 over a sphere: erratum) and traced out again. Power is per unit albedo (the
 albedo multiplies the map at run time). Two maps indexed by theta, the angle
@@ -35,7 +35,7 @@ dOmega = b db dbeta / (r sqrt(r^2 - b^2)). Radiance per gathering ray:
                  invariance L/n^2 along a ray, n1 the ground shell's index).
                  Exact for any shell stack up to noise and bin width.
 phi = sum L dOmega is the scalar irradiance per unit E0 and unit albedo
-(PHYSICS.md section 2): no division by 4 pi h^2 (seed IV.1.2 erratum), and no
+(docs/physics.md, earthshine): no division by 4 pi h^2 (seed IV.1.2 erratum), and no
 2 pi d^2 calibration (seed eq. 3.7 erratum): each photon already carries
 its share of E0 times the disc area. psi is the angle of the net flux vector
 sum L d dOmega from the nadir towards the Sun side.
@@ -49,6 +49,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..common.constants import AU_KM, SUN_RADIUS_KM
 from .shells import ESCAPED, HIT_EARTH, TRAPPED, Atmosphere, lambert_directions, trace
 
 __all__ = [
@@ -62,8 +63,6 @@ __all__ = [
     "DEFAULT_N_BINS",
 ]
 
-SUN_RADIUS_KM = 695700.0      # IAU 2015 B3 nominal, as OI_SUN_RADIUS_KM
-AU_KM = 149597870.7           # IAU 2012 B2, as OI_AU_KM
 DEFAULT_N_BINS = 180          # 1 degree bins, the seed's "w pixels wide"
 CHUNK = 1 << 18               # photons per vectorised chunk (fixed: determinism)
 
@@ -303,7 +302,7 @@ def bake_phi(theta, x, n_photons: int = 4_000_000, seed: int = 1, atm: Atmospher
              n_s: int = 96, n_beta: int = 96, sampling: str = "random", progress=None,
              return_maps: bool = False):
     """phi(theta, x) and psi(theta, x) by photon mapping (x = R/r, broadcast
-    with theta; same meaning as bake.reference.phi_psi_reference).
+    with theta; same meaning as bake.earthshine.reference.phi_psi_reference).
 
     atm None: bare Earth (then "shell" and "surface" coincide). Points must
     lie outside the outermost shell (x < R / rho). Deterministic for a given

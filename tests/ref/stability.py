@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
-"""Stability test vectors for the orbillum runtime (issue 5), from mpmath.
+"""Stability test vectors for the orbillum runtime, from mpmath.
 
 Writes tests/stability/vectors.h: for each function and each precision
 (double: suffix _d, single: suffix _f) an array of stab_vec with
@@ -16,7 +16,7 @@ Writes tests/stability/vectors.h: for each function and each precision
             kink (shadow edges, clamps) it is the finite change across it.
 The C driver (tests/c/test_stability.c) accepts
     |got - want| <= goal |want| + spread
-with goal = 1e-12 (double) or 1e-5 (single) as issue 5 asks: where the
+with goal = 1e-12 (double) or 1e-5 (single), the stability goal of docs/stability.md: where the
 quantity is well conditioned spread ~ EPS_MULT u |want| is negligible and the
 goal rules; where it is ill-conditioned the error is bounded by the condition
 number (spread). Nothing here calls the code under test.
@@ -28,7 +28,7 @@ checked against the closed form of Tovchigrechko & Vakser (2001, Protein Sci.
 atan2(|a x b|, a.b) at MP_DPS digits; the phase and lunar laws are their
 defining formulas.
 
-Usage: .venv/bin/python tests/stability/gen_vectors.py   (about a minute)
+Usage: python tests/ref/generate.py stability   (about a minute)
 The output is byte-for-byte reproducible (no timestamps, no randomness
 except a fixed-seed generator).
 """
@@ -39,12 +39,12 @@ import sys
 import mpmath as mp
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
+from common import ROOT, cli, setup_mpmath, write  # noqa: E402  (puts the repository on sys.path)
 
 GEN_VERSION = 1
 MP_DPS = 60
 EPS_MULT = 16
-mp.mp.dps = MP_DPS
+setup_mpmath(MP_DPS)
 
 PI = mp.pi
 AU = mp.mpf("149597870.7")
@@ -60,7 +60,7 @@ PRECISIONS = {
     "f": dict(u=mp.mpf(2) ** -24, np=np.float32),
 }
 
-OUT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "vectors.h")
+OUT = "tests/stability/vectors.h"
 
 
 def rnd(x, prec):
@@ -658,20 +658,15 @@ def earthshine_ref(theta, x):
 
 
 def read_table_grid(path):
-    import re
-    txt = open(path).read()
-    g = {}
-    for key in ("w_min", "w_max", "term_k0", "term_kp"):
-        m = re.search(r"\.%s = ([0-9.eE+-]+)," % key, txt)
-        g[key] = float(m.group(1)) if m else 0.0  # format 2 had no terminator map
-    for key in ("N_LIT", "N_TERM", "N_ALT"):
-        g[key.lower()] = int(re.search(r"#define OI_EARTH_DIFFUSE_%s (\d+)" % key,
-                                       open(path[:-2] + ".h").read()).group(1))
-    return g
+    """The grid of a generated earthshine table (the emitter's parse-back)."""
+    from bake.common.emit import parse_c
+    name = os.path.basename(path)[:-2]
+    with open(path, encoding="ascii") as f:
+        t = parse_c(f.read())["structs"][name]["fields"]
+    return {k: t[k] for k in ("w_min", "w_max", "term_k0", "term_kp", "n_lit", "n_term", "n_alt")}
 
 
-TABLE_C = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))),
-                       "tables", "oi_earth_diffuse.c")
+TABLE_C = os.path.join(ROOT, "tables", "oi_earth_diffuse.c")
 
 
 def suite_earth_table():
@@ -717,7 +712,7 @@ def suite_earth_table():
                        (PI / 2 + w, "pi/2+w"), (PI / 2 + w * mp.mpf("0.999"), "pi/2+0.999w"),
                        (mp.mpf("0.7"), "0.7"), (mp.mpf("1.9"), "1.9")):
             cases.append(("edge h=%s theta=%s" % (hl, tl), th, h))
-    from bake.reference import phi_psi_reference  # conditioning term only
+    from bake.earthshine.reference import phi_psi_reference  # conditioning term only
     phi0_cache = {}
 
     for prec in ("d", "f"):
@@ -862,8 +857,7 @@ SUITES = [suite_phase, suite_moon, suite_angle, suite_overlap, suite_shadow, sui
           suite_earth_lambert, suite_illuminate, suite_earth_table, suite_camera]
 
 
-def main():
-    only = sys.argv[1:]
+def generate(root, only):
     tables = []
     for s in SUITES:
         if only and s.__name__ not in only:
@@ -874,9 +868,9 @@ def main():
     digest = hashlib.sha256(body.encode()).hexdigest()[:16]
     head = f"""/* SPDX-License-Identifier: MIT */
 /*
- * vectors.h: stability test vectors (issue 5). GENERATED, do not edit.
- * Generator: tests/stability/gen_vectors.py version {GEN_VERSION}
- * Command:   .venv/bin/python tests/stability/gen_vectors.py
+ * vectors.h: stability test vectors. GENERATED, do not edit.
+ * Generator: tests/ref/stability.py version {GEN_VERSION}
+ * Command:   python tests/ref/generate.py stability
  * mpmath {mp.__version__} at {MP_DPS} digits; spread = sum over inputs of the
  * largest output change for one input scaled by (1 +- {EPS_MULT} u),
  * u = 2^-53 (_d) or 2^-24 (_f). Constants: AU 149597870.7 km, TSI 1361 W/m^2,
@@ -899,10 +893,8 @@ typedef struct stab_vec {{
 }} stab_vec;
 
 """
-    with open(OUT, "w") as fh:
-        fh.write(head + body + "\n\n#endif /* STAB_VECTORS_H */\n")
-    print("wrote", OUT, file=sys.stderr)
+    return [write(root, OUT, head + body + "\n\n#endif /* STAB_VECTORS_H */\n")]
 
 
 if __name__ == "__main__":
-    main()
+    raise SystemExit(cli([OUT], generate, __doc__))

@@ -1,8 +1,8 @@
 # SPDX-License-Identifier: MIT
-"""Report section: the atmosphere (issue 4). `section(outdir) -> str`.
+"""Report section: the atmosphere. `section(outdir) -> str`.
 
-Every number is computed here from bake.atm_profile / bake.atm_rays /
-bake.atm_table; sources of the comparison values are cited inline.
+Every number is computed here from bake.atmosphere.profile / bake.atmosphere.rays /
+bake.atmosphere; sources of the comparison values are cited inline.
 """
 from __future__ import annotations
 
@@ -12,12 +12,13 @@ import time
 
 import numpy as np
 
-from . import atm_profile as ap
-from . import atm_rays as ar
-from . import atm_table as at
+from ..atmosphere import profile as ap
+from ..atmosphere import rays as ar
+from ..atmosphere import table as at
+from ..atmosphere import window as aw
 
 R = ap.R_EARTH_KM
-ROOT = os.path.join(os.path.dirname(__file__), "..")
+ROOT = os.path.join(os.path.dirname(__file__), "..", "..")
 
 
 def _plt():
@@ -69,7 +70,7 @@ def _moon_disc_fraction(rays, z, rho_c, n=9):
 def section(outdir) -> str:
     plt = _plt()
     t0 = time.time()
-    out = ["## Atmosphere: refraction and extinction into the Earth's shadow (issue 4)\n"]
+    out = ["## Atmosphere: refraction and extinction into the Earth's shadow\n"]
     prof = ap.us1976()
     seedp = ap.seed_mode()
     rays = ar.make_rays(prof, dh_km=0.02)
@@ -178,7 +179,7 @@ def section(outdir) -> str:
     q, psi_t, alpha_c, h_c = at.load_table(os.path.join(ROOT, "tables"))
     F_lut = []
     for zz, rr, fg in zip(z, rh, F_geo):
-        f, _, st = at.lookup(q, psi_t, alpha_c, h_c, zz, rr, ar.AU_KM)
+        f, _, st = aw.lookup(q, psi_t, alpha_c, h_c, zz, rr, ar.AU_KM)
         F_lut.append(fg if f is None else f)
     F_lut = np.array(F_lut)
 
@@ -237,9 +238,9 @@ def section(outdir) -> str:
                          np.degrees(np.max(amax))))
     out.append("### The seed's nested shells against the continuous profile\n")
     out.append("Bending of rays with lowest altitude 10-40 km through K shells of constant index (uniform "
-               "in altitude, or at equal steps of refractivity as bake/shells.py's default; each the mean index "
+               "in altitude, or at equal steps of refractivity as bake/photon/shells.py's default; each the mean index "
                "of its layer; Snell at each boundary, "
-               "`atm_rays.shell_bending`, checked against `bake/shells.py`'s tracer):\n")
+               "`bake.atmosphere.rays.shell_bending`, checked against `bake/photon/shells.py`'s tracer):\n")
     out.append("| spacing | K | mean abs error | mean error | max abs error | largest bending of any ray |"
                "\n|---|---|---|---|---|---|")
     for sp, K, m1, m2, m3, amx in rows:
@@ -254,7 +255,7 @@ def section(outdir) -> str:
                "under ~3 %.\n")
 
     # irradiance behind the Earth through K shells vs the continuous profile (seed mode)
-    from . import atm_photon as aph0
+    from ..photon import atmosphere as aph0
     out.append("Irradiance behind the Earth (refraction only) through K uniform shells against the "
                "continuous profile, over the refracted-light region:\n")
     out.append("| K | max abs F error at GEO distance (z = 42 164 km) | max relative error in the umbra at the "
@@ -274,11 +275,11 @@ def section(outdir) -> str:
     out.append("")
 
     # ---------------------------------------------------------- 3b. photon mapping with directions
-    from . import atm_photon as aph
+    from ..photon import atmosphere as aph
     conv = aph.convergence(n_shells=100, z=42164.0, photons=(10000, 30000, 100000, 300000))
-    out.append("### Photon mapping through the shells, with directions (`bake/atm_photon.py`)\n")
+    out.append("### Photon mapping through the shells, with directions (`bake/photon/atmosphere.py`)\n")
     out.append("Photons from random points of the limb-darkened disc, traced through 100 uniform shells by "
-               "`bake/shells.py` (vector Snell), followed along their recorded exit directions to the plane at "
+               "`bake/photon/shells.py` (vector Snell), followed along their recorded exit directions to the plane at "
                "GEO distance behind the Earth (z = 42 164 km), binned in 27 rings (refraction only). Error "
                "against the deterministic reference through the *same* shells (ring averages):\n")
     out.append("| photons | time | rms error of F | max error of F |\n|---|---|---|---|")
@@ -380,7 +381,7 @@ def section(outdir) -> str:
     me = meta["measured"]
     out.append(f"`tables/oi_atm_vband.c`: {meta['payload_bytes']} bytes (16-bit codes, {at.NZ} x {at.NT} x 2), "
                f"z = {at.Z_MIN:g}..{at.Z_MAX:g} km behind the Earth, nodes following the shadow "
-               "(bake/atm_table.py). Measured against the reference at "
+               "(bake/atmosphere/). Measured against the reference at "
                f"{me['n_points']} random off-grid points: max |dF| = {me['max_abs_error']:.2e}, "
                f"rms {me['rms_abs_error']:.2e}; max relative error where F > 1e-4: "
                f"{me['max_rel_error_F_gt_1e-4']:.2f} (deep-umbra points near the reach of the lowest "

@@ -4,7 +4,7 @@
 phi(theta, x): scalar irradiance at a point at distance r = R/x from the centre
 of a uniform Lambertian sphere of radius R (unit albedo) lit by parallel
 sunlight of unit irradiance, theta the angle at the centre between the Sun and
-the point (PHYSICS.md section 2):
+the point (docs/physics.md, earthshine):
 
     phi = (1/pi) * integral over {cos i > 0, cos e > 0} of cos(i) cos(e) / d^2 dA
 
@@ -50,6 +50,9 @@ parametrisation and a different rule: an independent check.
 
 import numpy as np
 
+from ..common.constants import R_EARTH_KM
+from ..common.quadrature import gauss_legendre_01
+
 __all__ = [
     "phi_reference",
     "phi_psi_reference",
@@ -66,21 +69,14 @@ __all__ = [
     "R_EARTH_KM",
 ]
 
-R_EARTH_KM = 6378.137  # WGS-84 equatorial radius, as OI_EARTH_RADIUS_KM
 
 # Default Gauss-Legendre orders (outer u, inner gamma) per piece.
 N_OUTER = 48
 N_INNER = 48
 
-_GL_CACHE = {}
-
-
 def _gl(n):
     """Gauss-Legendre nodes and weights on [0, 1]."""
-    if n not in _GL_CACHE:
-        t, w = np.polynomial.legendre.leggauss(n)
-        _GL_CACHE[n] = (0.5 * (t + 1.0), 0.5 * w)
-    return _GL_CACHE[n]
+    return gauss_legendre_01(n)
 
 
 def x_from_h(h_km, radius_km=R_EARTH_KM):

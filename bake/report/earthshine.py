@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""Report section on the earthshine table (called by bake/report.py).
+"""Report section on the earthshine table (called by bake/report/__main__.py).
 
 section(outdir) -> markdown, and PNGs written into outdir:
   table_image.png        the seed's Fig. 7 redone: phi(theta, h) of the shipped table
@@ -9,23 +9,22 @@ section(outdir) -> markdown, and PNGs written into outdir:
 Every number comes from code run here (reference quadrature, table lookup).
 """
 
-import json
 import math
 import os
 import time
 
 import numpy as np
 
-from . import grid, scene
-from . import reference as ref
+from ..earthshine import grid, lookup, measure
+from ..earthshine import reference as ref
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(HERE)
+ROOT = os.path.dirname(os.path.dirname(HERE))
 TABLE = "oi_earth_diffuse"
 
 
 def _load_default():
-    from . import emit
+    from ..earthshine import table as emit
 
     spec, q, psi, side, _ = emit.load(os.path.join(ROOT, "tables"), TABLE)
     return spec, q.astype(float), psi.astype(float), side
@@ -36,7 +35,7 @@ def _fig_image(spec, q, psi, path, plt):
     h = np.logspace(-3, 6, 361)  # 1 m .. 1e6 km
     TH, H = np.meshgrid(th, h)
     x = ref.x_from_h(H)
-    phi, ps = grid.lookup(spec, q, psi, TH, x)
+    phi, ps = lookup.lookup(spec, q, psi, TH, x)
     fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
     with np.errstate(divide="ignore"):
         im = ax[0].pcolormesh(np.degrees(th), h, np.log10(np.maximum(phi, 1e-12)), shading="auto",
@@ -96,7 +95,7 @@ def _error_vs_bytes(path, plt, quick=False):
         t_bake = time.monotonic() - t0
         q32, p32 = q.astype(np.float32), psi.astype(np.float32)
         for kind in res:
-            m = grid.measure(spec, q32, p32, n_random=800, order=32, progress=False, seed=777, kind=kind)
+            m = measure.measure(spec, q32, p32, n_random=800, order=32, progress=False, seed=777, kind=kind)
             res[kind].append((spec.bytes(), m["max_rel_err"], m["max_score"], m["max_psi_err_rad"],
                               (n_lit, n_term, n_alt), t_bake))
     fig, ax = plt.subplots(figsize=(6.5, 4.2))
@@ -123,7 +122,7 @@ def _farfield(path, plt):
     for hk in hs:
         x = float(ref.x_from_h(hk))
         phi = ref.phi_reference(th, x, 32, 32)
-        s, big = grid.goal_score(ref.far_field(th, x), phi, phi[0])
+        s, big = lookup.goal_score(ref.far_field(th, x), phi, phi[0])
         out.append((hk, s.max()))
     fig, ax = plt.subplots(figsize=(6.5, 4.0))
     ax.loglog([o[0] for o in out], [o[1] for o in out], "o-")
@@ -144,13 +143,13 @@ BAND_EDGES_KM = [0.0, 0.01, 0.1, 1.0, 10.0, 30.0, 100.0, 1000.0, 1e5, math.inf]
 
 def bands(spec, q, psi, n_random=4000, seed=12345):
     """Max error / goal and psi error by altitude band, at the bake's
-    measurement points (grid.sample_points). Returns markdown rows."""
-    theta, w = grid.sample_points(spec, n_random, seed, True)
+    measurement points (measure.sample_points). Returns markdown rows."""
+    theta, w = measure.sample_points(spec, n_random, seed, True)
     x = np.cos(w)
     phi_r, psi_r = grid.reference_chunked(theta, x, 32, "bands", False)
     phi0, _ = grid.reference_chunked(np.zeros_like(x), x, 32, "bands", False)
-    phi_i, psi_i = grid.lookup(spec, q.astype(float), psi.astype(float), theta, x)
-    s, big = grid.goal_score(phi_i, phi_r, phi0)
+    phi_i, psi_i = lookup.lookup(spec, q.astype(float), psi.astype(float), theta, x)
+    s, big = lookup.goal_score(phi_i, phi_r, phi0)
     dpsi = np.where(big, np.abs(psi_i - psi_r), 0.0)
     h = ref.h_from_x(x)
     rows = ["| altitude (km) | points | max error / goal | psi error (rad) | worst at m = (theta - 90 deg)/w |",
@@ -179,18 +178,18 @@ def section(outdir, quick=False):
     ff = _farfield(os.path.join(outdir, "table_farfield.png"), plt)
 
     t0 = time.monotonic()
-    m = grid.measure(spec, q.astype(np.float32), psi.astype(np.float32), n_random=3000, order=32,
+    m = measure.measure(spec, q.astype(np.float32), psi.astype(np.float32), n_random=3000, order=32,
                      progress=False, seed=2024)
     t_meas = time.monotonic() - t0
     hmin, hmax = spec.h_range_km()
     ff_ok = [o[0] for o in ff if o[1] <= 1.0]
 
-    def img(name):  # bake/report.py rewrites outdir/ into report/
+    def img(name):  # bake/report/__main__.py rewrites outdir/ into report/
         return os.path.join(str(outdir), name)
 
     L = []
     L.append("## Earthshine table (no atmosphere)\n")
-    L.append("Design: docs/earthshine-table.md. Reference: bake/reference.py (quadrature, "
+    L.append("Design: docs/earthshine-table.md. Reference: bake/earthshine/reference.py (quadrature, "
              "< 1e-11 relative at the bake's order, checked against mpmath and closed forms).\n")
     L.append("Shipped table `%s`: %d+%d theta nodes x %d altitude nodes, %d bytes (phi and psi, "
              "float32), altitude %s to %s.\n" % (

@@ -1,18 +1,18 @@
 # SPDX-License-Identifier: MIT
 """Report section "Performance": error against cost for earthshine.
 
-`section(outdir) -> str` (called by bake/report.py):
+`section(outdir) -> str` (called by bake/report/__main__.py):
 
 1. runs `make bench` (bench/run_bench.py: ns and callgrind instructions per
    call of the C runtime, and the baker's quadrature per call), reads
    build/bench/bench.json;
 2. sweeps the table resolution (0.25x .. 1.5x the default grid of
    bake/config/default.json) and two interpolation schemes of the same grid,
-   Catmull-Rom (the runtime's, bake.grid.lookup) and bilinear (written here),
+   Catmull-Rom (the runtime's, bake.earthshine.lookup) and bilinear (written here),
    and one storage variant (16-bit integers with a float32 scale per altitude
    row, interpolated with Catmull-Rom),
-   measuring each against the quadrature with bake.grid's own test points
-   (bake.grid.sample_points) and error measure (goal_score: relative error
+   measuring each against the quadrature with bake.earthshine.measure's test points
+   (bake.earthshine.measure.sample_points) and error measure (goal_score: relative error
    where phi >= 1% of phi(0, h), absolute in units of phi(0, h) elsewhere);
 3. draws the Pareto plot (error against ns per call and against table
    bytes) and writes the table of points.
@@ -32,13 +32,13 @@ from pathlib import Path
 
 import numpy as np
 
-from . import grid
-from . import reference as ref
+from ..earthshine import grid, lookup, measure
+from ..earthshine import reference as ref
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parent.parent.parent
 SCALES = (0.25, 0.5, 0.75, 1.0, 1.5)
 # Other grids measured with the same points (lit, term, alt): the default
-# until issue 6 (more theta nodes, same altitude rows).
+# with more theta nodes and the same altitude rows.
 EXTRA_GRIDS = ((2, 65, 122),)
 
 
@@ -61,7 +61,7 @@ def _sweep(cache: Path):
     # test points and reference once, on the default grid's sampling
     extra = {k: g[k] for k in ("term_k0", "term_kp") if k in g}
     spec0 = grid.TableSpec(g["n_lit"], g["n_term"], g["n_alt"], w_min, 0.5 * math.pi, **extra)
-    theta, w = grid.sample_points(spec0, 2000, seed=12345)
+    theta, w = measure.sample_points(spec0, 2000, seed=12345)
     x = np.cos(w)
     phi_ref, psi_ref = grid.reference_chunked(theta, x, order, "perf: reference")
     phi0, _ = grid.reference_chunked(np.zeros_like(x), x, order, "perf: phi(0,x)")
@@ -79,9 +79,9 @@ def _sweep(cache: Path):
         q, psi = grid.node_values(spec, order=order)
         q32 = q.astype(np.float32).astype(np.float64)
         psi32 = psi.astype(np.float32).astype(np.float64)
-        phi_cr, psi_cr = grid.lookup(spec, q32, psi32, theta, x)
+        phi_cr, psi_cr = lookup.lookup(spec, q32, psi32, theta, x)
         # the baker's own bilinear variant of its lookup (same coordinates)
-        phi_bl, psi_bl = grid.lookup(spec, q32, psi32, theta, x, kind="linear")
+        phi_bl, psi_bl = lookup.lookup(spec, q32, psi32, theta, x, kind="linear")
 
         # 16-bit storage: q and psi as uint16 with one float32 scale per
         # altitude row (the row maximum): half the bytes of float32
@@ -89,13 +89,13 @@ def _sweep(cache: Path):
             scale = np.abs(a).max(axis=1, keepdims=True).astype(np.float32).astype(np.float64)
             scale[scale == 0] = 1.0
             return np.round(a / scale * 65535.0) / 65535.0 * scale
-        phi_16, psi_16 = grid.lookup(spec, q16(q), q16(psi), theta, x)
+        phi_16, psi_16 = lookup.lookup(spec, q16(q), q16(psi), theta, x)
         schemes = (("catmull-rom", phi_cr, psi_cr), ("bilinear", phi_bl, psi_bl),
                    ("catmull-rom-u16", phi_16, psi_16))
         if s is None:  # an extra grid: the runtime's scheme only
             schemes = schemes[:1]
         for scheme, approx, psi_approx in schemes:
-            score, big = grid.goal_score(approx, phi_ref, phi0)
+            score, big = lookup.goal_score(approx, phi_ref, phi0)
             with np.errstate(divide="ignore", invalid="ignore"):
                 rel = np.where(big, np.abs(approx - phi_ref) / phi_ref, 0.0)
             psi_err = float(np.where(big, np.abs(psi_approx - psi_ref), 0.0).max())
@@ -104,7 +104,7 @@ def _sweep(cache: Path):
                              n_alt=spec.n_alt, bytes=nbytes, max_rel_err=float(rel.max()),
                              max_score=float(score.max()), max_psi_err=psi_err))
     lam = x * x * ref.lambert_phase(theta)
-    score, big = grid.goal_score(lam, phi_ref, phi0)
+    score, big = lookup.goal_score(lam, phi_ref, phi0)
     with np.errstate(divide="ignore", invalid="ignore"):
         rel = np.where(big, np.abs(lam - phi_ref) / phi_ref, 0.0)
     rows.append(dict(scheme="lambert", scale=0, bytes=0, max_rel_err=float(rel.max()),
@@ -185,8 +185,8 @@ def section(outdir) -> str:
         "",
         "Measured by `make bench` (bench/run_bench.py) in this run: median ns per call on this "
         "machine and instructions per call from `valgrind --tool=callgrind` (difference of two run "
-        "lengths). Errors against the deterministic quadrature `bake.reference` at %d test points "
-        "between the nodes (bake.grid.sample_points); relative error where phi >= 1%% of "
+        "lengths). Errors against the deterministic quadrature `bake.earthshine.reference` at %d test points "
+        "between the nodes (bake.earthshine.measure.sample_points); relative error where phi >= 1%% of "
         "phi(0, h). See docs/performance.md for the goals and the flight target." % sw["n_points"],
         "",
         "![Pareto](%s)" % png,
@@ -203,7 +203,7 @@ def section(outdir) -> str:
             f(_val(bench, "bench.double.earthshine.max_rel_err_vs_quadrature"), "%.2e")),
         "| analytic Lambert far field (C, double) | %s | %s | 0 | %.2e |" % (
             f(ns_lam, "%.1f"), f(ins_lam, "%.0f"), lam["max_rel_err"]),
-        "| quadrature bake.reference (Python, one call) | %s | n/a | 0 | < 1e-12 (bake/reference.py) |" % (
+        "| quadrature bake.earthshine.reference (Python, one call) | %s | n/a | 0 | < 1e-12 (bake/earthshine/reference.py) |" % (
             f(ns_quad, "%.0f")),
         "| same quadrature at the table's accuracy (order %s per axis) | %s | n/a | 0 | <= the table's, on the bench scenes |" % (
             f(_val(bench, "bench.quadrature.matched_accuracy.order"), "%.0f"),

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 """Atmosphere profiles: refractivity and extinction versus altitude, and the band.
 
-Everything the ray reference (`bake.atm_rays`) needs about the air, in one
+Everything the ray reference (`bake.atmosphere.rays`) needs about the air, in one
 place, with every number stated and sourced. Altitudes are geometric (km)
 above a spherical Earth of radius R_EARTH_KM.
 
@@ -17,7 +17,7 @@ N(h) = n(h) - 1. Two profiles:
   continuation (refraction there is < 1e-9 and irrelevant).
   N_s = (n - 1) of standard dry air (15 C, 101325 Pa) at 550 nm from Edlen's
   dispersion formula (B. Edlen 1966, Metrologia 2, 71, eq. 1): 2.7784e-4.
-* `exponential(N0, H)`: N(h) = N0 exp(-h/H) (PHYSICS.md), used for the
+* `exponential(N0, H)`: N(h) = N0 exp(-h/H) (docs/physics.md), used for the
   closed-form test N0 sqrt(2 pi R / H) and as a simple alternative.
 
 The atmosphere is cut at TOP_KM = 100 km (N(100 km) ~ 1.5e-10): above the cut
@@ -41,7 +41,7 @@ Extinction (V band)
   quiet stratospheric background tau = 0.005 at 550 nm in a Gaussian layer at
   20 km (1-sigma 4 km), Angstrom exponent 1.5 (order of magnitude of SAGE II
   background values, e.g. Thomason et al. 2008, ACP 8, 983).
-* Clouds: opaque below CLOUD_TOP_KM = 10 km (issue 4): a ray whose lowest
+* Clouds: opaque below CLOUD_TOP_KM = 10 km: a ray whose lowest
   point lies below it is absorbed. Seed mode: no extinction, no clouds; only
   the solid Earth blocks.
 
@@ -60,7 +60,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-R_EARTH_KM = 6378.137       # WGS-84 equatorial radius (= OI_EARTH_RADIUS_KM)
+from ..common.constants import R_EARTH_KM
 TOP_KM = 100.0              # top of the model atmosphere (km)
 CLOUD_TOP_KM = 10.0         # opaque cloud layer below this altitude (km)
 

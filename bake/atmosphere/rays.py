@@ -8,7 +8,7 @@ each ray this module computes, by quadrature of the refraction integral:
   bending   alpha(b) = -2 b Int_{r0}^{top} (dn/dr) / (n sqrt(n^2 r^2 - b^2)) dr
   columns   Int c(r) dl along the bent path, dl = n r dr / sqrt(n^2 r^2 - b^2),
             per extinction ingredient (air, ozone, two aerosol layers), hence
-            the band transmission T(b) (V band, bake.atm_profile).
+            the band transmission T(b) (V band, bake.atmosphere.profile).
 
 The 1/sqrt singularity at the lowest point is removed by r = r0 + s^2
 (dr = 2 s ds, and s / sqrt(n^2 r^2 - b^2) is smooth and finite at s = 0, with
@@ -42,10 +42,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import atm_profile as ap
-
-SUN_RADIUS_KM = 695700.0        # IAU 2015 B3 nominal (= OI_SUN_RADIUS_KM)
-AU_KM = 149597870.7             # IAU 2012 B2 (= OI_AU_KM)
+from ..common.constants import AU_KM, SUN_RADIUS_KM  # noqa: F401  (bake.atmosphere.rays.AU_KM)
+from ..common.quadrature import gauss_legendre
+from . import profile as ap
 
 # Neckel & Labs (1994, Sol. Phys. 153, 91) limb darkening at 559.95 nm,
 # I(mu)/I(1) = sum_k A_k mu^k (the same law as src/shadow.c).
@@ -53,13 +52,8 @@ NL94_559 = np.array([0.26892, 1.34319, -1.58427, 1.91271, -1.31350, 0.37295])
 UNIFORM = np.array([1.0])
 
 
-_GL_CACHE = {}
-
-
 def _gl(n, lo=0.0, hi=1.0):
-    if n not in _GL_CACHE:
-        _GL_CACHE[n] = np.polynomial.legendre.leggauss(n)
-    x, w = _GL_CACHE[n]
+    x, w = gauss_legendre(n)
     return lo + (hi - lo) * (x + 1) / 2, w * (hi - lo) / 2
 
 

@@ -23,10 +23,10 @@ from pathlib import Path
 
 # (module, title) in report order.
 SECTIONS = [
-    ("bake.report_table", "Earthshine table"),
-    ("bake.report_photon", "Photon mapping"),
-    ("bake.report_atm", "Atmosphere"),
-    ("bake.report_perf", "Performance"),
+    ("bake.report.earthshine", "Earthshine table"),
+    ("bake.report.photon", "Photon mapping"),
+    ("bake.report.atmosphere", "Atmosphere"),
+    ("bake.report.perf", "Performance"),
 ]
 
 
@@ -88,7 +88,7 @@ def build(out: Path, only=None, strict: bool = False) -> int:
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(prog="python -m bake.report", description=__doc__.split("\n")[0])
     ap.add_argument("--out", default="docs/report.md")
-    ap.add_argument("--only", nargs="*", help="section module names (e.g. report_photon)")
+    ap.add_argument("--only", nargs="*", help="section module names (e.g. photon, atmosphere)")
     ap.add_argument("--strict", action="store_true", help="exit nonzero if a section fails")
     a = ap.parse_args(argv)
     return build(Path(a.out), a.only, a.strict)

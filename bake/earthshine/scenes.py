@@ -12,10 +12,12 @@ import json
 import math
 import time
 
-import numpy as np
 
-from . import __version__, emit, grid
+from .. import __version__
+from . import grid
 from . import reference as ref
+from . import table as emit
+from .measure import measure
 
 # Ladder of theta resolutions (n_lit, n_term) and altitude resolutions tried
 # for scenes, smallest first.
@@ -72,7 +74,7 @@ def choose_grid(cfg, log=print, progress=None):
             if best is not None and spec.bytes() >= best[0].bytes():
                 break
             q, psi = grid.node_values(spec, order=order, progress=False)
-            m = grid.measure(spec, emit.f32(q), emit.f32(psi), n_random=500, order=order,
+            m = measure(spec, emit.f32(q), emit.f32(psi), n_random=500, order=order,
                              progress=False, rel_goal=cfg["rel_goal"], refine=False)
             ok = _passes(m, cfg, SEARCH_MARGIN)
             log("  try %3d+%3d x %3d (%6d bytes): goal score %.3f, psi %.2e rad%s" % (
@@ -111,7 +113,7 @@ def bake(cfg, outdir, method="quadrature", log=print, progress=None, photon_args
                                   photon_args=pargs)
     q32, p32 = emit.f32(q), emit.f32(psi)
     mcfg = cfg["measure"]
-    m = grid.measure(spec, q32, p32, n_random=int(mcfg["n_random"]), order=order,
+    m = measure(spec, q32, p32, n_random=int(mcfg["n_random"]), order=order,
                      progress=progress, rel_goal=cfg["rel_goal"], seed=int(mcfg["seed"]))
     m["reference_order"] = order
     m["h_measure_min_km"] = grid.H_MEASURE_MIN_KM
@@ -124,9 +126,9 @@ def bake(cfg, outdir, method="quadrature", log=print, progress=None, photon_args
         m[k] = float("%.4g" % m[k])
     detail = ""
     if method == "quadrature":
-        detail = " (bake/reference.py: Gauss-Legendre order %d per piece, sinh-mapped slices)" % order
+        detail = " (bake/earthshine/reference.py: Gauss-Legendre order %d per piece, sinh-mapped slices)" % order
     else:
-        detail = " (bake/photon.py: %d photons, seed %d)" % (pargs.get("n_photons", 0), pargs.get("seed", 0))
+        detail = " (bake/photon/mapping.py: %d photons, seed %d)" % (pargs.get("n_photons", 0), pargs.get("seed", 0))
     meta = {
         "name": cfg["name"],
         "description": cfg.get("description", ""),

@@ -12,17 +12,18 @@ from pathlib import Path
 
 import numpy as np
 
-from . import photon
-from .photon import bake_phi, gather, gather_function, photon_map
-from .reference import R_EARTH_KM as R, phi_psi_reference
-from .shells import Atmosphere
+from ..common.constants import R_EARTH_KM as R
+from ..earthshine.reference import phi_psi_reference
+from ..photon import mapping as photon
+from ..photon.mapping import gather, gather_function, photon_map
+from ..photon.shells import Atmosphere
 
-GOAL = 1e-3            # issue 3: max relative error where phi >= 1% of phi(0, x)
+GOAL = 1e-3            # the goal: max relative error where phi >= 1% of phi(0, x)
 GOAL_ABS = 1e-5        # elsewhere: absolute error / phi(0, x)
 
 # Evaluation set: theta every 5 deg, altitudes 100 km (x=0.985) to beyond GEO.
 EVAL_THETA = np.radians(np.arange(0.0, 180.1, 5.0))
-EVAL_H = np.array([100.0, 400.0, 1500.0, 6378.137, 20000.0, 35786.0, 384400.0])
+EVAL_H = np.array([100.0, 400.0, 1500.0, R, 20000.0, 35786.0, 384400.0])
 EVAL_X = R / (R + EVAL_H)
 
 
@@ -66,12 +67,12 @@ def section(outdir) -> str:
 
     md.append("## Photon mapping (the seed's method, errata fixed)\n")
     md.append(
-        "`bake/photon.py` over `bake/shells.py`: photons from random points of the solar disc to "
+        "`bake/photon/mapping.py` over `bake/photon/shells.py`: photons from random points of the solar disc to "
         "random points of a disc 2% larger than the outermost shell, traced through the shells, "
         "reflected with the Lambertian cosine law, binned by theta on the outermost sphere "
         "(1 degree bins), then final gathering from each point. Method and errata: "
         "[photon-mapping.md](photon-mapping.md). Errors are against the independent quadrature "
-        "`bake.reference` (< 1e-12) on an evaluation grid of theta every 5 deg x "
+        "`bake.earthshine.reference` (< 1e-12) on an evaluation grid of theta every 5 deg x "
         f"{len(EVAL_H)} altitudes ({', '.join(f'{h:g}' for h in EVAL_H)} km).\n")
 
     # ---- gathering alone: exact exitance through the same quadrature
@@ -239,7 +240,7 @@ def section(outdir) -> str:
     md.append("### Seed Fig. 8 redone: photon map against the analytic far field\n")
     md.append(f"{n8:,} photons, no atmosphere; phi (r/R)^2 against theta. The seed's "
               "analytic model (eq. 3.1-3.4 divide by 2 pi d^2) is a factor 2 below the "
-              "energy-conserving Lambert sphere x^2 p(theta) (PHYSICS.md); its Fig. 8 altitude "
+              "energy-conserving Lambert sphere x^2 p(theta) (docs/physics.md); its Fig. 8 altitude "
               "was ~400 Earth radii.\n")
     md.append("| altitude | max rel. err photon vs reference (phi >= 1% phi0) | max rel. diff far field vs reference (same points) |")
     md.append("|---|---|---|")
