@@ -71,6 +71,10 @@ static void load(const ref_atm *c, oi_real sun[3], oi_real pt[3])
 static oi_model ld_model(void)
 {
     oi_model in, m;
+#ifdef OI_NO_LIMB_DARKENING
+    print_message("skip: OI_NO_LIMB_DARKENING removes the limb-darkened disc the table is baked for\n");
+    skip();
+#endif
     memset(&in, 0, sizeof in);
     in.limb_darkening = OI_LIMB_DARKENED;
     assert_int_equal(oi__model_resolve(&in, &m), OI_OK);
@@ -182,6 +186,10 @@ static void test_public_hook(void **state)
     oi_model none, ld;
     oi_shadow a, b;
     (void)state;
+#ifdef OI_NO_LIMB_DARKENING
+    print_message("skip: OI_NO_LIMB_DARKENING removes the limb-darkened disc the table is baked for\n");
+    skip();
+#endif
     load(c, sun, pt);
     memset(&none, 0, sizeof none);
     none.no_atmosphere = 1;
@@ -525,7 +533,7 @@ int main(void)
  * fraction_atm then equals the geometric fraction (tests/c/test_shadow.c). */
 int main(void)
 {
-    printf("test_atmosphere: OI_NO_ATMOSPHERE, nothing to test\n");
+    printf("skip test_atmosphere: OI_NO_ATMOSPHERE removes the refraction table\n");
     return 0;
 }
 #endif
