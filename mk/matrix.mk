@@ -8,7 +8,7 @@
 # A test that does not apply under an option says so and exits 0 ("skip test_moon: ...");
 # the option sets measured by `make size` are part of the matrix.
 
-# Compile-time option sets (full = the defaults). `make size` measures a subset (CROSS_OPTSETS).
+# Compile-time option sets (full = the defaults).
 OPTSET_full :=
 OPTSET_no_moon := -DOI_NO_MOON
 OPTSET_no_exposure := -DOI_NO_EXPOSURE
@@ -18,6 +18,9 @@ OPTSET_no_limb_darkening := -DOI_NO_LIMB_DARKENING
 OPTSET_sun_only := -DOI_NO_MOON -DOI_NO_EXPOSURE -DOI_NO_ATMOSPHERE -DOI_NO_EARTH_TABLE
 OPTSET_sun_uniform := $(OPTSET_sun_only) -DOI_NO_LIMB_DARKENING
 OPTSETS := full no_moon no_exposure no_atmosphere no_earth_table no_limb_darkening sun_only sun_uniform
+# every option set `make size` measures is tested too (mk/target.mk, mk/size.mk)
+OPTSETS += $(filter-out $(OPTSETS),$(CROSS_OPTSETS) $(SIZE_OPTSETS))
+$(foreach s,$(OPTSETS),$(if $(filter undefined,$(origin OPTSET_$(s))),$(error option set $(s) has no OPTSET_$(s))))
 
 PRECISIONS := double float
 VARIANTS := $(foreach p,$(PRECISIONS),$(foreach s,$(OPTSETS),$(p)-$(s)))
@@ -61,3 +64,9 @@ $(foreach v,$(VARIANTS),$(eval $(call VARIANT_RULES,$(v))))
 .PHONY: test-options
 test-options: $(addprefix variant-,$(VARIANTS)) ## every C unit test under every compile-time option set, both precisions
 	@echo "test-options: $(words $(VARIANTS)) variants passed"
+
+# test_shadow with the limb-darkened disc compiled out, both precisions (part of `make test`)
+.PHONY: test-shadow-nold
+test-shadow-nold: $(foreach p,$(PRECISIONS),$(VARIANT_DIR)/$(p)-no_limb_darkening/tests/test_shadow) ## test_shadow built with -DOI_NO_LIMB_DARKENING, both precisions
+	$(call run_variant_tests,no_limb_darkening,$^)
+TEST_TARGETS += test-shadow-nold
