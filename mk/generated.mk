@@ -86,12 +86,19 @@ GEN_MAKE_golden := golden
 .PHONY: regen check-generated check-tables check-tables-atm check-ref-shadow bake bake-earth \
   bake-atm ref-all ref-earthshine ref-shadow stability-vectors gen-tree
 
-regen: $(foreach g,$(GEN_GROUPS),$(GEN_MAKE_$(g))) ## run every generator in place: tables, reference vectors, golden outputs
+# The tables first: reference vectors and golden outputs are computed from them.
+regen: ## run every generator in place: tables, reference vectors, golden outputs
+	$(MAKE) --no-print-directory $(GEN_MAKE_tables)
+	$(MAKE) --no-print-directory $(filter-out $(GEN_MAKE_tables),$(foreach g,$(GEN_GROUPS),$(GEN_MAKE_$(g))))
 
-# The copy: every file git tracks or would track (not build/, not .venv), as it is now.
+# The copy: every file git tracks or would track (not build/, not .venv), as it is now
+# (outside a git checkout: every file but build/, the venv and .git).
 gen-tree: deps-py
 	@rm -rf $(GEN_DIR) && mkdir -p $(GEN_DIR)
-	@git ls-files -z --cached --others --exclude-standard | xargs -0 sh -c \
+	@{ if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then \
+	     git ls-files -z --cached --others --exclude-standard; \
+	   else find . \( -path ./build -o -path ./$(BUILDDIR) -o -path ./$(VENV) -o -path ./.git \) -prune \
+	     -o -type f -print0; fi; } | xargs -0 sh -c \
 	  'for f; do [ -e "$$f" ] && printf "%s\0" "$$f"; done' sh | tar --null -T - -cf - | tar -xf - -C $(GEN_DIR)
 	@echo "gen-tree: source tree copied into $(GEN_DIR)"
 

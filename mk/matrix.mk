@@ -30,13 +30,14 @@ var_prec = $(word 1,$(subst -, ,$(1)))
 var_set = $(word 2,$(subst -, ,$(1)))
 var_defs = $(DEF_$(call var_prec,$(1))) $(OPTSET_$(call var_set,$(1)))
 
-# run_variant_tests(variant, programs): each program's output goes to <program>.log; one line
-# per program (with its skip notes), the whole log of a failing one.
+# run_variant_tests(programs): each program's output goes to <program>.log; one line per
+# program, "ok|FAIL <variant> <test>" (with its skip notes), the whole log of a failing one.
 define run_variant_tests
-	@set -e; for t in $(2); do \
+	@set -e; for t in $(1); do \
+	  v=$$(basename $$(dirname $$(dirname $$t))); \
 	  if $$t > $$t.log 2>&1; then \
-	    echo "ok   $(1) $$(basename $$t)"; grep '^skip' $$t.log | sed 's/^/     /' || true; \
-	  else cat $$t.log; echo "FAIL $(1) $$(basename $$t) (log: $$t.log)"; exit 1; fi; \
+	    echo "ok   $$v $$(basename $$t)"; grep '^skip' $$t.log | sed 's/^/     /' || true; \
+	  else cat $$t.log; echo "FAIL $$v $$(basename $$t) (log: $$t.log)"; exit 1; fi; \
 	done
 endef
 
@@ -55,7 +56,7 @@ $(VARIANT_DIR)/$(1)/tests/%: tests/c/%.c $(VARIANT_DIR)/$(1)/liborbillum.a | dep
 
 .PHONY: variant-$(1)
 variant-$(1): $(patsubst tests/c/%.c,$(VARIANT_DIR)/$(1)/tests/%,$(CTEST_SRC))
-	$$(call run_variant_tests,$(1),$$^)
+	$$(call run_variant_tests,$$^)
 
 -include $(patsubst %.c,$(VARIANT_DIR)/$(1)/obj/%.d,$(RT_SRC))
 endef
@@ -68,5 +69,5 @@ test-options: $(addprefix variant-,$(VARIANTS)) ## every C unit test under every
 # test_shadow with the limb-darkened disc compiled out, both precisions (part of `make test`)
 .PHONY: test-shadow-nold
 test-shadow-nold: $(foreach p,$(PRECISIONS),$(VARIANT_DIR)/$(p)-no_limb_darkening/tests/test_shadow) ## test_shadow built with -DOI_NO_LIMB_DARKENING, both precisions
-	$(call run_variant_tests,no_limb_darkening,$^)
+	$(call run_variant_tests,$^)
 TEST_TARGETS += test-shadow-nold
