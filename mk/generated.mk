@@ -109,7 +109,7 @@ gen_case = $(1)) outs='$(GEN_OUT_$(1))'; how='make $(GEN_MAKE_$(1))';;
 # of each group, both ways (a committed file the generator no longer writes, a new output
 # that is not committed).
 define gen_check
-	$(MAKE) --no-print-directory -C $(GEN_DIR) VENV=$(abspath $(VENV)) BUILDDIR=build $(2)
+	+$(MAKE) --no-print-directory -C $(GEN_DIR) VENV=$(abspath $(VENV)) BUILDDIR=build $(2)
 	@fail=0; for g in $(1); do \
 	  case $$g in $(foreach g,$(GEN_GROUPS),$(call gen_case,$(g))) esac; \
 	  files=$$( { (for p in $$outs; do [ -e "$$p" ] && echo "$$p"; done); \
