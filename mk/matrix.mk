@@ -8,15 +8,16 @@
 # A test that does not apply under an option says so and exits 0 ("skip test_moon: ...");
 # the option sets measured by `make size` are part of the matrix.
 
-# Compile-time option sets (full = the defaults).
-OPTSET_full :=
-OPTSET_no_moon := -DOI_NO_MOON
-OPTSET_no_exposure := -DOI_NO_EXPOSURE
-OPTSET_no_atmosphere := -DOI_NO_ATMOSPHERE
-OPTSET_no_earth_table := -DOI_NO_EARTH_TABLE
-OPTSET_no_limb_darkening := -DOI_NO_LIMB_DARKENING
-OPTSET_sun_only := -DOI_NO_MOON -DOI_NO_EXPOSURE -DOI_NO_ATMOSPHERE -DOI_NO_EARTH_TABLE
-OPTSET_sun_uniform := $(OPTSET_sun_only) -DOI_NO_LIMB_DARKENING
+# Compile-time option sets (full = the defaults); a fragment included before (mk/size.mk) may
+# define its own or more, each OPTSET_<name> with its name in SIZE_OPTSETS.
+OPTSET_full ?=
+OPTSET_no_moon ?= -DOI_NO_MOON
+OPTSET_no_exposure ?= -DOI_NO_EXPOSURE
+OPTSET_no_atmosphere ?= -DOI_NO_ATMOSPHERE
+OPTSET_no_earth_table ?= -DOI_NO_EARTH_TABLE
+OPTSET_no_limb_darkening ?= -DOI_NO_LIMB_DARKENING
+OPTSET_sun_only ?= -DOI_NO_MOON -DOI_NO_EXPOSURE -DOI_NO_ATMOSPHERE -DOI_NO_EARTH_TABLE
+OPTSET_sun_uniform ?= $(OPTSET_sun_only) -DOI_NO_LIMB_DARKENING
 OPTSETS := full no_moon no_exposure no_atmosphere no_earth_table no_limb_darkening sun_only sun_uniform
 # every option set `make size` measures is tested too (mk/target.mk, mk/size.mk)
 OPTSETS += $(filter-out $(OPTSETS),$(CROSS_OPTSETS) $(SIZE_OPTSETS))

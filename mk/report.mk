@@ -25,10 +25,8 @@ shadow-report: deps-py ## planar Montenbruck-Gill vs exact spherical Sun fractio
 stability-report: $(BUILDDIR)/tests/double/test_stability $(BUILDDIR)/tests/float/test_stability deps-py ## rewrite the table in docs/stability.md
 	BUILDDIR=$(BUILDDIR) $(PY) tests/stability/report.py
 
-
 perf-doc: deps-py ## run cross size stack target-test target-bench bench; refresh docs/performance.md
 	$(PY) tools/perf_doc.py --builddir $(BUILDDIR)
-
 
 # ---- host benchmark (bench/): both precisions, static, -O2
 BENCH_DIR := $(BUILDDIR)/bench
