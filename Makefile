@@ -6,7 +6,6 @@ AR ?= ar
 BUILDDIR ?= build
 VENV ?= .venv
 PY := $(VENV)/bin/python
-SHARED ?= ../shared
 
 WARN := -std=c99 -Wall -Wextra -Wpedantic -Wconversion -Wshadow -Wdouble-promotion -Werror
 OPT ?= -O2
@@ -39,7 +38,7 @@ PLAN_SRC := $(sort $(wildcard examples/oi_plan/*.c))
 PLAN := $(BUILDDIR)/oi-plan
 QUICKSTART := $(BUILDDIR)/quickstart
 
-.PHONY: all lib demo test test-c test-py deps deps-c deps-py clean help
+.PHONY: all lib demo test test-c test-py clean help
 .DEFAULT_GOAL := all
 
 all: lib $(PLAN) $(QUICKSTART) ## build the library (both precisions), the planner and the README example
@@ -73,27 +72,6 @@ $(QUICKSTART): examples/quickstart/quickstart.c $(LIB_double)
 demo: $(PLAN) ## run the exposure planner on its built-in scenario
 	$(PLAN)
 
-# ---- dependencies: installed on demand so a fresh Debian machine needs only these commands
-deps: deps-c deps-py ## install what the build and tests need (cmocka, a Python venv)
-
-deps-c: $(BUILDDIR)/.deps-c
-$(BUILDDIR)/.deps-c:
-	@mkdir -p $(BUILDDIR)
-	@if ! echo '#include <stdarg.h>\n#include <stddef.h>\n#include <stdint.h>\n#include <setjmp.h>\n#include <cmocka.h>' | $(CC) -E -x c - >/dev/null 2>&1; then \
-	  echo "installing libcmocka-dev"; \
-	  SUDO=; [ "$$(id -u)" = 0 ] || SUDO=sudo; \
-	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq libcmocka-dev; \
-	fi
-	@touch $@
-
-deps-py: $(VENV)/.deps
-$(VENV)/.deps: requirements.txt
-	@[ -x $(PY) ] || python3 -m venv $(VENV) || { \
-	  SUDO=; [ "$$(id -u)" = 0 ] || SUDO=sudo; \
-	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq python3-venv && python3 -m venv $(VENV); }
-	$(PY) -m pip install -q --disable-pip-version-check -r requirements.txt
-	@touch $@
-
 # ---- tests
 $(BUILDDIR)/tests/double/%: tests/c/%.c $(LIB_double) | deps-c
 	@mkdir -p $(dir $@)
@@ -103,9 +81,12 @@ $(BUILDDIR)/tests/float/%: tests/c/%.c $(LIB_float) | deps-c
 	@mkdir -p $(dir $@)
 	$(CC) $(TEST_CFLAGS) $(DEF_float) $< $(LIB_float) -lcmocka -lm -o $@
 
-# Fragments in mk/ add their own targets and append to TEST_TARGETS.
+# Fragments in mk/, by role, add their own targets and append to TEST_TARGETS. The order
+# matters where one fragment's template uses another's variables: the matrix comes last.
 TEST_TARGETS := test-c test-py
--include $(sort $(wildcard mk/*.mk))
+include mk/deps.mk mk/target.mk
+-include mk/size.mk
+include mk/analysis.mk mk/python.mk mk/generated.mk mk/report.mk mk/matrix.mk
 
 test-c: $(CTEST_double) $(CTEST_float) $(PLAN) $(QUICKSTART) ## C unit tests, double and single precision
 	@set -e; for t in $(CTEST_double) $(CTEST_float); do echo "== $$t"; $$t; done

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# What CI runs for issue 5 (stability): the C tests under ASan + UBSan, the
-# static analysers, a short fuzz run of every target (after replaying the
-# committed regression corpus). Each make target installs what it needs.
+# CI for stability: the C tests under ASan + UBSan, the static analysers, a
+# short fuzz run of every target (after replaying the committed regression
+# corpus). Each make target installs what it needs. Called by .ci/run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export DEBIAN_FRONTEND=noninteractive

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# CI for the flight target (issue 6): cross toolchain and qemu are installed by
-# `make deps-cross` (apt-get) when missing; then the runtime is built for
+# CI for the flight target: cross toolchain and qemu are installed by
+# `make deps-cross` (apt-get, mk/deps.mk) when missing; then the runtime is built for
 # Cortex-M4F (float) and Cortex-M7 (double), measured, and the self-test
 # images run under qemu-system-arm. Called by .ci/run.
 set -euo pipefail

@@ -12,7 +12,7 @@
  *     NaN bit patterns, so an output left unwritten is caught too),
  *     fractions lie in [0, 1], irradiances, fluxes, areas are >= 0,
  *     angles in [0, pi], directions are unit vectors or zero.
- * Build and run: make fuzz (mk/fuzz.mk).
+ * Build and run: make fuzz (mk/analysis.mk).
  */
 #include "fuzz_common.h"
 

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * fuzz_common.h: decoding fuzzer bytes into oi_real values and vectors, and
- * the invariant check used by every target (issue 5, item 2).
+ * the invariant check used by every target.
  *
  * A value is one tag byte followed by its payload. The tags make the special
  * values (NaN, +-inf, +-0, subnormals, the largest finite number) as likely

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# mk/python.mk: the shared library, the Python binding, real-use examples (issue 7).
+# mk/python.mk: the shared library, the Python binding, real-use examples.
 #
 #   make shared        build/liborbillum.so (double) from src/*.c tables/*.c, -fPIC, strict flags
 #   make binding       install the binding (python/) into the venv (pip install ./python)
@@ -43,3 +43,15 @@ pass-example: all binding ## shipped TLE case -> pass plan CSV + plot + rendered
 
 gallery: all binding ## regenerate docs/gallery/ (pass plots and views of the shipped cases)
 	$(PY) -m examples.render.gallery --plan $(PLAN) --out docs/gallery
+
+# ---- the thin test binding's shared library (tests/python/_oi_ctypes.py):
+# the double-precision runtime plus a struct-size probe. Not the public
+# binding's build/liborbillum.so.
+ORI_TEST_SO := $(BUILDDIR)/libori_test.so
+$(ORI_TEST_SO): $(RT_SRC) tests/stability/ori_test_abi.c $(wildcard include/*.h src/*.h tables/*.h)
+	@mkdir -p $(dir $@)
+	$(CC) $(RT_CFLAGS) -fPIC -shared $(RT_SRC) tests/stability/ori_test_abi.c -lm -o $@
+
+ori-test-so: $(ORI_TEST_SO)
+test-py: $(ORI_TEST_SO)
+.PHONY: ori-test-so

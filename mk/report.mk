@@ -1,15 +1,50 @@
 # SPDX-License-Identifier: MIT
-# mk/report.mk: `make report` writes docs/report.md and its plots in docs/report/.
-# Sections are listed in bake/report.py (SECTIONS); missing ones are skipped with a note.
-# REPORT_ARGS: e.g. REPORT_ARGS="--only report_photon" or "--strict".
+# mk/report.mk: measurements and reports (writing to build/ unless a target says it refreshes docs/).
+#   make report            docs/report.md and its plots in docs/report/ (sections: bake/report.py;
+#                          REPORT_ARGS: e.g. REPORT_ARGS="--only report_photon" or "--strict")
+#   make perf-doc          cross, size, stack, target-test, target-bench, bench; docs/performance.md
+#   make bench             host benchmark: ns and instructions per scene, against quadrature
+#   make shadow-report     planar (Montenbruck & Gill) vs exact spherical Sun fraction
+#   make stability-report  the worst-error table of docs/stability.md
+#   make golden            re-record the planner's golden outputs (tests/golden/)
 
-.PHONY: report
+.PHONY: report perf-doc bench shadow-report stability-report golden
 REPORT_ARGS ?=
 
 report: deps-py ## write docs/report.md + docs/report/*.png (every number computed by this run)
 	MPLBACKEND=Agg $(PY) -m bake.report --out docs/report.md $(REPORT_ARGS)
 
-.PHONY: golden
 golden: $(PLAN) ## re-record tests/golden/*.plan.csv and demo.txt (only for a change meant to move them)
 	@for f in tests/golden/*.in.csv; do $(PLAN) --csv $$f > $${f%.in.csv}.plan.csv || [ $$? -eq 1 ]; done
 	$(PLAN) > tests/golden/demo.txt
+
+shadow-report: deps-py ## planar Montenbruck-Gill vs exact spherical Sun fraction (regenerates refs)
+	$(PY) tests/ref/gen_refs.py --only shadow --report
+
+# ---- the worst-error table of docs/stability.md, from the stability suite
+stability-report: $(BUILDDIR)/tests/double/test_stability $(BUILDDIR)/tests/float/test_stability deps-py ## rewrite the table in docs/stability.md
+	BUILDDIR=$(BUILDDIR) $(PY) tests/stability/report.py
+
+perf-doc: deps-py ## run cross size stack target-test target-bench bench; refresh docs/performance.md
+	$(PY) tools/perf_doc.py --builddir $(BUILDDIR)
+
+# ---- host benchmark (bench/): both precisions, static, -O2
+BENCH_DIR := $(BUILDDIR)/bench
+BENCH_CFLAGS := $(WARN) -O2 -g -Iinclude -Isrc -Itables
+
+define BENCH_RULES
+$(BENCH_DIR)/$(1)/stubs/%.o: target/stubs.c
+	@mkdir -p $$(dir $$@)
+	$$(CC) $$(BENCH_CFLAGS) $$(DEF_$(1)) -DSTUB_$$* -c $$< -o $$@
+
+$(BENCH_DIR)/$(1)/libstubs.a: $(patsubst %,$(BENCH_DIR)/$(1)/stubs/%.o,$(OI_PUBLIC))
+	rm -f $$@ && $$(AR) rcs $$@ $$^
+
+$(BENCH_DIR)/bench-$(1): bench/bench.c bench/scenes.h $(LIB_$(1)) $(BENCH_DIR)/$(1)/libstubs.a
+	$$(CC) $$(BENCH_CFLAGS) $$(DEF_$(1)) -D_POSIX_C_SOURCE=199309L bench/bench.c $(LIB_$(1)) \
+	  $(BENCH_DIR)/$(1)/libstubs.a -lm $$(HOST_LDFLAGS) -o $$@
+endef
+$(foreach p,double float,$(eval $(call BENCH_RULES,$(p))))
+
+bench: $(BENCH_DIR)/bench-double $(BENCH_DIR)/bench-float deps-py deps-bench ## ns and instructions per scene; table vs quadrature
+	@nice -n 5 $(PY) bench/run_bench.py --bindir $(BENCH_DIR) --out $(BENCH_DIR)/bench.txt

@@ -19,7 +19,7 @@ void check_known(const char *what, double want, double got, double abs_tol, doub
 void note_known(void);
 
 /* Golden-vector groups: each runs the committed tests/c/ref_<name>.h when
- * mk/cross.mk found it (-DOI_HAVE_REF_<NAME>) and does nothing otherwise. */
+ * mk/target.mk found it (-DOI_HAVE_REF_<NAME>) and does nothing otherwise. */
 void golden_phase(void);
 void golden_moon(void);
 void golden_shadow(void);

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * golden_stability.c: the stability suite's mpmath vectors
- * (tests/stability/vectors.h, tests/stability/gen_vectors.py, issue 5) on the
+ * (tests/stability/vectors.h, tests/stability/gen_vectors.py) on the
  * target, with the suite's acceptance rule per output
  *     |got - want| <= GOAL |want| + spread
  * (GOAL 1e-12 double / 1e-5 single; spread = the output's conditioning term)
@@ -9,7 +9,7 @@
  * mirrored here: each entry widens the tolerance of the matching vectors and
  * is counted and printed as KNOWN, not as a failure; -DOI_TARGET_STRICT makes
  * them failures). The shadow vectors are the geometric (conical) shadow, so
- * oi_sun_fraction runs with no_atmosphere set (the atmosphere of issue 4
+ * oi_sun_fraction runs with no_atmosphere set (the refracting atmosphere
  * changes fraction_atm and may warn outside its table). What this adds to the
  * host run: the same vectors through
  * the cross compiler, newlib's libm and the Cortex-M FPU.
@@ -43,7 +43,7 @@ typedef struct known_issue {
 } known_issue;
 
 /* a sentinel that matches no table, then tests/c/test_stability.c's KNOWN
- * entries, extracted by mk/cross.mk into build/cross/stab_known.h (with or
+ * entries, extracted by mk/target.mk into build/cross/stab_known.h (with or
  * without a trailing comma; possibly none) */
 static const known_issue KNOWN[] = {
     {"", NULL, "", 0, 0, ""},

@@ -199,7 +199,7 @@ static double lambert_ref(double xi)
 }
 
 /* Sub-solar earthshine (theta = 0) at distance r from the centre of a
- * Lambertian Earth of radius 1 (PHYSICS.md section 2):
+ * Lambertian Earth of radius 1 (docs/physics.md, earthshine):
  *   phi = 2 int_x^1 u (u/x - 1) / (1/x^2 + 1 - 2u/x)^(3/2) du,  x = R/r,
  * u the cosine of the angle at the centre; every visible point is lit.
  * Composite Simpson rule, n intervals (the integrand is smooth). */

@@ -1335,5 +1335,8 @@ int main(void)
         cmocka_unit_test(test_scene_sun_angle_is_oi_angle),
 #endif
     };
+#ifdef OI_NO_EXPOSURE
+    printf("skip test_exposure's camera and exposure cases: OI_NO_EXPOSURE removes the camera model\n");
+#endif
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

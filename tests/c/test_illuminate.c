@@ -308,6 +308,12 @@ static void test_target_in_umbra(void **state)
     set3(s.target_km, -7000, 0, 0);
     set3(s.observer_km, -7000, 100, 0);
     s.terms = OI_TERM_SUN | OI_TERM_EARTH;
+#ifdef OI_NO_EARTH_TABLE
+    /* The Lambert far field sees a lit crescent from any theta below pi (here
+     * the double nearest pi): the near-field zero below is the table's. */
+    print_message("skip the earthshine part of test_target_in_umbra: OI_NO_EARTH_TABLE\n");
+    s.terms = OI_TERM_SUN;
+#endif
     assert_true(oi_illuminate(&s, NULL, &out) >= 0);
     assert_int_equal(out.shadow.region, OI_SHADOW_UMBRA);
     assert_true(out.e_sun == 0);

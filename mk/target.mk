@@ -1,13 +1,13 @@
 # SPDX-License-Identifier: MIT
-# mk/cross.mk: the flight target (issue 6). Included by the Makefile.
+# mk/target.mk: the flight target. Included by the Makefile.
 #   make cross        the runtime for Cortex-M4F (float) and Cortex-M7 (double), -Os and -O2
 #   make size         flash and RAM per configuration and compile-time option set
 #   make stack        worst-case stack of every public function (-fstack-usage + call graph)
 #   make target-test  bare-metal self-test images run under qemu-system-arm
 #                     (TARGET_STRICT=1: known deviations count as failures)
 #   make target-bench instructions per scene on the Cortex-M builds (qemu -icount)
-#   make bench        host benchmark: ns and instructions per scene, against quadrature
 # Every runtime file is compiled with the host's strict flags ($(WARN), -Werror included).
+# The option sets (OPTSET_*) are defined in mk/matrix.mk, which tests each of them on the host.
 
 CROSS_PREFIX ?= arm-none-eabi-
 CROSS_CC := $(CROSS_PREFIX)gcc
@@ -29,14 +29,7 @@ CROSS_CORES := m4f m7
 CROSS_OPTS := Os O2
 CROSS_CFGS := $(foreach c,$(CROSS_CORES),$(foreach o,$(CROSS_OPTS),$(c)-$(o)))
 
-# Compile-time option sets measured by `make size` (full = the defaults).
-OPTSET_full :=
-OPTSET_sun_only := -DOI_NO_MOON -DOI_NO_EXPOSURE -DOI_NO_ATMOSPHERE -DOI_NO_EARTH_TABLE
-OPTSET_no_moon := -DOI_NO_MOON
-OPTSET_no_atmosphere := -DOI_NO_ATMOSPHERE
-OPTSET_no_exposure := -DOI_NO_EXPOSURE
-OPTSET_no_earth_table := -DOI_NO_EARTH_TABLE
-OPTSET_sun_uniform := $(OPTSET_sun_only) -DOI_NO_LIMB_DARKENING
+# Compile-time option sets measured by `make size` (OPTSET_<name> in mk/matrix.mk).
 CROSS_OPTSETS := full sun_only no_moon no_atmosphere no_exposure no_earth_table sun_uniform
 # which program each option set links (target/size_<prog>.c)
 SIZEPROG_sun_only := sun
@@ -65,7 +58,7 @@ GOLDEN := phase moon shadow earthshine stability
 # golden vectors: -DOI_HAVE_REF_<NAME> for each committed tests/c/ref_<name>.h
 REF_HEADERS := $(sort $(wildcard tests/c/ref_*.h))
 REF_DEFS := $(foreach h,$(REF_HEADERS),-DOI_HAVE_$(shell echo $(basename $(notdir $(h))) | tr a-z A-Z))
-# the stability suite's vectors (issue 5)
+# the stability suite's vectors
 STAB_VECTORS := $(wildcard tests/stability/vectors.h)
 REF_HEADERS += $(STAB_VECTORS)
 REF_DEFS += $(if $(STAB_VECTORS),-DOI_HAVE_STABILITY_VECTORS)
@@ -78,19 +71,7 @@ $(STAB_KNOWN_H): $(wildcard tests/c/test_stability.c)
 	@{ [ -f tests/c/test_stability.c ] && sed -n '/^static const known_issue KNOWN\[\] = {/,/^};/p' \
 	    tests/c/test_stability.c | sed '1d;$$d'; true; } > $@
 
-.PHONY: cross size stack target-test target-bench bench deps-cross deps-bench cross-clean perf-doc
-
-deps-cross: $(BUILDDIR)/.deps-cross
-$(BUILDDIR)/.deps-cross:
-	@mkdir -p $(BUILDDIR)
-	@if ! command -v $(CROSS_CC) >/dev/null 2>&1 || ! command -v $(QEMU) >/dev/null 2>&1 || \
-	   ! echo '#include <math.h>' | $(CROSS_CC) -E -x c - >/dev/null 2>&1; then \
-	  echo "installing gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm"; \
-	  SUDO=; [ "$$(id -u)" = 0 ] || SUDO=sudo; \
-	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq \
-	    gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm; \
-	fi
-	@touch $@
+.PHONY: cross size stack target-test target-bench cross-clean
 
 # ---- per (configuration, option set): objects and library
 # $(1) = cfg, $(2) = option set; the full set lives at build/cross/<cfg>/, others in opt-<set>/
@@ -180,39 +161,5 @@ target-bench: $(TBENCH_ELFS) ## instructions per scene on Cortex-M4F/M7 (qemu -i
 	    -semihosting-config enable=on,target=native -nographic -monitor none -serial none \
 	    -kernel $(CROSS_DIR)/$$c/bench.elf 2>&1 | sed "s/^target\.[a-z]*\./target.$$c./"; done
 
-perf-doc: deps-py ## run cross size stack target-test target-bench bench; refresh docs/performance.md
-	$(PY) tools/perf_doc.py --builddir $(BUILDDIR)
-
 cross-clean:
 	rm -rf $(CROSS_DIR)
-
-# ---- host benchmark (bench/): both precisions, static, -O2
-BENCH_DIR := $(BUILDDIR)/bench
-BENCH_CFLAGS := $(WARN) -O2 -g -Iinclude -Isrc -Itables
-
-define BENCH_RULES
-$(BENCH_DIR)/$(1)/stubs/%.o: target/stubs.c
-	@mkdir -p $$(dir $$@)
-	$$(CC) $$(BENCH_CFLAGS) $$(DEF_$(1)) -DSTUB_$$* -c $$< -o $$@
-
-$(BENCH_DIR)/$(1)/libstubs.a: $(patsubst %,$(BENCH_DIR)/$(1)/stubs/%.o,$(OI_PUBLIC))
-	rm -f $$@ && $$(AR) rcs $$@ $$^
-
-$(BENCH_DIR)/bench-$(1): bench/bench.c bench/scenes.h $(LIB_$(1)) $(BENCH_DIR)/$(1)/libstubs.a
-	$$(CC) $$(BENCH_CFLAGS) $$(DEF_$(1)) -D_POSIX_C_SOURCE=199309L bench/bench.c $(LIB_$(1)) \
-	  $(BENCH_DIR)/$(1)/libstubs.a -lm $$(HOST_LDFLAGS) -o $$@
-endef
-$(foreach p,double float,$(eval $(call BENCH_RULES,$(p))))
-
-deps-bench: $(BUILDDIR)/.deps-bench
-$(BUILDDIR)/.deps-bench:
-	@mkdir -p $(BUILDDIR)
-	@if ! command -v valgrind >/dev/null 2>&1; then \
-	  echo "installing valgrind"; \
-	  SUDO=; [ "$$(id -u)" = 0 ] || SUDO=sudo; \
-	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq valgrind; \
-	fi
-	@touch $@
-
-bench: $(BENCH_DIR)/bench-double $(BENCH_DIR)/bench-float deps-py deps-bench ## ns and instructions per scene; table vs quadrature
-	@nice -n 5 $(PY) bench/run_bench.py --bindir $(BENCH_DIR) --out $(BENCH_DIR)/bench.txt

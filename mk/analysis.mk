@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# mk/fuzz.mk: fuzzing (libFuzzer), sanitizers, static analysers (issue 5).
+# mk/analysis.mk: fuzzing (libFuzzer), sanitizers, static analysers.
 #
 #   make fuzz       each libFuzzer target for FUZZ_SECONDS (60) per precision,
 #                   starting from fuzz/corpus/<target>; new crashers land in
@@ -11,7 +11,7 @@
 #                   -fsanitize=address,undefined -fno-sanitize-recover, and run.
 #   make analyze    cppcheck (three configurations), gcc -fanalyzer and clang
 #                   --analyze (both precisions) on src/ and tables/: all clean.
-# Each installs what it needs (clang, libclang-rt-dev, cppcheck) with apt-get.
+# Each installs what it needs (clang, libclang-rt-dev, cppcheck: mk/deps.mk).
 
 FUZZ_SECONDS ?= 60
 FUZZ_CI_SECONDS ?= 15
@@ -27,27 +27,8 @@ FUZZ_BINS := $(foreach t,$(FUZZ_TARGETS),$(FUZZ_DIR)/double/fuzz_$(t) $(FUZZ_DIR
 # The planner's modules except its main(): the CSV target links the reader.
 PLAN_LIB_SRC := $(filter-out examples/oi_plan/main.c,$(PLAN_SRC))
 
-SUDO_APT = SUDO=; [ "$$(id -u)" = 0 ] || SUDO=sudo; \
-  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq
-
-.PHONY: deps-fuzz deps-analyze fuzz fuzz-ci fuzz-replay fuzz-build sanitize analyze \
+.PHONY: fuzz fuzz-ci fuzz-replay fuzz-build sanitize analyze \
         analyze-cppcheck analyze-gcc analyze-clang
-
-deps-fuzz: $(BUILDDIR)/.deps-fuzz
-$(BUILDDIR)/.deps-fuzz:
-	@mkdir -p $(BUILDDIR)
-	@if ! printf 'int LLVMFuzzerTestOneInput(const unsigned char *d, unsigned long n)\n{ (void)d; (void)n; return 0; }\n' \
-	    | $(FUZZ_CC) -x c -fsanitize=fuzzer,address,undefined - -o $(BUILDDIR)/.fuzz-probe >/dev/null 2>&1; then \
-	  echo "installing clang libclang-rt-dev"; $(SUDO_APT) clang libclang-rt-dev; \
-	fi
-	@rm -f $(BUILDDIR)/.fuzz-probe
-	@touch $@
-
-deps-analyze: $(BUILDDIR)/.deps-analyze
-$(BUILDDIR)/.deps-analyze:
-	@mkdir -p $(BUILDDIR)
-	@command -v cppcheck >/dev/null 2>&1 || { echo "installing cppcheck"; $(SUDO_APT) cppcheck; }
-	@touch $@
 
 # ---- libFuzzer targets: the runtime compiled into each binary with the sanitizers.
 $(FUZZ_DIR)/double/fuzz_api: fuzz/fuzz_api.c fuzz/fuzz_common.h $(RT_SRC) | deps-fuzz
@@ -134,24 +115,3 @@ analyze-clang: deps-fuzz
 	done; done
 
 analyze: analyze-cppcheck analyze-gcc analyze-clang ## cppcheck, gcc -fanalyzer and clang --analyze on the runtime, must be clean
-
-# ---- the thin test binding's shared library (tests/python/_oi_ctypes.py):
-# the double-precision runtime plus a struct-size probe. Not the public
-# binding's build/liborbillum.so.
-ORI_TEST_SO := $(BUILDDIR)/libori_test.so
-$(ORI_TEST_SO): $(RT_SRC) tests/stability/ori_test_abi.c $(wildcard include/*.h src/*.h tables/*.h)
-	@mkdir -p $(dir $@)
-	$(CC) $(RT_CFLAGS) -fPIC -shared $(RT_SRC) tests/stability/ori_test_abi.c -lm -o $@
-
-ori-test-so: $(ORI_TEST_SO)
-test-py: $(ORI_TEST_SO)
-.PHONY: ori-test-so
-
-# ---- the worst-error table of docs/stability.md, from the stability suite
-stability-report: $(BUILDDIR)/tests/double/test_stability $(BUILDDIR)/tests/float/test_stability deps-py ## rewrite the table in docs/stability.md
-	BUILDDIR=$(BUILDDIR) $(PY) tests/stability/report.py
-
-# regenerate the mpmath test vectors (about two minutes)
-stability-vectors: deps-py ## regenerate tests/stability/vectors.h (mpmath)
-	$(PY) tests/stability/gen_vectors.py
-.PHONY: stability-report stability-vectors

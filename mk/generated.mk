@@ -1,0 +1,138 @@
+# SPDX-License-Identifier: MIT
+# mk/generated.mk: every committed generated file, its generator, and one rule to check them.
+#
+#   make regen            run every generator in place (rewrites the committed files)
+#   make check-generated  copy the source tree into build/generated/, run `make regen` there,
+#                         and cmp every generated file with the committed one: each file that
+#                         differs is named with the target that regenerates it
+#   make check-tables     the same check, tables only (earthshine and atmosphere)
+#   make bake, bake-atm, ref-earthshine, ref-shadow, stability-vectors, golden: one generator
+#
+# A group <g> of GEN_GROUPS has GEN_OUT_<g> (committed files, globs allowed) and GEN_MAKE_<g>
+# (the target that writes them in place). Not checked, because they are not deterministic:
+# docs/performance.md (timings), docs/report.md and docs/report/*.png, docs/gallery/ (timings,
+# and PNG bytes of the plotting library), docs/stability.md (errors measured through the host's
+# libm, whose last bits differ between machines).
+
+GEN_DIR := $(BUILDDIR)/generated
+GEN_ABS_PY := $(abspath $(PY))
+
+# The baker's command line: one command per subject (python -m bake {earthshine,atmosphere,all})
+# when the package has it, else the per-table commands.
+BAKE_HAS_ROOT := $(shell grep -qs -e '--root' bake/__main__.py && echo 1)
+REF_GENERATE := $(wildcard tests/ref/generate.py)
+
+ifeq ($(BAKE_HAS_ROOT),1)
+GEN_OUT_tables = $(shell $(PY) -m bake all --list 2>/dev/null)
+GEN_MAKE_tables := bake
+bake: deps-py
+	$(PY) -m bake all --root .
+bake-atm: deps-py
+	$(PY) -m bake atmosphere --root .
+else
+GEN_OUT_tables := tables/oi_earth_* tables/oi_atm_table.c tables/oi_atm_table.h tables/oi_atm_table.json \
+  tests/c/ref_atmosphere.h
+GEN_MAKE_tables := bake
+bake: bake-earth bake-atm
+bake-earth: deps-py
+	$(PY) -m bake --all --out tables $(BAKE_FLAGS)
+bake-atm: deps-py
+	$(PY) -m bake.atm_table --out tables --vectors tests/c/ref_atmosphere.h
+endif
+BAKE_FLAGS ?=
+
+ifneq ($(REF_GENERATE),)
+GEN_OUT_refs = $(shell $(PY) tests/ref/generate.py all --list 2>/dev/null)
+GEN_MAKE_refs := ref-all
+ref-all: deps-py
+	$(PY) tests/ref/generate.py all --root .
+ref-earthshine: deps-py
+	$(PY) tests/ref/generate.py earthshine --root .
+ref-shadow: deps-py
+	$(PY) tests/ref/generate.py shadow --root .
+stability-vectors: deps-py
+	$(PY) tests/ref/generate.py stability --root .
+GEN_GROUPS := tables refs golden
+else
+GEN_OUT_ref_earthshine := tests/c/ref_earthshine.h
+GEN_MAKE_ref_earthshine := ref-earthshine
+GEN_OUT_ref_shadow := tests/c/ref_phase.h tests/c/ref_shadow.h
+GEN_MAKE_ref_shadow := ref-shadow
+GEN_OUT_stability := tests/stability/vectors.h
+GEN_MAKE_stability := stability-vectors
+ref-all: ref-earthshine ref-shadow stability-vectors
+ref-earthshine: deps-py
+	$(PY) -m bake.gen_test_vectors
+ref-shadow: deps-py
+	$(PY) tests/ref/gen_refs.py
+stability-vectors: deps-py
+	$(PY) tests/stability/gen_vectors.py
+GEN_GROUPS := tables ref_earthshine ref_shadow stability golden
+endif
+
+
+# what each generator target does, whichever command line the generators have
+bake: ## regenerate every baked table (tables/) and its sidecars, byte for byte
+bake-atm: ## regenerate the atmosphere table only
+ref-all: ## regenerate every C reference vector (the shadow ones take ~6 min)
+ref-earthshine: ## regenerate tests/c/ref_earthshine.h
+ref-shadow: ## regenerate tests/c/ref_phase.h and ref_shadow.h (mpmath, ~6 min)
+stability-vectors: ## regenerate tests/stability/vectors.h (mpmath)
+
+# The planner's exact output on the shipped cases and the built-in scenario (mk/report.mk).
+GEN_OUT_golden := tests/golden/*.plan.csv tests/golden/demo.txt
+GEN_MAKE_golden := golden
+
+.PHONY: regen check-generated check-tables check-tables-atm check-ref-shadow bake bake-earth \
+  bake-atm ref-all ref-earthshine ref-shadow stability-vectors gen-tree
+
+# The tables first: reference vectors and golden outputs are computed from them.
+regen: ## run every generator in place: tables, reference vectors, golden outputs
+	$(MAKE) --no-print-directory $(GEN_MAKE_tables)
+	$(MAKE) --no-print-directory $(filter-out $(GEN_MAKE_tables),$(foreach g,$(GEN_GROUPS),$(GEN_MAKE_$(g))))
+
+# The copy: every file git tracks or would track (not build/, not .venv), as it is now
+# (outside a git checkout: every file but build/, the venv and .git).
+gen-tree: deps-py
+	@rm -rf $(GEN_DIR) && mkdir -p $(GEN_DIR)
+	@{ if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then \
+	     git ls-files -z --cached --others --exclude-standard; \
+	   else find . \( -path ./build -o -path ./$(BUILDDIR) -o -path ./$(VENV) -o -path ./.git \) -prune \
+	     -o -type f -print0; fi; } | xargs -0 sh -c \
+	  'for f; do [ -e "$$f" ] && printf "%s\0" "$$f"; done' sh | tar --null -T - -cf - | tar -xf - -C $(GEN_DIR)
+	@echo "gen-tree: source tree copied into $(GEN_DIR)"
+
+# gen_case(group): the shell case that sets the group's outputs and regenerating command.
+gen_case = $(1)) outs='$(GEN_OUT_$(1))'; how='make $(GEN_MAKE_$(1))';;
+
+# gen_check(groups, targets): run the targets in the copy (same venv), then cmp every output
+# of each group, both ways (a committed file the generator no longer writes, a new output
+# that is not committed).
+define gen_check
+	+$(MAKE) --no-print-directory -C $(GEN_DIR) VENV=$(abspath $(VENV)) BUILDDIR=build $(2)
+	@fail=0; for g in $(1); do \
+	  case $$g in $(foreach g,$(GEN_GROUPS),$(call gen_case,$(g))) esac; \
+	  files=$$( { (for p in $$outs; do [ -e "$$p" ] && echo "$$p"; done); \
+	              (cd $(GEN_DIR) && for p in $$outs; do [ -e "$$p" ] && echo "$$p"; done); } | sort -u); \
+	  [ -n "$$files" ] || { echo "check-generated: group $$g has no files"; fail=1; }; \
+	  for f in $$files; do \
+	    if [ ! -e $(GEN_DIR)/$$f ]; then echo "DIFF $$f: committed, but '$$how' no longer writes it"; fail=1; \
+	    elif [ ! -e $$f ]; then echo "DIFF $$f: written by '$$how', not committed"; fail=1; \
+	    elif ! cmp -s $$f $(GEN_DIR)/$$f; then echo "DIFF $$f differs from a fresh run: regenerate with '$$how'"; fail=1; \
+	    else echo "same $$f"; fi; \
+	  done; \
+	done; \
+	if [ $$fail = 0 ]; then echo "check-generated: every file of $(1) matches a fresh run byte for byte"; \
+	else echo "check-generated: FAILED (fresh files in $(GEN_DIR))"; exit 1; fi
+endef
+
+check-generated: gen-tree ## re-create every committed generated file in build/generated/ and cmp it (~10 min)
+	$(call gen_check,$(GEN_GROUPS),regen)
+
+check-tables: gen-tree ## re-bake every table into build/generated/ and fail on any difference with tables/
+	$(call gen_check,tables,bake)
+
+check-tables-atm: check-tables ## the same check as check-tables (the atmosphere table is one of them)
+
+check-ref-shadow: gen-tree ## regenerate the phase/shadow references in build/generated/ and fail on any difference
+	$(call gen_check,$(if $(REF_GENERATE),refs,ref_shadow),$(if $(REF_GENERATE),ref-all,ref-shadow))
