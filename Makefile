@@ -86,7 +86,7 @@ $(BUILDDIR)/tests/float/%: tests/c/%.c $(LIB_float) | deps-c
 TEST_TARGETS := test-c test-py
 include mk/deps.mk mk/target.mk
 -include mk/size.mk
-include mk/analysis.mk mk/python.mk mk/generated.mk mk/report.mk mk/matrix.mk
+include mk/analysis.mk mk/python.mk mk/generated.mk mk/report.mk mk/wasm.mk mk/matrix.mk
 
 test-c: $(CTEST_double) $(CTEST_float) $(PLAN) $(QUICKSTART) ## C unit tests, double and single precision
 	@set -e; for t in $(CTEST_double) $(CTEST_float); do echo "== $$t"; $$t; done
@@ -94,6 +94,11 @@ test-c: $(CTEST_double) $(CTEST_float) $(PLAN) $(QUICKSTART) ## C unit tests, do
 
 test-py: deps-py all ## Python tests (baker, references, planner batch interface)
 	$(PY) -m pytest -q tests/python
+
+# A mismatch of precision between a program and the archive fails at link time.
+test-precision-guard: lib ## link a program against the wrong-precision archive and expect the named failure
+	sh tests/c/precision_guard.sh $(BUILDDIR) $(CC)
+TEST_TARGETS += test-precision-guard
 
 test: deps $(TEST_TARGETS) ## every test: C (both precisions) and Python
 	@echo "all tests passed"

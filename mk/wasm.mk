@@ -123,3 +123,4 @@ viewer-shots: viewer browser-deps ## three screenshots of the viewer into docs/v
 	CHROMIUM=$(CHROMIUM) VIEWER_DIR=$(VIEWER_DIR) $(VIEWER_PY) tests/browser/shots.py docs/viewer
 
 -include $(WASM_OBJ:.o=.d)
+TEST_TARGETS += test-wasm test-viewer
