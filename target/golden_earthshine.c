@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * golden_earthshine.c: tests/c/ref_earthshine.h (bake/gen_test_vectors.py:
+ * golden_earthshine.c: tests/c/ref_earthshine.h (tests/ref/generate.py earthshine:
  * quadrature to < 1e-12, spot-checked against mpmath) on the target, with the
- * acceptance rule of tests/c/test_earthshine.c: the issue-3 goal (relative
+ * acceptance rule of tests/c/test_earthshine.c: the default table's goal (relative
  * 1e-3 where phi >= 1% of phi0, absolute 1e-5 phi0 elsewhere; psi within
  * 1e-3 rad where phi >= 1% phi0) plus 5e-5 relative in single precision for
  * the rounding of theta and h to float, at the reference points (es_refs) and

@@ -88,7 +88,7 @@ def section(outdir) -> str:
     out.append("| quantity | this model | published | source |\n|---|---|---|---|")
     out.append(f"| total bending of a ray grazing the surface (US 1976) | {np.degrees(a0[0]):.3f} deg "
                f"| ~1.18 deg = 2 x 35.4' horizontal refraction (10 C, 1013 hPa) | Allen, *Astrophysical "
-               "Quantities* (1976) p. 125; PHYSICS.md |")
+               "Quantities* (1976) p. 125; docs/physics.md |")
     out.append(f"| same, exponential N0 = {ap.N_S_550:.4g}, H = 8 km | {np.degrees(ae[0]):.3f} deg | "
                f"thin-atmosphere form N0 sqrt(2 pi R/H) = {np.degrees(ap.N_S_550 * np.sqrt(2 * np.pi * R / 8)):.3f} deg "
                "(first order in N0; the difference is the O(N0 R/H) term) | refraction integral, Born & Wolf 3.2 |")
@@ -120,11 +120,11 @@ def section(outdir) -> str:
     out.append(f"| totally eclipsed Moon vs full Moon, central / Moon centre 2000 km off the axis "
                f"(clouds opaque below 10 km) | {fmt(dm['clear air, clouds below 10 km'][0])} / "
                f"{fmt(dm['clear air, clouds below 10 km'][1])} mag fainter | 9-12 mag fainter (clear air; "
-               "darker after volcanic eruptions) | PHYSICS.md; Link 1969; Mallama 2022, arXiv:2203.05513 |")
+               "darker after volcanic eruptions) | docs/physics.md; Link 1969; Mallama 2022, arXiv:2203.05513 |")
     out.append(f"| same, clear air without the cloud layer (extinction down to the ground) | "
                f"{dm['no clouds'][0]:.1f} / {dm['no clouds'][1]:.1f} mag | 9-12 mag | as above |")
     out.append(f"| same, refraction only (no extinction) | {dm['refraction only (seed mode)'][0]:.1f} / "
-               f"{dm['refraction only (seed mode)'][1]:.1f} mag | would flood the umbra | PHYSICS.md |")
+               f"{dm['refraction only (seed mode)'][1]:.1f} mag | would flood the umbra | docs/physics.md |")
 
     # shadow enlargement at the Moon: steepest log-gradient of F vs geometric umbra edge
     a_m = z_moon * ar.SUN_RADIUS_KM / ar.AU_KM

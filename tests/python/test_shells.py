@@ -144,7 +144,7 @@ def test_bouguer_invariant_and_symmetry_exponential():
     entered = esc & (b < atm.outer_radius)
     assert np.all(res.n_cross[entered] % 2 == 0)
     assert np.all(res.n_cross[esc & (b > atm.outer_radius)] == 0)
-    # grazing bending: between 1 and 1.4 degrees (PHYSICS.md: ~1.1-1.2 deg)
+    # grazing bending: between 1 and 1.4 degrees (docs/physics.md: ~1.1-1.2 deg)
     graze = esc & (b < atm.indices[0] * R + 0.5)
     dev = np.degrees(_angle(res.dir[graze], np.array([0.0, 0.0, -1.0])))
     assert dev.size and np.all((dev > 1.0) & (dev < 1.4)), dev
