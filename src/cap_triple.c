@@ -13,8 +13,14 @@ typedef struct {
     int kind;     /* ARC_* */
     oi_real mid;  /* angle about c_i of the arc's middle (towards c_j) */
     oi_real half; /* half-width of the arc inside cap j (ARC_PART) */
-    oi_real turn; /* angle at the crossing point between the two circles' radii */
 } cap_arc;
+
+/* The circle of a cap in its own frame: centre c, radius r, and two unit
+ * vectors e1, e2 = c x e1 normal to c (angles about c count from e1
+ * towards e2: counterclockwise seen from outside the sphere). */
+typedef struct {
+    oi_real c[3], e1[3], e2[3], r, cos_r, sin_r;
+} cap_circle;
 
 /* x reduced to [-pi, pi] for |x| <= 3 pi. */
 static oi_real wrap_pi(oi_real x)
@@ -29,15 +35,14 @@ static oi_real wrap_pi(oi_real x)
 
 /* The part of circle i (radius ri) inside cap j (radius rj), centres d
  * apart, c_j seen at angle phi about c_i. The half-width is the angle at c_i
- * of the triangle (c_i, c_j, crossing point), the turn its angle at the
- * crossing point (half-angle formulas, no cancellation). */
+ * of the triangle (c_i, c_j, crossing point) (half-angle formula, no
+ * cancellation). */
 static cap_arc arc_in_cap(oi_real ri, oi_real rj, oi_real d, oi_real phi)
 {
     cap_arc a;
     oi_real hs[4];
     a.mid = phi;
     a.half = (oi_real)0;
-    a.turn = (oi_real)0;
     if (rj - d >= ri) {
         a.kind = ARC_ALL; /* cap i inside cap j */
     } else if (ri - d >= rj || d - ri >= rj) {
@@ -46,36 +51,72 @@ static cap_arc arc_in_cap(oi_real ri, oi_real rj, oi_real d, oi_real phi)
         a.kind = ARC_PART;
         oi__half_sines(ri, rj, d, hs);
         a.half = oi__half_angle(hs, 2, 0);
-        a.turn = oi__half_angle(hs, 3, 0);
     }
     return a;
 }
 
-/* Measure of the intersection of two arcs of one circle. */
-static oi_real arcs_common(const cap_arc *a, const cap_arc *b)
+/* The point of the circle at angle phi. */
+static void circle_point(const cap_circle *k, oi_real phi, oi_real p[3])
 {
-    oi_real delta, lo, one, two;
-    if (a->kind == ARC_NONE || b->kind == ARC_NONE) return (oi_real)0;
-    if (a->kind == ARC_ALL && b->kind == ARC_ALL) return (oi_real)2 * OI_PI_R;
-    if (a->kind == ARC_ALL) return (oi_real)2 * b->half;
-    if (b->kind == ARC_ALL) return (oi_real)2 * a->half;
-    delta = OI_FABS(wrap_pi(a->mid - b->mid));
-    lo = (oi_real)2 * (a->half < b->half ? a->half : b->half);
-    /* the overlap on the near side of the circle, and the one around the
-     * far side (two pieces when the arcs together exceed the circle) */
-    one = oi__clamp(a->half + b->half - delta, (oi_real)0, lo);
-    two = oi__clamp(a->half + b->half - ((oi_real)2 * OI_PI_R - delta), (oi_real)0, lo);
-    return one + two < lo ? one + two : lo;
+    oi_real s, c;
+    int i;
+    OI_SINCOS(phi, &s, &c);
+    for (i = 0; i < 3; ++i) p[i] = k->cos_r * k->c[i] + k->sin_r * (c * k->e1[i] + s * k->e2[i]);
 }
 
-/* Whether the point at angle phi on circle i lies in the cap of arc a. */
-static int on_arc(const cap_arc *a, oi_real phi)
+/* Signed spherical excess of the triangle (o, a, b) of unit vectors,
+ * positive counterclockwise: tan(E/2) = o.(a x b) / (1 + o.a + a.b + b.o)
+ * (Eriksson 1990), the triple product formed from the differences a - o,
+ * b - o (small, and exact for nearby points) to keep its digits. */
+static oi_real signed_excess(const oi_real o[3], const oi_real a[3], const oi_real b[3])
 {
-    if (a->kind != ARC_PART) return a->kind == ARC_ALL;
-    return OI_FABS(wrap_pi(phi - a->mid)) <= a->half;
+    oi_real da[3], db[3], x[3], num, den;
+    oi__sub(a, o, da);
+    oi__sub(b, o, db);
+    oi__cross(da, db, x);
+    num = oi__dot(o, x);
+    den = (oi_real)1 + oi__dot(o, a) + oi__dot(a, b) + oi__dot(b, o);
+    return (oi_real)2 * OI_ATAN2(num, den);
 }
 
-/* A unit vector normal to the unit vector c (the frame's first axis). */
+/* Area added by the arc [lo, hi] (hi > lo) of circle k, traversed
+ * counterclockwise: its segment beyond the chord plus the signed triangle
+ * from the reference point o to the chord. */
+static oi_real arc_area(const cap_circle *k, oi_real lo, oi_real hi, const oi_real o[3])
+{
+    oi_real a[3], b[3];
+    circle_point(k, lo, a);
+    circle_point(k, hi, b);
+    return oi__cap_segment(k->r, OI_R(0.5) * (hi - lo)) + signed_excess(o, a, b);
+}
+
+/* The area added by the arcs of circle k inside both caps of arcs p, q
+ * (neither ARC_NONE, not both ARC_ALL); *n counts the arcs. */
+static oi_real circle_area(const cap_circle *k, const cap_arc *p, const cap_arc *q,
+                           const oi_real o[3], int *n)
+{
+    oi_real sum = (oi_real)0, m2, lo, hi;
+    int side;
+    if (p->kind == ARC_ALL || q->kind == ARC_ALL) {
+        const cap_arc *a = p->kind == ARC_ALL ? q : p;
+        ++*n;
+        return arc_area(k, a->mid - a->half, a->mid + a->half, o);
+    }
+    /* two arcs: their common parts on the near side and around the far side */
+    m2 = p->mid + wrap_pi(q->mid - p->mid);
+    for (side = -1; side <= 1; ++side) {
+        oi_real m = m2 + (oi_real)side * (oi_real)2 * OI_PI_R;
+        lo = p->mid - p->half > m - q->half ? p->mid - p->half : m - q->half;
+        hi = p->mid + p->half < m + q->half ? p->mid + p->half : m + q->half;
+        if (hi > lo) {
+            ++*n;
+            sum += arc_area(k, lo, hi, o);
+        }
+    }
+    return sum;
+}
+
+/* A unit vector normal to the unit vector c. */
 static void normal_to(const oi_real c[3], oi_real e[3])
 {
     oi_real axis[3] = {0, 0, 0};
@@ -87,56 +128,51 @@ static void normal_to(const oi_real c[3], oi_real e[3])
 
 /*
  * Area (sr) of the intersection of the three caps of unit centres c[i] and
- * radii r[i] (radians, (0, pi)). Gauss-Bonnet on the intersection: its
- * boundary is made of arcs of the three circles, of geodesic curvature
- * cot r (an arc of angle L about its centre contributes L cos r), meeting
- * at corners where two circles cross inside the third, each turning by the
- * angle between the circles' radii there:
- *   area = 2 pi - sum_i L_i cos r_i - sum_corners turn.
- * With no corner the intersection is empty or the smallest cap that lies in
- * both others. Absolute error a few epsilon times 2 pi (the terms cancel
- * for small caps): 1e-15 sr in double, against 6.7e-5 sr for the Sun's cap
- * seen from the Earth.
+ * radii r[i] (radians, (0, pi/2]). The intersection is convex; its boundary
+ * is made of arcs of the three circles, each the part of its circle inside
+ * the two other caps (intervals of angle about its centre, from the
+ * half-angle formulas). Its area is that of the geodesic polygon of the
+ * arcs' end points plus the cap segment beyond each arc's chord
+ * (oi__cap_segment): the polygon as the sum of the signed triangles from the
+ * first cap's centre to each chord, every term small where the caps are
+ * small (no 2 pi - sum cancellation as in Gauss-Bonnet, which would lose
+ * all the digits of single precision on the Sun's cap). With no arc the
+ * intersection is empty or the smallest cap lying in both others.
  */
 oi_real oi__cap_triple(const oi_real c[3][3], const oi_real r[3])
 {
     cap_arc arc[3][3]; /* arc[i][j]: circle i in cap j */
-    oi_real e1[3], e2[3], area, sum_arcs = (oi_real)0, sum_turns = (oi_real)0;
-    oi_real smallest = (oi_real)-1, cap_min;
-    int i, j, k, s, corners = 0;
+    cap_circle k[3];
+    oi_real area = (oi_real)0, smallest = (oi_real)-1, cap_min;
+    int i, j, n = 0;
     for (i = 0; i < 3; ++i) {
-        normal_to(c[i], e1);
-        oi__cross(c[i], e1, e2);
+        memcpy(k[i].c, c[i], sizeof k[i].c);
+        normal_to(c[i], k[i].e1);
+        oi__cross(c[i], k[i].e1, k[i].e2);
+        k[i].r = r[i];
+        OI_SINCOS(r[i], &k[i].sin_r, &k[i].cos_r);
+    }
+    for (i = 0; i < 3; ++i) {
         for (j = 0; j < 3; ++j) {
             oi_real d, phi;
             if (j == i) continue;
             d = oi__angle_unit(c[i], c[j]);
             if (d >= r[i] + r[j]) return (oi_real)0; /* two caps apart */
-            phi = OI_ATAN2(oi__dot(c[j], e2), oi__dot(c[j], e1));
+            phi = OI_ATAN2(oi__dot(c[j], k[i].e2), oi__dot(c[j], k[i].e1));
             arc[i][j] = arc_in_cap(r[i], r[j], d, phi);
         }
     }
     for (i = 0; i < 3; ++i) {
-        j = (i + 1) % 3;
-        k = (i + 2) % 3;
-        sum_arcs += arcs_common(&arc[i][j], &arc[i][k]) * OI_COS(r[i]);
-        if (arc[i][j].kind == ARC_ALL && arc[i][k].kind == ARC_ALL &&
-            (smallest < (oi_real)0 || r[i] < smallest))
-            smallest = r[i];
-        /* corners of circles i and j (each pair once), inside cap k */
-        if (arc[i][j].kind != ARC_PART) continue;
-        for (s = -1; s <= 1; s += 2) {
-            oi_real phi = arc[i][j].mid + (oi_real)s * arc[i][j].half;
-            if (on_arc(&arc[i][k], phi)) {
-                sum_turns += arc[i][j].turn;
-                ++corners;
-            }
+        const cap_arc *p = &arc[i][(i + 1) % 3], *q = &arc[i][(i + 2) % 3];
+        if (p->kind == ARC_NONE || q->kind == ARC_NONE) continue;
+        if (p->kind == ARC_ALL && q->kind == ARC_ALL) {
+            if (smallest < (oi_real)0 || r[i] < smallest) smallest = r[i];
+            continue;
         }
+        area += circle_area(&k[i], p, q, c[0], &n);
     }
-    if (corners == 0)
-        return smallest < (oi_real)0 ? (oi_real)0
-                                     : (oi_real)4 * OI_PI_R * oi__sin_half_sq(smallest);
-    area = (oi_real)2 * OI_PI_R - sum_arcs - sum_turns;
+    if (smallest >= (oi_real)0) return (oi_real)4 * OI_PI_R * oi__sin_half_sq(smallest);
+    if (n == 0) return (oi_real)0;
     cap_min = r[0] < r[1] ? r[0] : r[1];
     cap_min = cap_min < r[2] ? cap_min : r[2];
     return oi__clamp(area, (oi_real)0, (oi_real)4 * OI_PI_R * oi__sin_half_sq(cap_min));
