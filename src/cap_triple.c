@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* cap_triple.c: oi__cap_triple, the area of the intersection of three
  * spherical caps (internal, declared in src/oi_internal.h; used where the
- * Earth and the Moon both cover part of the Sun). docs/shadow.md section 6. */
+ * Earth and the Moon both cover part of the Sun). docs/shadow.md section 9. */
 #include "oi_internal.h"
 
 #ifndef OI_NO_MOON

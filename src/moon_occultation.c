@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* moon_occultation.c: the Moon as an occulter of the Sun seen from the target
  * (with the Earth at once), and the Earth as an occulter of the Moon's disc
- * (internal, declared in src/oi_internal.h). docs/shadow.md section 6. */
+ * (internal, declared in src/oi_internal.h). docs/shadow.md section 9. */
 #include "oi_internal.h"
 
 #ifndef OI_NO_MOON

@@ -371,6 +371,7 @@ static int run_row(batch *b, const csv_reader *r, plan_row *row)
     } else if (row->illum.shadow.region != OI_SHADOW_LIT) {
         row->flags |= OI_FLAG_PENUMBRA;
     }
+    if (row->illum.sun_moon_hidden > (oi_real)0) row->flags |= OI_FLAG_MOON_SHADOW;
     if (sc.has_observer) {
         int st2 = oi_expose_scene(cam, &sc, &row->illum, &model, NULL, &row->expo);
         if (st2 < 0) {
