@@ -38,16 +38,14 @@ static oi_real chosen_disc(const oi_model *m, oi_real frac, oi_real frac_ld)
  * from the area of the intersection of the three caps (inclusion-exclusion,
  * exact on the sphere for the uniform disc):
  *   visible = fraction_earth - (1 - fraction_moon) + area(S, E, M) / area(S).
- * The limb-darkened disc: the Moon hides its own limb-darkened flux times
- * the part of its overlap with the Sun that the Earth does not already hide
- * (the flux-weighted triple region taken at the Moon's mean brightness; an
- * approximation, exact for the uniform disc).
+ * The limb-darkened disc: a ring integral over the Sun's disc of what both
+ * discs leave visible (oi__fraction_ld_two, src/limb_darkened_union.c).
  */
 static void both_occulters(const oi_real u_sun[3], const oi_real u_moon[3],
-                           const oi_real target_km[3], oi_real rm, oi_real fm, oi_real fm_ld,
-                           oi_shadow *sh)
+                           const oi_real target_km[3], oi_real rm, oi_real sep_moon, oi_real fm,
+                           oi_real fm_ld, oi_shadow *sh)
 {
-    oi_real c[3][3], r[3], triple, a_sun, o_moon, w, lim;
+    oi_real c[3][3], r[3], triple, a_sun, lim;
     int i;
     const oi_real dp = oi__norm_bounded(target_km);
     for (i = 0; i < 3; ++i) {
@@ -60,15 +58,21 @@ static void both_occulters(const oi_real u_sun[3], const oi_real u_moon[3],
     r[2] = rm;
     triple = oi__cap_triple((const oi_real(*)[3])c, r);
     a_sun = (oi_real)4 * OI_PI_R * oi__sin_half_sq(r[0]);
-    o_moon = ((oi_real)1 - fm) * a_sun;
     lim = sh->fraction < fm ? sh->fraction : fm;
     sh->fraction =
         oi__clamp(sh->fraction - ((oi_real)1 - fm) + triple / a_sun, (oi_real)0, lim);
-    w = o_moon > (oi_real)0 ? oi__clamp((o_moon - triple) / o_moon, (oi_real)0, (oi_real)1)
-                            : (oi_real)0;
-    lim = sh->fraction_ld < fm_ld ? sh->fraction_ld : fm_ld;
-    sh->fraction_ld =
-        oi__clamp(sh->fraction_ld - ((oi_real)1 - fm_ld) * w, (oi_real)0, lim);
+#ifdef OI_NO_LIMB_DARKENING
+    (void)fm_ld;
+    (void)sep_moon;
+    sh->fraction_ld = sh->fraction;
+#else
+    sh->fraction_ld = r[0] <= OI_LD_RS_MAX && r[0] > OI_LD_RS_MIN
+                          ? oi__fraction_ld_two(r[0], r[1], sh->separation_rad, rm, sep_moon,
+                                                oi__angle_unit(c[1], c[2]))
+                          : sh->fraction;
+    lim = fm_ld < (oi_real)1 ? fm_ld : (oi_real)1;
+    if (sh->fraction_ld > lim) sh->fraction_ld = lim;
+#endif
 }
 
 /*
@@ -109,7 +113,7 @@ int oi__moon_shadow(const oi_real sun_km[3], const oi_real moon_km[3],
         sh->fraction = fm;
         sh->fraction_ld = fm_ld;
     } else if (sh->region != OI_SHADOW_UMBRA) {
-        both_occulters(u_sun, u_moon, point_km, rm, fm, fm_ld, sh);
+        both_occulters(u_sun, u_moon, point_km, rm, sep, fm, fm_ld, sh);
     }
     new_disc = chosen_disc(m, sh->fraction, sh->fraction_ld);
     if (sh->fraction_atm == old)

@@ -295,6 +295,14 @@ oi_real oi__moon_disc_visible(const oi_real point_km[3], const oi_real u_moon[3]
  * centre), or annular with tri = NULL (src/limb_darkening.c). */
 oi_real oi__fraction_limb_darkened(oi_real rs, oi_real re, oi_real sep, oi_real pa_s,
                                    const oi_real *tri);
+
+#ifndef OI_NO_MOON
+/* Visible fraction of the limb-darkened solar disc (radius rs) behind two
+ * discs at once (radii re, rm, centres de, dm from the Sun's, dem apart)
+ * (src/limb_darkened_union.c). */
+oi_real oi__fraction_ld_two(oi_real rs, oi_real re, oi_real de, oi_real rm, oi_real dm,
+                            oi_real dem);
+#endif
 #endif
 
 static inline void oi__zero3(oi_real a[3])

@@ -92,9 +92,22 @@ def crossings(c1, r1, c2, r2):
     return [[base[i] + s * g * n[i] for i in range(3)] for s in (1, -1)]
 
 
-def visible_fraction(cb, rb, fronts):
+# Neckel & Labs (1994) limb-darkening polynomial at 559.95 nm, A0..A5 (as tests/ref/shadow.py).
+LD_A = ["0.26892", "1.34319", "-1.58427", "1.91271", "-1.31350", "0.37295"]
+
+
+def limb_intensity(rho, rb):
+    """I(mu)/I(1) at angular distance rho from the centre of a disc of radius
+    rb, mu = sqrt(1 - sin^2 rho / sin^2 rb) (exact on the sphere)."""
+    x = 1 - mp.sin(rho) ** 2 / mp.sin(rb) ** 2
+    mu = mp.sqrt(x) if x > 0 else mp.mpf(0)
+    return sum(mp.mpf(a) * mu ** k for k, a in enumerate(LD_A))
+
+
+def visible_fraction(cb, rb, fronts, limb=False):
     """Visible fraction of the cap (cb, rb) behind the caps in `fronts`
-    [(c, r), ...] (one or two): ring quadrature of the uncovered angle."""
+    [(c, r), ...] (one or two): ring quadrature of the uncovered angle,
+    weighted by the limb-darkened intensity when limb is set."""
     # a fixed frame about cb: the azimuth of each front centre
     ref = [1, 0, 0] if abs(cb[0]) < 0.9 else [0, 1, 0]
     e1 = vunit(vcross(cb, ref))
@@ -142,6 +155,9 @@ def visible_fraction(cb, rb, fronts):
             if 0 < v < rb:
                 pts.add(v)
     pts = sorted(pts)
+    if limb:
+        w = lambda rho: limb_intensity(rho, rb) * mp.sin(rho)
+        return mp.quad(lambda rho: uncovered(rho) * w(rho), pts) / (2 * PI * mp.quad(w, [0, rb]))
     area = mp.quad(lambda rho: uncovered(rho) * mp.sin(rho), pts)
     return area / (2 * PI * (1 - mp.cos(rb)))
 
@@ -159,7 +175,8 @@ def geometry(sun, moon, target):
 
 
 def sun_reference(sun, moon, target):
-    """(fraction with the Earth and the Moon, the Moon's hidden fraction)."""
+    """(fraction with the Earth and the Moon, the Moon's hidden fraction, the
+    limb-darkened fraction, whether both discs are on the Sun)."""
     cs, rs, cm, rm, ce, re, _, _ = geometry(sun, moon, target)
     fronts = []
     if angle(cs, ce) < rs + re:
@@ -169,7 +186,8 @@ def sun_reference(sun, moon, target):
         fronts.append((cm, rm))
     f = visible_fraction(cs, rs, fronts) if fronts else mp.mpf(1)
     hidden = 1 - visible_fraction(cs, rs, [(cm, rm)]) if moon_on else mp.mpf(0)
-    return f, hidden
+    f_ld = visible_fraction(cs, rs, fronts, limb=True) if fronts else mp.mpf(1)
+    return f, hidden, f_ld, len(fronts) == 2
 
 
 def moon_reference(sun, moon, target):
@@ -271,8 +289,8 @@ def rows(prec):
     out_sun, out_moon = [], []
     for sun, moon, target, label in sun_cases():
         s, m, t = ([rnd(x, prec) for x in v] for v in (sun, moon, target))
-        f, hidden = sun_reference(s, m, t)
-        out_sun.append((s, m, t, f, hidden, label))
+        f, hidden, f_ld, both = sun_reference(s, m, t)
+        out_sun.append((s, m, t, f, hidden, f_ld, both, label))
     for sun, moon, target, label in moon_cases():
         s, m, t = ([rnd(x, prec) for x in v] for v in (sun, moon, target))
         out_moon.append((s, m, t, moon_reference(s, m, t), label))
@@ -282,6 +300,8 @@ def rows(prec):
 def emit(root):
     body = [
         "typedef struct { double sun[3], moon[3], target[3]; double fraction, moon_hidden;\n"
+        "    double fraction_ld;\n"
+        "    int both; /* both discs on the Sun: the library's fraction_ld approximates */\n"
         "    const char *label; } ref_moon_sun_row;\n",
         "typedef struct { double sun[3], moon[3], target[3]; double moon_visible;\n"
         "    const char *label; } ref_moon_hidden_row;\n",
@@ -290,10 +310,10 @@ def emit(root):
         rs, rm = rows(prec)
         body.append(cond)
         body.append("static const ref_moon_sun_row ref_moon_sun[%d] = {\n" % len(rs))
-        for s, m, t, f, h, label in rs:
-            body.append("    {{%s}, {%s}, {%s}, %s, %s, \"%s\"},\n" % (
+        for s, m, t, f, h, f_ld, both, label in rs:
+            body.append("    {{%s}, {%s}, {%s}, %s, %s, %s, %d, \"%s\"},\n" % (
                 ", ".join(c_hex(x) for x in s), ", ".join(c_hex(x) for x in m),
-                ", ".join(c_hex(x) for x in t), cdec(f), cdec(h), label))
+                ", ".join(c_hex(x) for x in t), cdec(f), cdec(h), cdec(f_ld), int(both), label))
         body.append("};\n")
         body.append("static const ref_moon_hidden_row ref_moon_hidden[%d] = {\n" % len(rm))
         for s, m, t, v, label in rm:
