@@ -184,7 +184,8 @@ static OI_NOINLINE int moon_shadow_term(const oi_scene *s, const oi_model *m, oi
 {
     int st;
     oi_real before = out->shadow.fraction_atm;
-    if (!(oi__norm_bounded(s->moon_km) > m->earth_radius_km)) return OI_ERR_BELOW_SURFACE;
+    if (!(oi__dot(s->moon_km, s->moon_km) > m->earth_radius_km * m->earth_radius_km))
+        return OI_ERR_BELOW_SURFACE;
     st = oi__moon_shadow(s->sun_km, s->moon_km, s->target_km, m, &out->shadow,
                          &out->sun_moon_hidden);
     if (st < 0) return st;

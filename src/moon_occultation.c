@@ -13,18 +13,22 @@ static oi_real apparent_radius(oi_real rad, oi_real dist)
     return OI_ATAN2(rad, OI_SQRT(dist - rad) * OI_SQRT(dist + rad));
 }
 
-/* 1 when two discs seen from one point are certainly apart: their unit
- * directions ua, ub make an angle beyond the sum of their apparent radii (of
- * sines sin_a, sin_b, each below 0.9) by 1e-6 in cosine, far beyond
- * rounding. Compared as cosines: one dot product, no inverse trigonometry. */
-static int discs_certainly_apart(const oi_real ua[3], const oi_real ub[3], oi_real sin_a,
-                                 oi_real sin_b)
+/* 1 when two spheres seen from one point are certainly apart on its sky:
+ * a, b the vectors from the point to their centres, a2, b2 their squared
+ * lengths, ra, rb their radii (a2 > ra^2, b2 > rb^2). The angle between a
+ * and b exceeds the sum of the apparent radii when its cosine is below
+ * cos(r_a + r_b) = (sqrt(a2 - ra^2) sqrt(b2 - rb^2) - ra rb) / (|a| |b|)
+ * (each radius below pi/2, so their sum below pi, where cos decreases); with
+ * a margin of 1e-6 relative, far beyond rounding. One dot product and two
+ * square roots (no unit vector, no division, no inverse trigonometry; the
+ * square roots of squared lengths bounded by OI_POSITION_MAX_KM cannot
+ * overflow). */
+static int discs_certainly_apart(const oi_real a[3], const oi_real b[3], oi_real a2,
+                                 oi_real b2, oi_real ra, oi_real rb)
 {
-    oi_real cos_a, cos_b;
-    if (!(sin_a < OI_R(0.9)) || !(sin_b < OI_R(0.9))) return 0;
-    cos_a = OI_SQRT(((oi_real)1 - sin_a) * ((oi_real)1 + sin_a));
-    cos_b = OI_SQRT(((oi_real)1 - sin_b) * ((oi_real)1 + sin_b));
-    return oi__dot(ua, ub) < cos_a * cos_b - sin_a * sin_b - OI_R(1e-6);
+    const oi_real lhs = oi__dot(a, b) + ra * rb;
+    const oi_real rhs = OI_SQRT(a2 - ra * ra) * OI_SQRT(b2 - rb * rb);
+    return lhs < rhs * (oi_real)(1 - 1e-6);
 }
 
 /* The model's choice of disc. */
@@ -85,8 +89,8 @@ static void both_occulters(const oi_real u_sun[3], const oi_real u_moon[3],
  * equal to the model's disc where the atmosphere changed nothing.
  * region stays the Earth's. Returns OI_OK, or OI_ERR_GEOMETRY for a point
  * inside or on the Moon.
- * Cost: when the Moon's and the Sun's discs are certainly apart, two unit
- * vectors and one comparison of cosines (discs_certainly_apart).
+ * Cost: when the discs are certainly apart, three dot products and two
+ * square roots (discs_certainly_apart).
  */
 int oi__moon_shadow(const oi_real sun_km[3], const oi_real moon_km[3],
                     const oi_real point_km[3], const oi_model *m, oi_shadow *sh,
@@ -96,13 +100,15 @@ int oi__moon_shadow(const oi_real sun_km[3], const oi_real moon_km[3],
     int region;
     *hidden = (oi_real)0;
     oi__sub(moon_km, point_km, u_moon);
-    dm = oi__unit_bounded(u_moon, u_moon);
-    if (!(dm > m->moon_radius_km)) return OI_ERR_GEOMETRY;
     oi__sub(sun_km, point_km, u_sun);
-    ds = oi__unit_bounded(u_sun, u_sun);
+    dm = oi__dot(u_moon, u_moon); /* squared distances first */
+    ds = oi__dot(u_sun, u_sun);
+    if (!(dm > m->moon_radius_km * m->moon_radius_km)) return OI_ERR_GEOMETRY;
     if (dm >= ds) return OI_OK; /* the Moon beyond the Sun */
-    if (discs_certainly_apart(u_sun, u_moon, m->sun_radius_km / ds, m->moon_radius_km / dm))
+    if (discs_certainly_apart(u_sun, u_moon, ds, dm, m->sun_radius_km, m->moon_radius_km))
         return OI_OK;
+    dm = oi__unit_bounded(u_moon, u_moon);
+    ds = oi__unit_bounded(u_sun, u_sun);
     rm = apparent_radius(m->moon_radius_km, dm);
     sep = oi__angle_unit(u_sun, u_moon);
     region = oi__disc_fractions(sh->sun_radius_rad, rm, sep, &fm, &fm_ld);
