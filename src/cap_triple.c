@@ -19,7 +19,8 @@ typedef struct {
  * vectors e1, e2 = c x e1 normal to c (angles about c count from e1
  * towards e2: counterclockwise seen from outside the sphere). */
 typedef struct {
-    oi_real c[3], e1[3], e2[3], r, cos_r, sin_r;
+    const oi_real *c;
+    oi_real e1[3], e2[3], r, cos_r, sin_r;
 } cap_circle;
 
 /* x reduced to [-pi, pi] for |x| <= 3 pi. */
@@ -141,35 +142,33 @@ static void normal_to(const oi_real c[3], oi_real e[3])
  */
 oi_real oi__cap_triple(const oi_real c[3][3], const oi_real r[3])
 {
-    cap_arc arc[3][3]; /* arc[i][j]: circle i in cap j */
-    cap_circle k[3];
-    oi_real area = (oi_real)0, smallest = (oi_real)-1, cap_min;
-    int i, j, n = 0;
+    oi_real d[3], area = (oi_real)0, smallest = (oi_real)-1, cap_min;
+    int i, n = 0;
+    /* d[i]: between the centres other than i */
     for (i = 0; i < 3; ++i) {
-        memcpy(k[i].c, c[i], sizeof k[i].c);
-        normal_to(c[i], k[i].e1);
-        oi__cross(c[i], k[i].e1, k[i].e2);
-        k[i].r = r[i];
-        OI_SINCOS(r[i], &k[i].sin_r, &k[i].cos_r);
+        d[i] = oi__angle_unit(c[(i + 1) % 3], c[(i + 2) % 3]);
+        if (d[i] >= r[(i + 1) % 3] + r[(i + 2) % 3]) return (oi_real)0; /* two caps apart */
     }
+    /* one circle at a time (its frame and its two arcs live only here: the
+     * stack stays small) */
     for (i = 0; i < 3; ++i) {
-        for (j = 0; j < 3; ++j) {
-            oi_real d, phi;
-            if (j == i) continue;
-            d = oi__angle_unit(c[i], c[j]);
-            if (d >= r[i] + r[j]) return (oi_real)0; /* two caps apart */
-            phi = OI_ATAN2(oi__dot(c[j], k[i].e2), oi__dot(c[j], k[i].e1));
-            arc[i][j] = arc_in_cap(r[i], r[j], d, phi);
-        }
-    }
-    for (i = 0; i < 3; ++i) {
-        const cap_arc *p = &arc[i][(i + 1) % 3], *q = &arc[i][(i + 2) % 3];
-        if (p->kind == ARC_NONE || q->kind == ARC_NONE) continue;
-        if (p->kind == ARC_ALL && q->kind == ARC_ALL) {
+        const int j = (i + 1) % 3, k = (i + 2) % 3;
+        cap_circle ci;
+        cap_arc p, q;
+        ci.c = c[i];
+        normal_to(c[i], ci.e1);
+        oi__cross(c[i], ci.e1, ci.e2);
+        ci.r = r[i];
+        OI_SINCOS(r[i], &ci.sin_r, &ci.cos_r);
+        /* the centres j, k are d[k], d[j] from centre i */
+        p = arc_in_cap(r[i], r[j], d[k], OI_ATAN2(oi__dot(c[j], ci.e2), oi__dot(c[j], ci.e1)));
+        q = arc_in_cap(r[i], r[k], d[j], OI_ATAN2(oi__dot(c[k], ci.e2), oi__dot(c[k], ci.e1)));
+        if (p.kind == ARC_NONE || q.kind == ARC_NONE) continue;
+        if (p.kind == ARC_ALL && q.kind == ARC_ALL) {
             if (smallest < (oi_real)0 || r[i] < smallest) smallest = r[i];
             continue;
         }
-        area += circle_area(&k[i], p, q, c[0], &n);
+        area += circle_area(&ci, &p, &q, c[0], &n);
     }
     if (smallest >= (oi_real)0) return (oi_real)4 * OI_PI_R * oi__sin_half_sq(smallest);
     if (n == 0) return (oi_real)0;
