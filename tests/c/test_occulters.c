@@ -68,6 +68,13 @@
 #define MONO_TOL_LUNAR (4 * DBL_EPSILON)
 #endif
 
+/* A computed result: OI_OK, or a warning (OI_WARN_TABLE_RANGE in a build
+ * without the earthshine table). */
+static void check_ok(int st, const char *what)
+{
+    if (st < 0) check_int(OI_OK, st, what);
+}
+
 static void scene_of(oi_scene *s, const double sun[3], const double moon[3],
                      const double target[3], unsigned terms)
 {
@@ -98,11 +105,14 @@ static void test_moon_sun_vs_mpmath(void **state)
         for (terms = OI_TERM_SUN; terms <= OI_TERM_SUN + OI_TERM_EARTH; terms += OI_TERM_EARTH) {
             scene_of(&s, r->sun, r->moon, r->target, terms);
             st = oi_illuminate(&s, &no_atm, &o);
-            check_int(OI_OK, st, r->label);
+            check_ok(st, r->label);
             check_close(r->fraction, (double)o.shadow.fraction, FRACTION_TOL, 0, r->label);
             check_close(r->moon_hidden, (double)o.sun_moon_hidden, FRACTION_TOL, 0, r->label);
             assert_true(o.shadow.fraction_atm == o.shadow.fraction);
             assert_true(o.shadow.fraction_ld >= (oi_real)0 && o.shadow.fraction_ld <= (oi_real)1);
+#ifdef OI_NO_LIMB_DARKENING
+            assert_true(o.shadow.fraction_ld == o.shadow.fraction);
+#else
             if (!r->both) {
                 /* one disc on the Sun: the limb-darkened fraction is exact */
                 double e = fabs((double)o.shadow.fraction_ld - r->fraction_ld);
@@ -116,6 +126,7 @@ static void test_moon_sun_vs_mpmath(void **state)
                             r->label);
                 if (e > worst_both) worst_both = e;
             }
+#endif
             if (fabs((double)o.shadow.fraction - r->fraction) > worst)
                 worst = fabs((double)o.shadow.fraction - r->fraction);
         }
@@ -139,7 +150,7 @@ static void test_moon_hidden_vs_mpmath(void **state)
         int st;
         scene_of(&s, r->sun, r->moon, r->target, OI_TERM_ALL);
         st = oi_illuminate(&s, NULL, &o);
-        check_int(OI_OK, st, r->label);
+        check_ok(st, r->label);
         check_close(r->moon_visible, (double)o.moon_disc_visible, VISIBLE_TOL, 0, r->label);
         if (r->moon_visible == 0.0) assert_true(o.e_moon == (oi_real)0);
         if (r->moon_visible > 0.0) assert_true(o.e_moon > (oi_real)0);
@@ -147,7 +158,7 @@ static void test_moon_hidden_vs_mpmath(void **state)
         lam.moon_model = OI_MOON_LAMBERT;
         lam.moon_albedo = (oi_real)0.12;
         st = oi_illuminate(&s, &lam, &lambert);
-        check_int(OI_OK, st, r->label);
+        check_ok(st, r->label);
         {
             double ds = sqrt(pow(r->sun[0] - r->moon[0], 2) + pow(r->sun[1] - r->moon[1], 2) +
                              pow(r->sun[2] - r->moon[2], 2));
@@ -181,14 +192,14 @@ static void test_moon_behind_earth(void **state)
     set3(s.moon_km, 0, 384400, 0);
     set3(s.target_km, 0, -7000, 0);
     s.terms = OI_TERM_ALL;
-    assert_int_equal(oi_illuminate(&s, NULL, &o), OI_OK);
+    assert_true(oi_illuminate(&s, NULL, &o) >= 0);
     assert_true(o.e_moon == (oi_real)0);
     assert_true(o.moon_disc_visible == (oi_real)0);
     assert_true(o.moon_sun_fraction == (oi_real)1);
     /* the Moon in the Earth's shadow: lit by the atmosphere's light only */
     set3(s.moon_km, -384400, 0, 0);
     set3(s.target_km, 0, 42164, 0);
-    assert_int_equal(oi_illuminate(&s, NULL, &o), OI_OK);
+    assert_true(oi_illuminate(&s, NULL, &o) >= 0);
     assert_true(o.moon_disc_visible == (oi_real)1);
     assert_true(o.moon_sun_fraction < (oi_real)1e-3);
 }
@@ -205,6 +216,9 @@ static void test_pass_monotonic(void **state)
         oi_model m;
         double prev[3] = {2, 2, 2};
         memset(&m, 0, sizeof m);
+#ifdef OI_NO_LIMB_DARKENING
+        if (model_i & 1) continue; /* refused in this build */
+#endif
         m.limb_darkening = model_i & 1 ? OI_LIMB_DARKENED : OI_LIMB_UNIFORM;
         m.no_atmosphere = model_i >> 1;
         for (k = -4000; k <= 0; k += 5) {
@@ -215,7 +229,7 @@ static void test_pass_monotonic(void **state)
             set3(s.target_km, 0, 42164, 0);
             set3(s.moon_km, 384400, 42164 * (1 - 384400 / 149597870.7) + k, 0);
             s.has_moon = 1;
-            assert_int_equal(oi_illuminate(&s, &m, &o), OI_OK);
+            assert_true(oi_illuminate(&s, &m, &o) >= 0);
             assert_true((double)o.shadow.fraction <= prev[0] + MONO_TOL);
             assert_true((double)o.shadow.fraction_ld <= prev[1] + MONO_TOL);
             assert_true((double)o.shadow.fraction_atm <= prev[2] + MONO_TOL);
@@ -239,7 +253,7 @@ static void test_pass_monotonic(void **state)
             set3(s.target_km, -h * cos(a), 384400 + h * sin(a), 0);
             s.terms = OI_TERM_SUN;
             s.has_moon = 1;
-            assert_int_equal(oi_illuminate(&s, NULL, &o), OI_OK);
+            assert_true(oi_illuminate(&s, NULL, &o) >= 0);
             if (k > 0) assert_true((double)o.shadow.fraction >= prev - MONO_TOL_LUNAR);
             prev = (double)o.shadow.fraction;
             if (k == 0) assert_true(o.shadow.fraction == (oi_real)0 && o.e_sun == (oi_real)0);
@@ -331,7 +345,7 @@ static void test_hostile(void **state)
     set3(s.target_km, 0, 42164, 0);
     set3(s.moon_km, NAN, 0, 0);
     s.terms = OI_TERM_SUN;
-    assert_int_equal(oi_illuminate(&s, NULL, &o), OI_OK);
+    assert_true(oi_illuminate(&s, NULL, &o) >= 0);
     assert_true(o.sun_moon_hidden == (oi_real)0);
 }
 
@@ -351,13 +365,13 @@ static void test_flag(void **state)
     set3(s.observer_km, 0, 42164, 10);
     s.has_observer = 1;
     s.has_moon = 1;
-    assert_int_equal(oi_illuminate(&s, NULL, &o), OI_OK);
+    assert_true(oi_illuminate(&s, NULL, &o) >= 0);
     assert_true(o.sun_moon_hidden > (oi_real)0.5);
     assert_int_equal(oi_expose_scene(oi_camera_builtin(0), &s, &o, NULL, NULL, &x), OI_OK);
     assert_true((x.flags & OI_FLAG_MOON_SHADOW) != 0u);
     assert_true((x.flags & (OI_FLAG_ECLIPSED | OI_FLAG_PENUMBRA)) == 0u);
     set3(s.moon_km, -384400, 0, 0);
-    assert_int_equal(oi_illuminate(&s, NULL, &o), OI_OK);
+    assert_true(oi_illuminate(&s, NULL, &o) >= 0);
     assert_int_equal(oi_expose_scene(oi_camera_builtin(0), &s, &o, NULL, NULL, &x), OI_OK);
     assert_true((x.flags & OI_FLAG_MOON_SHADOW) == 0u);
 }
