@@ -377,8 +377,8 @@ typedef struct oi_illum {
  * oi_illuminate: light on the target from Sun, Earth and Moon, and what the
  * observer sees.
  * Given:   scene  positions (km), terms, albedos, target radius; moon_km is
- *                 read only with OI_TERM_MOON, observer_km only with
- *                 has_observer
+ *                 read only with OI_TERM_MOON or has_moon, observer_km only
+ *                 with has_observer
  *          model  NULL or model constants and options
  * Returned: out   see oi_illum (zeroed on error)
  * Returns: OI_OK; OI_WARN_TABLE_RANGE (earthshine outside its table's range,
@@ -401,13 +401,21 @@ typedef struct oi_illum {
  *          the Sun), the Sun seen from the Moon (the same; the Moon below the
  *          Earth's surface gives OI_ERR_BELOW_SURFACE), and:
  *          OI_ERR_GEOMETRY   the target inside the Moon
- *                            (|target - moon| <= moon_radius_km)
+ *                            (|target - moon| <= moon_radius_km; with the
+ *                            Moon's position given, OI_TERM_MOON or has_moon)
+ *          OI_ERR_BELOW_SURFACE  the Moon at or below the Earth's surface
+ *                            (its position given)
  *          OI_ERR_OBSERVER_AT_TARGET  the observer inside the target's sphere
  *                            (range <= target_radius_m)
  * Notes:   e_sun = TSI (AU / |sun - target|)^2 fraction_atm;
  *          e_earth = earth_albedo TSI (AU / |sun|)^2 phi(theta, h);
  *          e_moon from the lunar phase law (or a Lambert Moon), times the
- *          fraction of the Sun the Moon sees. The target is a Lambertian
+ *          fraction of the Sun the Moon sees and the fraction of the Moon's
+ *          disc the Earth does not hide from the target (moon_disc_visible).
+ *          With the Moon's position given (OI_TERM_MOON or has_moon, whatever
+ *          the terms) the Moon occults the Sun: shadow.fraction, fraction_ld,
+ *          fraction_atm and e_sun count it (shadow.region stays the Earth's;
+ *          sun_moon_hidden; docs/shadow.md section 9). The target is a Lambertian
  *          sphere; the flux at the observer is the sum over sources of
  *          e albedo (a / range)^2 p(phase). src/illuminate.c.
  */
