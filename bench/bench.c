@@ -14,6 +14,8 @@
  * Configurations (the scene mix of bench/scenes.h, observer set):
  *   all            oi_illuminate, Sun (shadow) + Earth + Moon
  *   sun            oi_illuminate, Sun only
+ *   sun_moon       oi_illuminate, Sun only with the Moon's position given
+ *                  (has_moon: the Moon as an occulter of the Sun)
  *   sun_earth      oi_illuminate, Sun + Earth
  *   all_expose     oi_illuminate (all terms) + oi_expose_scene (built-in camera 0)
  *   sun_fraction   oi_sun_fraction alone
@@ -48,10 +50,11 @@ static oi_real es_theta[BENCH_NSCENES], es_h[BENCH_NSCENES];
 static bench_scene_d raw[BENCH_NSCENES];
 static volatile double sink;
 
-enum { C_ALL, C_SUN, C_SUN_EARTH, C_ALL_EXPOSE, C_SUN_FRACTION, C_EARTHSHINE, C_EARTHSHINE_LAMBERT, C_N };
+enum { C_ALL, C_SUN, C_SUN_EARTH, C_ALL_EXPOSE, C_SUN_FRACTION, C_EARTHSHINE, C_EARTHSHINE_LAMBERT,
+       C_SUN_MOON, C_N };
 static const char *const config_name[C_N] = {"all",          "sun",        "sun_earth",
                                              "all_expose",   "sun_fraction", "earthshine",
-                                             "earthshine_lambert"};
+                                             "earthshine_lambert", "sun_moon"};
 
 static void setup(void)
 {
@@ -111,6 +114,13 @@ static double run_config(int cfg)
         case C_SUN:
             s->terms = OI_TERM_SUN;
             (void)oi_illuminate(s, NULL, &il);
+            acc += (double)il.flux_obs;
+            break;
+        case C_SUN_MOON:
+            s->terms = OI_TERM_SUN;
+            s->has_moon = 1;
+            (void)oi_illuminate(s, NULL, &il);
+            s->has_moon = 0;
             acc += (double)il.flux_obs;
             break;
         case C_SUN_EARTH:

@@ -325,7 +325,8 @@ oi_real oi_moon_phase_law(oi_real alpha);
 
 typedef struct oi_scene {
     oi_real sun_km[3];       /* Sun position (km) */
-    oi_real moon_km[3];      /* Moon position (km); used when OI_TERM_MOON is set */
+    oi_real moon_km[3];      /* Moon position (km); used when OI_TERM_MOON or has_moon
+                                is set */
     oi_real target_km[3];    /* target position (km) */
     oi_real observer_km[3];  /* observer position (km); used when has_observer */
     int has_observer;        /* nonzero: compute what the observer receives */
@@ -333,6 +334,8 @@ typedef struct oi_scene {
     oi_real earth_albedo;    /* [0, 1] */
     oi_real target_albedo;   /* [0, 1] */
     oi_real target_radius_m; /* > 0 */
+    int has_moon;            /* nonzero: moon_km is given, whatever the terms: the
+                                Moon then occults the Sun (OI_TERM_MOON implies it) */
 } oi_scene;
 
 /* oi_scene_defaults: fill a scene with the defaults: zero positions, no
@@ -364,14 +367,18 @@ typedef struct oi_illum {
     oi_real flux_obs;        /* their sum */
     oi_real mag_v;           /* apparent V magnitude of the target (OI_MAG_DARK if dark) */
     oi_real range_km;        /* observer to target */
+    oi_real sun_moon_hidden; /* fraction of the Sun's disc area the Moon's disc covers
+                                seen from the target (0: no Moon position, or apart) */
+    oi_real moon_disc_visible; /* fraction of the Moon's disc the Earth does not hide,
+                                  seen from the target (with OI_TERM_MOON; else 0) */
 } oi_illum;
 
 /*
  * oi_illuminate: light on the target from Sun, Earth and Moon, and what the
  * observer sees.
  * Given:   scene  positions (km), terms, albedos, target radius; moon_km is
- *                 read only with OI_TERM_MOON, observer_km only with
- *                 has_observer
+ *                 read only with OI_TERM_MOON or has_moon, observer_km only
+ *                 with has_observer
  *          model  NULL or model constants and options
  * Returned: out   see oi_illum (zeroed on error)
  * Returns: OI_OK; OI_WARN_TABLE_RANGE (earthshine outside its table's range,
@@ -394,13 +401,21 @@ typedef struct oi_illum {
  *          the Sun), the Sun seen from the Moon (the same; the Moon below the
  *          Earth's surface gives OI_ERR_BELOW_SURFACE), and:
  *          OI_ERR_GEOMETRY   the target inside the Moon
- *                            (|target - moon| <= moon_radius_km)
+ *                            (|target - moon| <= moon_radius_km; with the
+ *                            Moon's position given, OI_TERM_MOON or has_moon)
+ *          OI_ERR_BELOW_SURFACE  the Moon at or below the Earth's surface
+ *                            (its position given)
  *          OI_ERR_OBSERVER_AT_TARGET  the observer inside the target's sphere
  *                            (range <= target_radius_m)
  * Notes:   e_sun = TSI (AU / |sun - target|)^2 fraction_atm;
  *          e_earth = earth_albedo TSI (AU / |sun|)^2 phi(theta, h);
  *          e_moon from the lunar phase law (or a Lambert Moon), times the
- *          fraction of the Sun the Moon sees. The target is a Lambertian
+ *          fraction of the Sun the Moon sees and the fraction of the Moon's
+ *          disc the Earth does not hide from the target (moon_disc_visible).
+ *          With the Moon's position given (OI_TERM_MOON or has_moon, whatever
+ *          the terms) the Moon occults the Sun: shadow.fraction, fraction_ld,
+ *          fraction_atm and e_sun count it (shadow.region stays the Earth's;
+ *          sun_moon_hidden; docs/shadow.md section 9). The target is a Lambertian
  *          sphere; the flux at the observer is the sum over sources of
  *          e albedo (a / range)^2 p(phase). src/illuminate.c.
  */
@@ -464,9 +479,11 @@ const oi_camera *oi_camera_find(const char *name);
 #define OI_FLAG_PENUMBRA      (32u)  /* target in the penumbra */
 #define OI_FLAG_OCCULTED      (64u)  /* the Earth hides the target from the observer */
 #define OI_FLAG_RESOLVED      (128u) /* target wider than a pixel: peak limited by its radiance */
+#define OI_FLAG_MOON_SHADOW   (256u) /* the Moon hides part of the Sun from the target */
 
 /* oi_flag_name: name of one flag bit ("sun_exclusion", "earth_in_fov",
- * "eclipsed", "too_faint", "saturated", "penumbra", "occulted", "resolved");
+ * "eclipsed", "too_faint", "saturated", "penumbra", "occulted", "resolved",
+ * "moon_shadow");
  * NULL for 0, several bits or an unknown bit. */
 const char *oi_flag_name(unsigned flag_bit);
 
@@ -608,7 +625,8 @@ int oi_expose(const oi_camera *camera, const oi_expose_in *in,
  *      gets exactly that bound, and OI_FLAG_RESOLVED is raised.
  *   6. OI_FLAG_ECLIPSED when illum->shadow.region is OI_SHADOW_UMBRA,
  *      OI_FLAG_PENUMBRA when it is OI_SHADOW_PENUMBRA or OI_SHADOW_ANNULAR
- *      (part of the Sun hidden in both).
+ *      (part of the Sun hidden in both); OI_FLAG_MOON_SHADOW when
+ *      illum->sun_moon_hidden > 0 (the Moon hides part of the Sun).
  *   7. Not modelled: the Moon or the Earth's limb glow in the field, stray
  *      light from the Sun outside the exclusion angle, the atmosphere's
  *      radiance at the limb. docs/camera.md.

@@ -21,7 +21,8 @@
 /* Flags that describe the geometry (kept from the input); the others are
  * computed here. */
 #define FLAGS_GEOMETRIC (OI_FLAG_SUN_EXCLUSION | OI_FLAG_EARTH_IN_FOV | OI_FLAG_ECLIPSED | \
-                         OI_FLAG_PENUMBRA | OI_FLAG_OCCULTED | OI_FLAG_RESOLVED)
+                         OI_FLAG_PENUMBRA | OI_FLAG_OCCULTED | OI_FLAG_RESOLVED | \
+                         OI_FLAG_MOON_SHADOW)
 #define FLAGS_ALL (FLAGS_GEOMETRIC | OI_FLAG_TOO_FAINT | OI_FLAG_SATURATED)
 
 /* Brightest accepted target flux (W/m^2): magnitude OI_MAG_MIN at the
@@ -305,7 +306,8 @@ int oi_expose(const oi_camera *camera, const oi_expose_in *in,
  * Returned (function value):
  *             const char *  "sun_exclusion", "earth_in_fov", "eclipsed",
  *                           "too_faint", "saturated", "penumbra",
- *                           "occulted", "resolved"; NULL for 0, a combination of bits
+ *                           "occulted", "resolved", "moon_shadow"; NULL for 0, a
+ *                           combination of bits
  *                           or an unknown bit.
  */
 const char *oi_flag_name(unsigned flag_bit)
@@ -319,6 +321,7 @@ const char *oi_flag_name(unsigned flag_bit)
     case OI_FLAG_PENUMBRA: return "penumbra";
     case OI_FLAG_OCCULTED: return "occulted";
     case OI_FLAG_RESOLVED: return "resolved";
+    case OI_FLAG_MOON_SHADOW: return "moon_shadow";
     default: return NULL;
     }
 }

@@ -206,6 +206,7 @@ int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
     if (in.flags & OI_FLAG_OCCULTED) in.flux_w_m2 = 0;
     limit_resolved(camera, scene, illum, &in);
     in.flags |= region_flags(illum->shadow.region);
+    if (illum->sun_moon_hidden > (oi_real)0) in.flags |= OI_FLAG_MOON_SHADOW;
 
     st = oi__expose_valid(camera, &in, goal, out);
     if (st < 0) return st;

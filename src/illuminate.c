@@ -17,12 +17,23 @@ static int check_scalar(oi_real value, oi_real lo, oi_real hi, int range_error)
     return OI_OK;
 }
 
+/* 1 when the scene gives the Moon's position (OI_TERM_MOON or has_moon; never
+ * in a build with OI_NO_MOON, where has_moon is ignored). */
+static int moon_given(const oi_scene *s)
+{
+#ifdef OI_NO_MOON
+    return (s->terms & OI_TERM_MOON) != 0; /* refused by the terms check */
+#else
+    return (s->terms & OI_TERM_MOON) != 0 || s->has_moon != 0;
+#endif
+}
+
 /* Validation of everything in the scene that does not need geometry. Each
  * position's norm is formed once (scaled: any finite input). */
 static int check_scene(const oi_scene *s, const oi_model *m)
 {
     int st;
-    const int moon = (s->terms & OI_TERM_MOON) != 0, obs = s->has_observer != 0;
+    const int moon = moon_given(s), obs = s->has_observer != 0;
     const oi_real far = (oi_real)OI_POSITION_MAX_KM;
     oi_real n_sun, n_target, n_moon, n_obs;
     unsigned available = OI_TERM_SUN | OI_TERM_EARTH;
@@ -160,7 +171,26 @@ static OI_NOINLINE int moon_term(const oi_scene *s, const oi_model *m, oi_illum 
         e_moon = solar_irradiance(m, d_sun) * MOON_FULL_OVER_SUN * ratio * ratio *
                  oi_moon_phase_law(alpha);
     }
-    out->e_moon = e_moon * out->moon_sun_fraction;
+    /* the part of the Moon's disc the Earth's solid body hides from the
+     * target (the Earth's shadow on the Moon is in moon_sun_fraction) */
+    out->moon_disc_visible = oi__moon_disc_visible(s->target_km, dir, d_target, m);
+    out->e_moon = e_moon * out->moon_sun_fraction * out->moon_disc_visible;
+    return OI_OK;
+}
+
+/* The Moon's shadow on the target: the shadow's fractions with the Moon as a
+ * second occulter, and e_sun with them (its own frame, after sun_term's). */
+static OI_NOINLINE int moon_shadow_term(const oi_scene *s, const oi_model *m, oi_illum *out)
+{
+    int st;
+    oi_real before = out->shadow.fraction_atm;
+    if (!(oi__dot(s->moon_km, s->moon_km) > m->earth_radius_km * m->earth_radius_km))
+        return OI_ERR_BELOW_SURFACE;
+    st = oi__moon_shadow(s->sun_km, s->moon_km, s->target_km, m, &out->shadow,
+                         &out->sun_moon_hidden);
+    if (st < 0) return st;
+    if ((s->terms & OI_TERM_SUN) && out->shadow.fraction_atm != before)
+        out->e_sun = solar_irradiance(m, out->shadow.sun_distance_km) * out->shadow.fraction_atm;
     return OI_OK;
 }
 #endif
@@ -256,9 +286,13 @@ static OI_NOINLINE int observer_term(const oi_scene *scene, const oi_model *m, o
  *     in the shadow, dir_sun is then the mean direction of the refracted light.
  *  2. Earth: e_earth = earth_albedo * TSI (AU/|sun|)^2 * phi(theta, h).
  *  3. Moon: the Moon is lit by the fraction of the Sun it sees (so it darkens
- *     in the Earth's shadow). The Moon's own shadow on the target (solar
- *     eclipses by the Moon) is not modelled. The Moon's shadow test is
- *     skipped when the Moon is certainly in full sunlight (certainly_lit).
+ *     in the Earth's shadow), and its light is cut by the part of its disc
+ *     the Earth hides from the target (oi__moon_disc_visible). Whenever its
+ *     position is given (OI_TERM_MOON or has_moon) the Moon also occults the
+ *     Sun (oi__moon_shadow: the shadow's fractions and e_sun count it;
+ *     sun_moon_hidden). The Moon's shadow test is skipped when the Moon is
+ *     certainly in full sunlight (certainly_lit), its occultation when its
+ *     disc is certainly apart from the Sun's.
  *  4. The target is a Lambertian sphere; earthshine is reflected as if it came
  *     from its mean incidence direction (exact in the far field).
  *  5. Cost: the model is resolved and the scene validated once; after that
@@ -282,6 +316,12 @@ int oi_illuminate(const oi_scene *scene, const oi_model *model, oi_illum *out)
     st = sun_term(scene, &m, out);
     if (st < 0) goto fail;
     if (st > 0) warn = st;
+#ifndef OI_NO_MOON
+    if (moon_given(scene)) {
+        st = moon_shadow_term(scene, &m, out);
+        if (st < 0) goto fail;
+    }
+#endif
     st = earth_term(scene, &m, out);
     if (st < 0) goto fail;
     if (st > 0) warn = st;

@@ -256,6 +256,33 @@ oi_real oi__half_angle(const oi_real hs[4], int i, int comp);
  * at +-alpha; negative for alpha > pi/2 (src/cap_segment.c). */
 oi_real oi__cap_segment(oi_real r, oi_real alpha);
 
+/* The region (OI_SHADOW_*) and the visible fractions, uniform *frac and
+ * (frac_ld not NULL) limb-darkened *frac_ld, of the solar disc of apparent
+ * radius rs behind a nearer disc of radius re, centres sep apart (radians):
+ * the Sun behind the Earth or the Moon; with frac_ld NULL any disc behind
+ * another (src/sun_fraction.c). */
+int oi__disc_fractions(oi_real rs, oi_real re, oi_real sep, oi_real *frac, oi_real *frac_ld);
+
+#ifndef OI_NO_MOON
+/* Area (sr) of the intersection of the three caps of unit centres c[i] and
+ * radii r[i] (radians, (0, pi)) (src/cap_triple.c). */
+oi_real oi__cap_triple(const oi_real c[3][3], const oi_real r[3]);
+
+/* The Moon's shadow on a point: sh, oi__sun_shadow's result there, gets the
+ * fractions with the Moon as a second occulter; *hidden the fraction of the
+ * Sun's disc area the Moon covers. OI_OK, or OI_ERR_GEOMETRY for a point in
+ * the Moon (src/moon_occultation.c). */
+int oi__moon_shadow(const oi_real sun_km[3], const oi_real moon_km[3],
+                    const oi_real point_km[3], const oi_model *m, oi_shadow *sh,
+                    oi_real *hidden);
+
+/* Fraction of the Moon's disc seen from the point that the Earth does not
+ * hide; u_moon the unit vector to the Moon, dm its distance
+ * (src/moon_occultation.c). */
+oi_real oi__moon_disc_visible(const oi_real point_km[3], const oi_real u_moon[3], oi_real dm,
+                              const oi_model *m);
+#endif
+
 #ifndef OI_NO_LIMB_DARKENING
 /* Limb darkening is computed for OI_LD_RS_MIN < r_s <= OI_LD_RS_MAX
  * (docs/shadow.md); elsewhere the uniform disc stands in. */
@@ -268,6 +295,14 @@ oi_real oi__cap_segment(oi_real r, oi_real alpha);
  * centre), or annular with tri = NULL (src/limb_darkening.c). */
 oi_real oi__fraction_limb_darkened(oi_real rs, oi_real re, oi_real sep, oi_real pa_s,
                                    const oi_real *tri);
+
+#ifndef OI_NO_MOON
+/* Visible fraction of the limb-darkened solar disc (radius rs) behind two
+ * discs at once (radii re, rm, centres de, dm from the Sun's, dem apart)
+ * (src/limb_darkened_union.c). */
+oi_real oi__fraction_ld_two(oi_real rs, oi_real re, oi_real de, oi_real rm, oi_real dm,
+                            oi_real dem);
+#endif
 #endif
 
 static inline void oi__zero3(oi_real a[3])

@@ -223,10 +223,10 @@ static oi_real crescent_fraction(oi_real rs, oi_real re, oi_real sep, oi_real ss
 }
 
 /* Step 3, the discs overlapping (penumbra or annular): the region, and the
- * visible fractions of the uniform and the limb-darkened disc (Notes 1-3). */
-static int eclipse_fraction(const sun_geom *g, oi_real *frac, oi_real *frac_ld)
+ * visible fractions of the uniform and the limb-darkened disc (Notes 1-3).
+ * rs: the Sun's apparent radius, re: the occulter's, sep: their separation. */
+static int eclipse_fraction(oi_real rs, oi_real re, oi_real sep, oi_real *frac, oi_real *frac_ld)
 {
-    const oi_real rs = g->rs, re = g->re, sep = g->sep;
     oi_real ssun = oi__sin_half_sq(rs);
     oi_real pa_s = OI_PI_R; /* pi - alpha_s; pi when annular */
     oi_real hs[4];          /* the triangle's sines (penumbra) */
@@ -246,32 +246,47 @@ static int eclipse_fraction(const sun_geom *g, oi_real *frac, oi_real *frac_ld)
 #ifdef OI_NO_LIMB_DARKENING
     (void)pa_s;
     (void)tri;
-    *frac_ld = *frac; /* the limb-darkened disc is compiled out */
+    if (frac_ld != NULL) *frac_ld = *frac; /* the limb-darkened disc is compiled out */
 #else
     /* beyond OI_LD_RS_MAX (an observer within 2.1 solar radii of the Sun's
      * centre) or below 1e-15 rad the uniform disc stands in */
-    *frac_ld = rs <= OI_LD_RS_MAX && rs > OI_LD_RS_MIN
-                   ? oi__fraction_limb_darkened(rs, re, sep, pa_s, tri)
-                   : *frac;
+    if (frac_ld != NULL)
+        *frac_ld = rs <= OI_LD_RS_MAX && rs > OI_LD_RS_MIN
+                       ? oi__fraction_limb_darkened(rs, re, sep, pa_s, tri)
+                       : *frac;
 #endif
     return region;
+}
+
+/* The region and the visible fractions of a disc of apparent radius rs
+ * behind a nearer disc of radius re, centres sep apart (src/oi_internal.h):
+ * the Sun behind the Earth or the Moon, the Moon behind the Earth. */
+int oi__disc_fractions(oi_real rs, oi_real re, oi_real sep, oi_real *frac, oi_real *frac_ld)
+{
+    if (sep >= re + rs) {
+        *frac = (oi_real)1;
+        if (frac_ld != NULL) *frac_ld = (oi_real)1;
+        return OI_SHADOW_LIT;
+    }
+    if (sep <= re - rs) {
+        *frac = (oi_real)0;
+        if (frac_ld != NULL) *frac_ld = (oi_real)0;
+        return OI_SHADOW_UMBRA;
+    }
+    return eclipse_fraction(rs, re, sep, frac, frac_ld);
 }
 
 /* Step 3: the region (Note 2) and the two geometric fractions. */
 static int sun_fractions(const sun_geom *g, oi_real *frac, oi_real *frac_ld)
 {
-    if (g->sep >= g->re + g->rs || g->dp >= g->dsp) {
-        /* discs apart, or the Earth behind the Sun (a point beyond the Sun:
-         * whenever the discs overlap the three bodies are nearly collinear,
-         * so the nearer one is in front) */
+    if (g->dp >= g->dsp) {
+        /* the Earth behind the Sun (a point beyond the Sun: whenever the
+         * discs overlap the three bodies are nearly collinear, so the nearer
+         * one is in front) */
         *frac = *frac_ld = (oi_real)1;
         return OI_SHADOW_LIT;
     }
-    if (g->sep <= g->re - g->rs) {
-        *frac = *frac_ld = (oi_real)0;
-        return OI_SHADOW_UMBRA;
-    }
-    return eclipse_fraction(g, frac, frac_ld);
+    return oi__disc_fractions(g->rs, g->re, g->sep, frac, frac_ld);
 }
 
 /* Step 4, the atmosphere (Note 5): the single place where refraction and

@@ -296,6 +296,7 @@ static int run_row(batch *b, const csv_reader *r, plan_row *row)
     if (parse_vec(b, r, C_TARGET_X, sc.target_km, 1) < 0) return 0;
     has_moon = parse_vec(b, r, C_MOON_X, sc.moon_km, 0);
     if (has_moon < 0) return 0;
+    sc.has_moon = has_moon; /* the Moon occults the Sun whatever the terms */
     st = parse_vec(b, r, C_OBSERVER_X, sc.observer_km, 0);
     if (st < 0) return 0;
     sc.has_observer = st;
@@ -370,6 +371,7 @@ static int run_row(batch *b, const csv_reader *r, plan_row *row)
     } else if (row->illum.shadow.region != OI_SHADOW_LIT) {
         row->flags |= OI_FLAG_PENUMBRA;
     }
+    if (row->illum.sun_moon_hidden > (oi_real)0) row->flags |= OI_FLAG_MOON_SHADOW;
     if (sc.has_observer) {
         int st2 = oi_expose_scene(cam, &sc, &row->illum, &model, NULL, &row->expo);
         if (st2 < 0) {

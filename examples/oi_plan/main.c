@@ -44,7 +44,7 @@ static void usage(FILE *fp)
         "  earth_h_km,flux_obs,mag_v,exposure_s,gain,snr,flags\n"
         "  status: OK, WARN_* (computed), ERR_* (row failed; ERR_PARSE: bad text).\n"
         "  flags: sun_exclusion, earth_in_fov, eclipsed, penumbra, occulted, resolved,\n"
-        "         too_faint, saturated, joined by '+'.\n"
+        "         too_faint, saturated, moon_shadow, joined by '+'.\n"
         "\n"
         "exit status: 0 all rows OK (warnings included), 1 some rows had errors,\n"
         "             2 unusable input (no header, missing required column,\n"

@@ -159,6 +159,7 @@ def _scenes(sun, moon, target, observer, terms, earth_albedo, target_albedo,
     sc["target_km"] = target
     if moon is not None:
         sc["moon_km"] = moon
+        sc["has_moon"] = 1  # the Moon occults the Sun whatever the terms
     if observer is not None:
         sc["observer_km"] = observer
         sc["has_observer"] = 1

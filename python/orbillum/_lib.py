@@ -81,6 +81,7 @@ OI_FLAG_SATURATED = 16
 OI_FLAG_PENUMBRA = 32
 OI_FLAG_OCCULTED = 64
 OI_FLAG_RESOLVED = 128
+OI_FLAG_MOON_SHADOW = 256
 
 # ---- include/oi_table.h
 OI_TABLE_FORMAT = 4
@@ -162,6 +163,7 @@ class oi_scene(ctypes.Structure):
         ("sun_km", real * 3), ("moon_km", real * 3), ("target_km", real * 3),
         ("observer_km", real * 3), ("has_observer", c_int), ("terms", c_uint),
         ("earth_albedo", real), ("target_albedo", real), ("target_radius_m", real),
+        ("has_moon", c_int),
     ]
 
 
@@ -175,6 +177,7 @@ class oi_illum(ctypes.Structure):
         ("phase_sun", real), ("phase_earth", real), ("phase_moon", real),
         ("flux_sun", real), ("flux_earth", real), ("flux_moon", real),
         ("flux_obs", real), ("mag_v", real), ("range_km", real),
+        ("sun_moon_hidden", real), ("moon_disc_visible", real),
     ]
 
 

@@ -441,9 +441,10 @@ static void test_flag_names(void **state)
     assert_string_equal(oi_flag_name(OI_FLAG_PENUMBRA), "penumbra");
     assert_string_equal(oi_flag_name(OI_FLAG_OCCULTED), "occulted");
     assert_string_equal(oi_flag_name(OI_FLAG_RESOLVED), "resolved");
+    assert_string_equal(oi_flag_name(OI_FLAG_MOON_SHADOW), "moon_shadow");
     assert_null(oi_flag_name(0));
     assert_null(oi_flag_name(OI_FLAG_SUN_EXCLUSION | OI_FLAG_ECLIPSED));
-    assert_null(oi_flag_name(256u));
+    assert_null(oi_flag_name(OI_FLAG_MOON_SHADOW << 1));
 }
 #endif /* OI_NO_EXPOSURE */
 

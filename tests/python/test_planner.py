@@ -468,3 +468,36 @@ def test_header_too_long_or_binary():
     assert code == 2 and out == "" and "longer" in err
     code, out, err = run_csv("s\0u\0n\0_\0x\0\n".encode("latin-1"))
     assert code == 2 and "UTF-16" in err
+
+
+def test_moon_occults_the_sun_whatever_the_terms():
+    """A GEO target on the Sun-Moon line, the Moon on the far side of its
+    orbit: the antumbra, 1 - (r_moon / r_sun)^2 of the Sun left (closed form
+    on the sphere: sin((rs - rm)/2) sin((rs + rm)/2) / sin^2(rs/2)); the
+    flag moon_shadow without an observer; the same with terms=sun (the Moon's
+    position is given); and moonlight cut to 0 by the Earth between the target
+    and the Moon."""
+    sun = (AU, 0.0, 0.0)
+    target = (0.0, 42164.0, 0.0)
+    moon = (384400.0, 42164.0 * (1 - 384400.0 / AU), 0.0)
+    row = dict(sun_x=sun[0], sun_y=sun[1], sun_z=sun[2], target_x=target[0],
+               target_y=target[1], target_z=target[2], moon_x=moon[0], moon_y=moon[1],
+               moon_z=moon[2])
+    hidden = dict(row, id="hidden", target_x=0.0, target_y=-7000.0, target_z=0.0,
+                  moon_x=0.0, moon_y=384400.0, moon_z=0.0)
+    code, out, err = run_csv(table([dict(row, id="all"), dict(row, id="sun", terms="sun"),
+                                    hidden]))
+    assert code == 0, err
+    a, s, h = parse(out)
+    ds = math.dist(sun, target)
+    dm = math.dist(moon, target)
+    rs, rm = math.asin(695700.0 / ds), math.asin(1737.4 / dm)
+    want = math.sin((rs - rm) / 2) * math.sin((rs + rm) / 2) / math.sin(rs / 2) ** 2
+    for r in (a, s):
+        assert r["status"] == "OK"
+        assert abs(float(r["sun_fraction"]) - want) < 1e-12, (r["sun_fraction"], want)
+        assert abs(float(r["e_sun"]) - TSI * (AU / ds) ** 2 * want) < 1e-6 * TSI
+        assert "moon_shadow" in r["flags"].split("+")
+    assert float(s["e_moon"]) == 0.0
+    assert h["status"] == "OK" and float(h["e_moon"]) == 0.0
+    assert "moon_shadow" not in h["flags"].split("+")

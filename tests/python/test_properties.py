@@ -144,8 +144,12 @@ def test_irradiance_scales_with_sun_distance(sdir, tdir, logh, k, moon_r):
     # Sun distance
     assume(float(np.dot(sdir, tdir)) > math.cos(math.radians(80)))
     target = tdir * (R_E + 10 ** logh)
-    moon = sdir * moon_r  # full Moon side: lit, never in the shadow
-    moon = moon if np.dot(sdir, tdir) < 0.99 else -moon
+    moon = sdir * moon_r  # on the Sun's line: lit, never in the shadow
+    # ... unless it hides part of the Sun from the target (within 2 deg of it
+    # seen from there: the Moon occults the Sun): then on the other side
+    to_moon = moon - target
+    if np.dot(to_moon, sdir) > np.linalg.norm(to_moon) * math.cos(math.radians(2)):
+        moon = -moon
     m = oi.model(earth_model=oi.EARTH_LAMBERT)
     res = []
     for f in (1.0, k):

@@ -2,12 +2,14 @@
 # SPDX-License-Identifier: MIT
 """Generate the C tests' reference vectors, one command for all of them.
 
-    python tests/ref/generate.py {earthshine,atmosphere,shadow,stability,all} [--root DIR] [--list]
+    python tests/ref/generate.py {earthshine,atmosphere,shadow,occulters,stability,all} [--root DIR] [--list]
 
   earthshine   tests/c/ref_earthshine.h    quadrature reference (bake.earthshine.reference)
   atmosphere   tests/c/ref_atmosphere.h    ray reference and the lookup's Python mirror on
                                            the committed table tables/oi_atm_vband.c
   shadow       tests/c/ref_phase.h, tests/c/ref_shadow.h   mpmath at 45 digits (~6 min)
+  occulters    tests/c/ref_occulters.h     the Moon's shadow and the Earth hiding the Moon,
+                                           mpmath ring quadrature at 30 digits (~5 s)
   stability    tests/stability/vectors.h   mpmath at 60 digits
 
 --root DIR writes at the repository-relative paths under DIR (default: the
@@ -28,6 +30,7 @@ GENERATORS = {
     "earthshine": ["tests/c/ref_earthshine.h"],
     "atmosphere": ["tests/c/ref_atmosphere.h"],
     "shadow": ["tests/c/ref_phase.h", "tests/c/ref_shadow.h"],
+    "occulters": ["tests/c/ref_occulters.h"],
     "stability": ["tests/stability/vectors.h"],
 }
 
