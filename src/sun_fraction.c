@@ -224,7 +224,7 @@ static oi_real crescent_fraction(oi_real rs, oi_real re, oi_real sep, oi_real ss
 
 /* Step 3, the discs overlapping (penumbra or annular): the region, and the
  * visible fractions of the uniform and the limb-darkened disc (Notes 1-3). */
-static int eclipse_fraction(const sun_geom *g, oi_real *frac, oi_real *frac_ld)
+static int eclipse_fraction(const sun_geom *g, int need_ld, oi_real *frac, oi_real *frac_ld)
 {
     const oi_real rs = g->rs, re = g->re, sep = g->sep;
     oi_real ssun = oi__sin_half_sq(rs);
@@ -246,11 +246,12 @@ static int eclipse_fraction(const sun_geom *g, oi_real *frac, oi_real *frac_ld)
 #ifdef OI_NO_LIMB_DARKENING
     (void)pa_s;
     (void)tri;
+    (void)need_ld;
     *frac_ld = *frac; /* the limb-darkened disc is compiled out */
 #else
     /* beyond OI_LD_RS_MAX (an observer within 2.1 solar radii of the Sun's
      * centre) or below 1e-15 rad the uniform disc stands in */
-    *frac_ld = rs <= OI_LD_RS_MAX && rs > OI_LD_RS_MIN
+    *frac_ld = need_ld && rs <= OI_LD_RS_MAX && rs > OI_LD_RS_MIN
                    ? oi__fraction_limb_darkened(rs, re, sep, pa_s, tri)
                    : *frac;
 #endif
@@ -258,7 +259,7 @@ static int eclipse_fraction(const sun_geom *g, oi_real *frac, oi_real *frac_ld)
 }
 
 /* Step 3: the region (Note 2) and the two geometric fractions. */
-static int sun_fractions(const sun_geom *g, oi_real *frac, oi_real *frac_ld)
+static int sun_fractions(const sun_geom *g, int need_ld, oi_real *frac, oi_real *frac_ld)
 {
     if (g->sep >= g->re + g->rs || g->dp >= g->dsp) {
         /* discs apart, or the Earth behind the Sun (a point beyond the Sun:
@@ -271,7 +272,7 @@ static int sun_fractions(const sun_geom *g, oi_real *frac, oi_real *frac_ld)
         *frac = *frac_ld = (oi_real)0;
         return OI_SHADOW_UMBRA;
     }
-    return eclipse_fraction(g, frac, frac_ld);
+    return eclipse_fraction(g, need_ld, frac, frac_ld);
 }
 
 /* Step 4, the atmosphere (Note 5): the single place where refraction and
@@ -301,18 +302,38 @@ static int atmosphere_fraction(const oi_real sun_km[3], const oi_real point_km[3
 int oi__sun_shadow(const oi_real sun_km[3], const oi_real point_km[3], const oi_model *resolved,
                    oi_shadow *out, oi_real light_dir[3])
 {
+    return oi__sun_shadow_want(sun_km, point_km, resolved, OI__WANT_LD | OI__WANT_ATM, out,
+                               light_dir);
+}
+
+/* The same for the batch (src/batch.c): the limb-darkened fraction is formed
+ * only when it is wanted or the atmosphere's fraction needs it, which the
+ * atmosphere (and the limb-darkened model) do: the uniform-disc fraction
+ * without the atmosphere skips that integral. Without OI__WANT_ATM the
+ * atmosphere is not consulted and fraction_atm is 0. */
+int oi__sun_shadow_want(const oi_real sun_km[3], const oi_real point_km[3],
+                        const oi_model *resolved, unsigned want, oi_shadow *out,
+                        oi_real light_dir[3])
+{
     sun_geom g;
     oi_real frac, frac_ld;
-    int st, region;
+    int st = OI_OK, region, need_ld = (want & OI__WANT_LD) != 0;
 
+    if (want & OI__WANT_ATM) {
+#ifndef OI_NO_ATMOSPHERE
+        if (!resolved->no_atmosphere) need_ld = 1;
+#endif
+        if (resolved->limb_darkening == OI_LIMB_DARKENED) need_ld = 1;
+    }
     memset(out, 0, sizeof *out);
     st = sun_geometry(sun_km, point_km, resolved, &g);
     if (st != OI_OK) return st;
     apparent_radii(resolved, &g);
-    region = sun_fractions(&g, &frac, &frac_ld);
+    region = sun_fractions(&g, need_ld, &frac, &frac_ld);
     out->fraction = frac;
     out->fraction_ld = frac_ld;
-    st = atmosphere_fraction(sun_km, point_km, resolved, frac, frac_ld, out, light_dir);
+    if (want & OI__WANT_ATM)
+        st = atmosphere_fraction(sun_km, point_km, resolved, frac, frac_ld, out, light_dir);
     out->sun_radius_rad = g.rs;
     out->earth_radius_rad = g.re;
     out->separation_rad = g.sep;
