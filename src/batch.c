@@ -94,8 +94,11 @@ static int batch_fail(int st, long n, int *status, void *out, size_t size, int z
  * from cosines alone; ROW_UNSURE otherwise (the full call follows). A row is
  * decided only when every check of the full call's geometry (sun_geometry in
  * src/sun_fraction.c) passes, formed the same way, so its status is OI_OK:
- * finite, |point| >= 2 R (no near-surface test), |sun| > R_sun + R,
- * sun - point finite, |sun - point| > R_sun. LIT: the angle between the
+ * finite, |point| > 1.001 R (|point|^2 - R^2 >= 0.002 R^2, far beyond the
+ * rounding of the full call's compensated form: not below the surface),
+ * |sun| > R_sun + R, sun - point finite, |sun - point| > R_sun. Both
+ * apparent radii are below pi/2 (sines below 1), so their sum is below pi
+ * and the comparison of cosines is the comparison of angles. LIT: the angle between the
  * Sun's centre and the Earth's anti-centre exceeds the sum of the radii of
  * the Sun and of the Earth enlarged by GRAZING_TOP_KM (outside the
  * atmosphere's window too: its fraction is then 1, src/illuminate.c's
@@ -109,7 +112,7 @@ static int certain_region(const oi_real sun[3], const oi_real p[3], const oi_mod
     if (!oi__finite3(sun) || !oi__finite3(p)) return ROW_UNSURE;
     ds = oi__norm(sun);
     dp = oi__norm(p);
-    if (!(dp >= (oi_real)2 * m->earth_radius_km) || !OI_ISFINITE(dp)) return ROW_UNSURE;
+    if (!(dp > OI_R(1.001) * m->earth_radius_km) || !OI_ISFINITE(dp)) return ROW_UNSURE;
     if (!(ds > m->sun_radius_km + m->earth_radius_km)) return ROW_UNSURE;
     oi__sub(sun, p, rel);
     if (!oi__finite3(rel)) return ROW_UNSURE;
@@ -117,12 +120,12 @@ static int certain_region(const oi_real sun[3], const oi_real p[3], const oi_mod
     if (!OI_ISFINITE(dsp) || !(dsp > m->sun_radius_km)) return ROW_UNSURE;
     /* the Earth behind the Sun is LIT in the full call too, but rare: left to it */
     sin_s = m->sun_radius_km / dsp;
-    if (!(sin_s < OI_R(0.9))) return ROW_UNSURE;
+    if (!(sin_s < (oi_real)1)) return ROW_UNSURE;
     cos_s = OI_SQRT(((oi_real)1 - sin_s) * ((oi_real)1 + sin_s));
     cos_sep = -oi__dot(rel, p) / dsp / dp;
     if (!OI_ISFINITE(cos_sep)) return ROW_UNSURE;
     sin_e = (m->earth_radius_km + GRAZING_TOP_KM) / dp;
-    if (sin_e < OI_R(0.9)) {
+    if (sin_e < (oi_real)1) {
         cos_e = OI_SQRT(((oi_real)1 - sin_e) * ((oi_real)1 + sin_e));
         if (cos_sep < cos_e * cos_s - sin_e * sin_s - COS_MARGIN) return ROW_LIT;
     }
