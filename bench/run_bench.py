@@ -186,6 +186,8 @@ def peer_run(args, out):
         v = [float(x) for x in f[1:]]
         rows.append((f[0], v[0:3], v[3:6], v[6]))
     peers.run(rows, out)
+    import binding_cost
+    binding_cost.run(rows, out)
 
 
 def quadrature(args, out):
@@ -316,6 +318,11 @@ def goals(out):
         out.put("goal.sun_fraction_2x_faster_than_fastest_planar_peer", "met" if r >= 2 else "missed",
                 "-", "numpy M&G / oi_sun_fraction_batch (mask 0): %.2fx (Orekit, Basilisk not timed)%s"
                 % (r, note))
+    worst = [val(k) for k in out.data if k.startswith("binding.") and k.endswith(".over_c_batch")]
+    worst = [w for w in worst if w is not None]
+    if worst:
+        out.put("goal.binding_within_1.3x_of_c_batch", "met" if max(worst) <= 1.3 else "missed",
+                "-", "largest binding / C batch ratio per row: %.2fx" % max(worst))
     a, b = val("bench.double.all.ns_median"), val("bench.double.all_batch.ns_median")
     if a and b:
         out.put("goal.full_illumination_3x_faster", "met" if a / b >= 3 else "missed", "-",
