@@ -302,15 +302,34 @@ static int atmosphere_fraction(const oi_real sun_km[3], const oi_real point_km[3
 int oi__sun_shadow(const oi_real sun_km[3], const oi_real point_km[3], const oi_model *resolved,
                    oi_shadow *out, oi_real light_dir[3])
 {
-    return oi__sun_shadow_want(sun_km, point_km, resolved, OI__WANT_LD | OI__WANT_ATM, out,
-                               light_dir);
+    sun_geom g;
+    oi_real frac, frac_ld;
+    int st, region;
+
+    memset(out, 0, sizeof *out);
+    st = sun_geometry(sun_km, point_km, resolved, &g);
+    if (st != OI_OK) return st;
+    apparent_radii(resolved, &g);
+    region = sun_fractions(&g, 1, &frac, &frac_ld);
+    out->fraction = frac;
+    out->fraction_ld = frac_ld;
+    st = atmosphere_fraction(sun_km, point_km, resolved, frac, frac_ld, out, light_dir);
+    out->sun_radius_rad = g.rs;
+    out->earth_radius_rad = g.re;
+    out->separation_rad = g.sep;
+    out->sun_distance_km = g.dsp;
+    out->region = region;
+    return st;
 }
 
 /* The same for the batch (src/batch.c): the limb-darkened fraction is formed
  * only when it is wanted or the atmosphere's fraction needs it, which the
  * atmosphere (and the limb-darkened model) do: the uniform-disc fraction
  * without the atmosphere skips that integral. Without OI__WANT_ATM the
- * atmosphere is not consulted and fraction_atm is 0. */
+ * atmosphere is not consulted and fraction_atm is 0. A function of its own,
+ * not the body of oi__sun_shadow: a program without the batch (the Sun-only
+ * flash budget, make size) does not link it (-ffunction-sections,
+ * --gc-sections). */
 int oi__sun_shadow_want(const oi_real sun_km[3], const oi_real point_km[3],
                         const oi_model *resolved, unsigned want, oi_shadow *out,
                         oi_real light_dir[3])

@@ -205,14 +205,12 @@ def _scenes(sun, moon, target, observer, terms, earth_albedo, target_albedo,
     n = _n_rows(sun, target, moon, observer)
     d = L.oi_scene()
     _lib.oi_scene_defaults(ctypes.addressof(d))
-    sc = np.zeros(n, dtype=SCENE_DTYPE)
+    sc = np.empty(n, dtype=SCENE_DTYPE)  # every field is set below (padding is not read)
     sc["sun_km"] = sun
     sc["target_km"] = target
-    if moon is not None:
-        sc["moon_km"] = moon
-    if observer is not None:
-        sc["observer_km"] = observer
-        sc["has_observer"] = 1
+    sc["moon_km"] = 0.0 if moon is None else moon
+    sc["observer_km"] = 0.0 if observer is None else observer
+    sc["has_observer"] = 0 if observer is None else 1
     if terms is None:
         mask = L.OI_TERM_SUN | L.OI_TERM_EARTH | (L.OI_TERM_MOON if moon is not None else 0)
         sc["terms"] = mask & d.terms

@@ -37,7 +37,9 @@ static oi_real sun[3 * NRAND], pt[3 * NRAND];
 static oi_scene scenes[NRAND];
 static oi_shadow one_sh[NRAND], bat_sh[NRAND];
 static oi_illum one_il[NRAND], bat_il[NRAND];
+#ifndef OI_NO_EXPOSURE
 static oi_exposure one_ex[NRAND], bat_ex[NRAND];
+#endif
 static int one_st[NRAND], bat_st[NRAND];
 
 static int same_bits(oi_real a, oi_real b)
