@@ -127,6 +127,7 @@ static oi_real apparent_radius(oi_real rad, oi_real dist)
  *   integral of F(rho) dt around it, F(rho) the flux within rho (see
  *   oi__fraction_limb_darkened).
  */
+#ifndef OI_SUN_FRACTION_WANT_ONLY
 int oi_sun_fraction(const oi_real sun_km[3], const oi_real point_km[3],
                     const oi_model *model, oi_shadow *out)
 {
@@ -139,6 +140,7 @@ int oi_sun_fraction(const oi_real sun_km[3], const oi_real point_km[3],
     if (st < 0) return st;
     return oi__sun_shadow(sun_km, point_km, &m, out, NULL);
 }
+#endif
 
 /* The geometry of one call: distances, and the two discs on the sky of the
  * point. */
@@ -296,6 +298,7 @@ static int atmosphere_fraction(const oi_real sun_km[3], const oi_real point_km[3
 #endif
 }
 
+#ifndef OI_SUN_FRACTION_WANT_ONLY
 /* oi_sun_fraction with a resolved model, and (light_dir not NULL, atmosphere
  * compiled in and on) the mean direction the sunlight arrives from: see
  * src/oi_internal.h. The composition of the steps above. */
@@ -322,14 +325,17 @@ int oi__sun_shadow(const oi_real sun_km[3], const oi_real point_km[3], const oi_
     return st;
 }
 
+#else /* OI_SUN_FRACTION_WANT_ONLY: src/sun_fraction_want.c */
+
 /* The same for the batch (src/batch.c): the limb-darkened fraction is formed
  * only when it is wanted or the atmosphere's fraction needs it, which the
  * atmosphere (and the limb-darkened model) do: the uniform-disc fraction
  * without the atmosphere skips that integral. Without OI__WANT_ATM the
- * atmosphere is not consulted and fraction_atm is 0. A function of its own,
- * not the body of oi__sun_shadow: a program without the batch (the Sun-only
- * flash budget, make size) does not link it (-ffunction-sections,
- * --gc-sections). */
+ * atmosphere is not consulted and fraction_atm is 0. Compiled only in
+ * src/sun_fraction_want.c, a translation unit of its own that includes this
+ * file: the steps above are inlined there as here, and this file's
+ * oi__sun_shadow compiles as it did with one caller of each step (the
+ * Sun-only flash budget, make size). */
 int oi__sun_shadow_want(const oi_real sun_km[3], const oi_real point_km[3],
                         const oi_model *resolved, unsigned want, oi_shadow *out,
                         oi_real light_dir[3])
@@ -360,3 +366,4 @@ int oi__sun_shadow_want(const oi_real sun_km[3], const oi_real point_km[3],
     out->region = region;
     return st;
 }
+#endif
