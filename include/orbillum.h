@@ -633,7 +633,8 @@ int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
  * status[i] then set to it and every output row zeroed where the pointers
  * allow:
  *   OI_ERR_NULL    a required array is NULL (with n > 0)
- *   OI_ERR_INPUT   n > OI_BATCH_MAX; an array not aligned for its element
+ *   OI_ERR_INPUT   n < 0 or n > OI_BATCH_MAX (then nothing is written, not
+ *                  even status); an array not aligned for its element
  *                  type; an output array overlapping an input array or
  *                  another output (the contract forbids it: rows would
  *                  change under the call)

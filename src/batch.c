@@ -181,7 +181,8 @@ int oi_sun_fraction_batch(long n, const oi_real *sun_km, const oi_real *point_km
     long i, bad = 0;
     int st;
     if (n == 0) return 0;
-    st = check_n(n);
+    if (check_n(n) != OI_OK) return OI_ERR_INPUT; /* nothing written: n is not the arrays' */
+    st = OI_OK;
     if (st == OI_OK && (sun_km == NULL || point_km == NULL || out == NULL || status == NULL))
         st = OI_ERR_NULL;
     if (st != OI_OK) return batch_fail(st, n, status, NULL, 0, 0);
@@ -211,7 +212,8 @@ int oi_earthshine_batch(long n, const oi_real *theta, const oi_real *h_km,
     long i, bad = 0;
     int st;
     if (n == 0) return 0;
-    st = check_n(n);
+    if (check_n(n) != OI_OK) return OI_ERR_INPUT; /* nothing written: n is not the arrays' */
+    st = OI_OK;
     if (st == OI_OK && (theta == NULL || h_km == NULL || phi == NULL || status == NULL))
         st = OI_ERR_NULL;
     if (st != OI_OK) return batch_fail(st, n, status, NULL, 0, 0);
@@ -247,7 +249,8 @@ int oi_illuminate_batch(long n, const oi_scene *scenes, const oi_model *model, o
     long i, bad = 0;
     int st;
     if (n == 0) return 0;
-    st = check_n(n);
+    if (check_n(n) != OI_OK) return OI_ERR_INPUT; /* nothing written: n is not the arrays' */
+    st = OI_OK;
     if (st == OI_OK && (scenes == NULL || out == NULL || status == NULL)) st = OI_ERR_NULL;
     if (st != OI_OK) return batch_fail(st, n, status, NULL, 0, 0);
     if (!span_of(scenes, n, sizeof *scenes, ALIGN_OF(oi_scene), &in[0]) ||
@@ -274,7 +277,8 @@ int oi_expose_batch(long n, const oi_camera *camera, const oi_expose_in *in,
     long i, bad = 0;
     int st;
     if (n == 0) return 0;
-    st = check_n(n);
+    if (check_n(n) != OI_OK) return OI_ERR_INPUT; /* nothing written: n is not the arrays' */
+    st = OI_OK;
     if (st == OI_OK && (camera == NULL || in == NULL || out == NULL || status == NULL))
         st = OI_ERR_NULL;
     if (st != OI_OK) return batch_fail(st, n, status, NULL, 0, 0);
@@ -302,7 +306,8 @@ int oi_expose_scene_batch(long n, const oi_camera *camera, const oi_scene *scene
     long i, bad = 0;
     int st;
     if (n == 0) return 0;
-    st = check_n(n);
+    if (check_n(n) != OI_OK) return OI_ERR_INPUT; /* nothing written: n is not the arrays' */
+    st = OI_OK;
     if (st == OI_OK &&
         (camera == NULL || scenes == NULL || illum == NULL || out == NULL || status == NULL))
         st = OI_ERR_NULL;

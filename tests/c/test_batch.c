@@ -437,7 +437,16 @@ static void test_hostile_arrays(void **state)
     check_int(0, oi_illuminate_batch(0, NULL, NULL, NULL, NULL), "n = 0 illuminate");
     check_int(0, oi_earthshine_batch(0, NULL, NULL, NULL, NULL, NULL, NULL), "n = 0 es");
     /* n < 0 */
+    bat_st[0] = 12345;
     check_int(OI_ERR_INPUT, oi_sun_fraction_batch(-1, sun, pt, NULL, 0, bat_sh, bat_st), "n<0");
+    /* n beyond OI_BATCH_MAX: refused, nothing written (the arrays are not that long) */
+    check_int(OI_ERR_INPUT,
+              oi_sun_fraction_batch(OI_BATCH_MAX + 1, sun, pt, NULL, 0, bat_sh, bat_st), "n big");
+    check_int(OI_ERR_INPUT, oi_illuminate_batch(OI_BATCH_MAX + 1, scenes, NULL, bat_il, bat_st),
+              "n big illuminate");
+    check_int(OI_ERR_INPUT,
+              oi_earthshine_batch(OI_BATCH_MAX + 1, pt, pt, NULL, buf, NULL, bat_st), "n big es");
+    check_int(12345, bat_st[0], "status untouched");
     /* NULL arrays */
     check_int(OI_ERR_NULL, oi_sun_fraction_batch(n, NULL, pt, NULL, 0, bat_sh, bat_st), "NULL");
     expect_all(OI_ERR_NULL, n, bat_st, "NULL rows");
