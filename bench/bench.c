@@ -9,6 +9,8 @@
  *                              over its lit/penumbra/umbra scenes only (for
  *                              valgrind --tool=callgrind: two N, difference)
  *   bench dump                 per scene: orbit, light, region, theta, h, phi, psi
+ *   bench points               per scene: light, Sun and target positions (km), and
+ *                              oi_sun_fraction's fraction (the peers' inputs)
  *   bench configs              list the configurations
  *
  * Configurations (the scene mix of bench/scenes.h, observer set):
@@ -21,6 +23,14 @@
  *   sun_fraction   oi_sun_fraction alone
  *   earthshine     oi_earthshine alone (the baked table), theta and h of each scene
  *   earthshine_lambert   oi_earthshine with OI_EARTH_LAMBERT (analytic far field)
+ *   sun_fraction_batch   oi_sun_fraction_batch, outputs mask 0 (the uniform disc's
+ *                  fraction and the region: what the planar peers compute)
+ *   sun_fraction_batch_all  oi_sun_fraction_batch, OI_BATCH_ALL (every output of
+ *                  the single call)
+ *   all_batch      oi_illuminate_batch, Sun + Earth + Moon (as all)
+ *   earthshine_batch  oi_earthshine_batch (as earthshine)
+ * The batch configurations make one call over the mix (or over its lit,
+ * penumbra or umbra scenes); costs are per scene.
  * Output: `name value unit` lines. Timing with clock_gettime(CLOCK_MONOTONIC)
  * here, never inside the library.
  */
@@ -51,10 +61,24 @@ static bench_scene_d raw[BENCH_NSCENES];
 static volatile double sink;
 
 enum { C_ALL, C_SUN, C_SUN_EARTH, C_ALL_EXPOSE, C_SUN_FRACTION, C_EARTHSHINE, C_EARTHSHINE_LAMBERT,
-       C_SUN_MOON, C_N };
+       C_SUN_MOON, C_SUN_FRACTION_BATCH, C_SUN_FRACTION_BATCH_ALL, C_ALL_BATCH, C_EARTHSHINE_BATCH,
+       C_N };
 static const char *const config_name[C_N] = {"all",          "sun",        "sun_earth",
                                              "all_expose",   "sun_fraction", "earthshine",
-                                             "earthshine_lambert", "sun_moon"};
+                                             "earthshine_lambert", "sun_fraction_batch",
+                                             "sun_fraction_batch_all", "all_batch",
+                                             "earthshine_batch"};
+
+/* The batch configurations' arrays: the scenes of the mix (or of one
+ * lighting class), packed (pack()). */
+static long nb;
+static oi_real b_sun[3 * BENCH_NSCENES], b_pt[3 * BENCH_NSCENES];
+static oi_real b_theta[BENCH_NSCENES], b_h[BENCH_NSCENES], b_phi[BENCH_NSCENES],
+    b_psi[BENCH_NSCENES];
+static oi_scene b_scenes[BENCH_NSCENES];
+static oi_shadow b_shadow[BENCH_NSCENES];
+static oi_illum b_illum[BENCH_NSCENES];
+static int b_status[BENCH_NSCENES];
 
 static void setup(void)
 {
@@ -87,6 +111,49 @@ static void setup(void)
 /* scenes of one lighting class only (-1: all) */
 static int only_light = -1;
 
+static void pack(void)
+{
+    int i, k;
+    nb = 0;
+    for (i = 0; i < BENCH_NSCENES; i++) {
+        if (only_light >= 0 && raw[i].light != only_light) continue;
+        for (k = 0; k < 3; k++) {
+            b_sun[3 * nb + k] = scenes[i].sun_km[k];
+            b_pt[3 * nb + k] = scenes[i].target_km[k];
+        }
+        b_theta[nb] = es_theta[i];
+        b_h[nb] = es_h[i];
+        b_scenes[nb] = scenes[i];
+        b_scenes[nb].terms = OI_TERM_ALL;
+        nb++;
+    }
+}
+
+/* One call of a batch configuration; returns a checksum. */
+static double run_batch(int cfg)
+{
+    double acc = 0.0;
+    long i;
+    switch (cfg) {
+    case C_SUN_FRACTION_BATCH:
+    case C_SUN_FRACTION_BATCH_ALL:
+        (void)oi_sun_fraction_batch(nb, b_sun, b_pt, NULL,
+                                    cfg == C_SUN_FRACTION_BATCH ? 0u : OI_BATCH_ALL, b_shadow,
+                                    b_status);
+        for (i = 0; i < nb; i++) acc += (double)b_shadow[i].fraction;
+        break;
+    case C_ALL_BATCH:
+        (void)oi_illuminate_batch(nb, b_scenes, NULL, b_illum, b_status);
+        for (i = 0; i < nb; i++) acc += (double)b_illum[i].flux_obs;
+        break;
+    default:
+        (void)oi_earthshine_batch(nb, b_theta, b_h, NULL, b_phi, b_psi, b_status);
+        for (i = 0; i < nb; i++) acc += (double)b_phi[i];
+        break;
+    }
+    return acc;
+}
+
 /* One pass of a configuration over the scene mix; returns a checksum. */
 static double run_config(int cfg)
 {
@@ -100,6 +167,7 @@ static double run_config(int cfg)
 #ifndef OI_NO_EXPOSURE
     cam = oi_camera_builtin(0);
 #endif
+    if (cfg >= C_SUN_FRACTION_BATCH) return run_batch(cfg);
     memset(&lambert, 0, sizeof lambert);
     lambert.earth_model = OI_EARTH_LAMBERT;
     for (i = 0; i < BENCH_NSCENES; i++) {
@@ -222,9 +290,27 @@ static int do_dump(void)
     return 0;
 }
 
+static int do_points(void)
+{
+    int i;
+    oi_shadow sh;
+    printf("# light sun_x sun_y sun_z target_x target_y target_z fraction\n");
+    for (i = 0; i < BENCH_NSCENES; i++) {
+        const oi_scene *s = &scenes[i];
+        (void)oi_sun_fraction(s->sun_km, s->target_km, NULL, &sh);
+        printf("%s %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n", bench_light_name[raw[i].light],
+               (double)s->sun_km[0], (double)s->sun_km[1], (double)s->sun_km[2],
+               (double)s->target_km[0], (double)s->target_km[1], (double)s->target_km[2],
+               (double)sh.fraction);
+    }
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     setup();
+    pack();
+    if (argc >= 2 && strcmp(argv[1], "points") == 0) return do_points();
     if (argc >= 2 && strcmp(argv[1], "time") == 0) return do_time(argc >= 3 ? atoi(argv[2]) : 31);
     if (argc >= 2 && strcmp(argv[1], "dump") == 0) return do_dump();
     if (argc >= 2 && strcmp(argv[1], "configs") == 0) {
@@ -239,11 +325,12 @@ int main(int argc, char **argv)
             for (k = 0; k < BENCH_LIGHTS; k++)
                 if (strcmp(bench_light_name[k], argv[4]) == 0) only_light = k;
             if (only_light < 0) return 2;
+            pack();
         }
         if (c < 0 || n < 0) return 2;
         for (k = 0; k < n; k++) sink = run_config(c);
         return 0;
     }
-    fprintf(stderr, "usage: bench time [reps] | count CONFIG N [LIGHT] | dump | configs\n");
+    fprintf(stderr, "usage: bench time [reps] | count CONFIG N [LIGHT] | dump | points | configs\n");
     return 2;
 }

@@ -30,7 +30,7 @@ ROOT = os.path.dirname(HERE)
 sys.path.insert(0, ROOT)
 
 CONFIGS = ["all", "sun", "sun_earth", "all_expose", "sun_fraction", "earthshine", "earthshine_lambert",
-           "sun_moon"]
+           "sun_moon", "sun_fraction_batch", "sun_fraction_batch_all", "all_batch", "earthshine_batch"]
 LIGHTS = ["lit", "penumbra", "umbra"]
 R_EARTH_KM = 6378.137
 
@@ -150,7 +150,7 @@ def main():
                 out.put("bench.%s.%s.instructions" % (prec, c), "%.0f" % per, "instructions",
                         "callgrind, (I(%d) - I(%d)) / (%d x %d scenes)" % (args.n2, args.n1,
                                                                            args.n2 - args.n1, ns))
-                if c in ("all_expose", "sun_fraction"):
+                if c in ("all_expose", "sun_fraction", "sun_fraction_batch"):
                     for light in LIGHTS:  # where the cost is: lit, penumbra, umbra
                         t1 = callgrind_total(b, c, args.n1, tmp, light)
                         t2 = callgrind_total(b, c, args.n2, tmp, light)
@@ -163,6 +163,9 @@ def main():
     else:
         out.put("bench.instructions", "unavailable", "-", "valgrind not installed")
 
+    # 2b. the planar peers of oi_sun_fraction, in the same run (bench/peers.py)
+    peer_run(args, out)
+
     # 3. the slow way: quadrature per scene
     if not args.no_quadrature:
         quadrature(args, out)
@@ -170,6 +173,21 @@ def main():
     goals(out)
     out.save()
     return 0
+
+
+def peer_run(args, out):
+    import peers
+    rows = []
+    b = os.path.join(args.bindir, "bench-double")
+    for line in run([b, "points"]).stdout.splitlines():
+        if line.startswith("#"):
+            continue
+        f = line.split()
+        v = [float(x) for x in f[1:]]
+        rows.append((f[0], v[0:3], v[3:6], v[6]))
+    peers.run(rows, out)
+    import binding_cost
+    binding_cost.run(rows, out)
 
 
 def quadrature(args, out):
@@ -295,6 +313,20 @@ def goals(out):
     if t is not None:
         out.put("goal.full_scene_under_%d_ns" % GOAL_NS, "met" if t < GOAL_NS else "missed", "-",
                 "double, all terms + exposure: %.1f ns median%s" % (t, note))
+    r = val("peer.numpy_mg.over.sun_fraction_batch_same_rows")
+    if r is not None:
+        out.put("goal.sun_fraction_2x_faster_than_fastest_planar_peer", "met" if r >= 2 else "missed",
+                "-", "numpy M&G / oi_sun_fraction_batch (mask 0), same 1e5 points: %.2fx "
+                "(Orekit, Basilisk not timed)%s" % (r, note))
+    worst = [val(k) for k in out.data if k.startswith("binding.") and k.endswith(".over_c_batch")]
+    worst = [w for w in worst if w is not None]
+    if worst:
+        out.put("goal.binding_within_1.3x_of_c_batch", "met" if max(worst) <= 1.3 else "missed",
+                "-", "largest binding / C batch ratio per row: %.2fx" % max(worst))
+    a, b = val("bench.double.all.ns_median"), val("bench.double.all_batch.ns_median")
+    if a and b:
+        out.put("goal.full_illumination_3x_faster", "met" if a / b >= 3 else "missed", "-",
+                "oi_illuminate / oi_illuminate_batch per scene: %.2fx%s" % (a / b, note))
     s = val("bench.double.earthshine.speedup_vs_quadrature")
     if s is not None:
         out.put("goal.earthshine_%dx_faster_than_quadrature" % GOAL_SPEEDUP, "met" if s >= GOAL_SPEEDUP else "missed",

@@ -67,6 +67,11 @@ typedef double oi_real;
 #define oi_flag_name oi_flag_name_sp
 #define oi_expose oi_expose_sp
 #define oi_expose_scene oi_expose_scene_sp
+#define oi_sun_fraction_batch oi_sun_fraction_batch_sp
+#define oi_earthshine_batch oi_earthshine_batch_sp
+#define oi_illuminate_batch oi_illuminate_batch_sp
+#define oi_expose_batch oi_expose_batch_sp
+#define oi_expose_scene_batch oi_expose_scene_batch_sp
 #endif
 
 #endif /* OI_CONFIG_H */

@@ -637,6 +637,76 @@ int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
 
 #endif /* OI_NO_EXPOSURE */
 
+/* ---------------------------------------------------------------- batch */
+
+/*
+ * Batch calls: the single calls above over caller-owned arrays of n rows, the
+ * model (and camera) validated once per batch. Row i of every output is, bit
+ * for bit, what the single call returns for row i of the inputs (the fields
+ * an outputs mask leaves out are 0). Arrays of the existing structures and
+ * of oi_real (positions: 3 n values, x y z of row 0 first); src/batch.c.
+ *
+ * Returned (function value): the number of rows whose status is an error
+ * (0: every row computed; warnings do not count), or a batch error, every
+ * status[i] then set to it and every output row zeroed where the pointers
+ * allow:
+ *   OI_ERR_NULL    a required array is NULL (with n > 0)
+ *   OI_ERR_INPUT   n < 0 or n > OI_BATCH_MAX (then nothing is written, not
+ *                  even status); an array not aligned for its element
+ *                  type; an output array overlapping an input array or
+ *                  another output (the contract forbids it: rows would
+ *                  change under the call)
+ *   OI_ERR_MODEL, OI_ERR_RADIUS, OI_ERR_CAMERA  the model or the camera is
+ *                  invalid (as the single call)
+ * n = 0 does nothing and returns 0 (NULL arrays allowed).
+ * status[i]: the single call's status for row i (a NaN row gets
+ * OI_ERR_NONFINITE and a zeroed output row, the others are computed).
+ */
+#define OI_BATCH_MAX (1073741824L) /* 2^30 rows per call */
+
+/* Outputs mask of oi_sun_fraction_batch (bits);
+ * fraction and region are always formed. */
+#define OI_BATCH_FRACTION_LD (1u) /* oi_shadow.fraction_ld */
+#define OI_BATCH_ATMOSPHERE  (2u) /* oi_shadow.fraction_atm (the atmosphere and its
+                                     OI_WARN_TABLE_RANGE; without: 0, the atmosphere
+                                     not consulted) */
+#define OI_BATCH_GEOMETRY    (4u) /* oi_shadow.sun_radius_rad, earth_radius_rad,
+                                     separation_rad, sun_distance_km */
+#define OI_BATCH_ALL (OI_BATCH_FRACTION_LD | OI_BATCH_ATMOSPHERE | OI_BATCH_GEOMETRY)
+
+/* oi_sun_fraction over n rows: sun_km, point_km 3 n values each; out[n],
+ * status[n]. outputs: OI_BATCH_* bits (unknown bits: OI_ERR_FLAGS for the
+ * batch). Cost: without OI_BATCH_FRACTION_LD and OI_BATCH_ATMOSPHERE the
+ * limb-darkened integral is skipped (the uniform disc's fraction alone);
+ * without OI_BATCH_GEOMETRY a point certainly in full sunlight (outside the
+ * Earth's disc enlarged by 200 km, by 1e-6 in cosine) is answered from
+ * its cosines, without the three arctangents (docs/performance.md). */
+int oi_sun_fraction_batch(long n, const oi_real *sun_km, const oi_real *point_km,
+                          const oi_model *model, unsigned outputs, oi_shadow *out,
+                          int *status);
+
+/* oi_earthshine over n rows: theta[n], h_km[n] in; phi[n] out; psi[n] out
+ * or NULL (not wanted); status[n]. */
+int oi_earthshine_batch(long n, const oi_real *theta, const oi_real *h_km,
+                        const oi_model *model, oi_real *phi, oi_real *psi, int *status);
+
+/* oi_illuminate over n scenes: scenes[n] in, out[n], status[n]. */
+int oi_illuminate_batch(long n, const oi_scene *scenes, const oi_model *model,
+                        oi_illum *out, int *status);
+
+#ifndef OI_NO_EXPOSURE
+/* oi_expose over n rows, one camera and goal: in[n], out[n], status[n]. */
+int oi_expose_batch(long n, const oi_camera *camera, const oi_expose_in *in,
+                    const oi_expose_goal *goal, oi_exposure *out, int *status);
+
+/* oi_expose_scene over n rows: scenes[n], illum[n] (oi_illuminate_batch's
+ * out) in, out[n], status[n]. A scene without observer gets OI_ERR_NULL in
+ * its row (as the single call). */
+int oi_expose_scene_batch(long n, const oi_camera *camera, const oi_scene *scenes,
+                          const oi_illum *illum, const oi_model *model,
+                          const oi_expose_goal *goal, oi_exposure *out, int *status);
+#endif /* OI_NO_EXPOSURE */
+
 #ifdef __cplusplus
 }
 #endif

@@ -303,38 +303,48 @@ static OI_NOINLINE int observer_term(const oi_scene *scene, const oi_model *m, o
 int oi_illuminate(const oi_scene *scene, const oi_model *model, oi_illum *out)
 {
     oi_model m;
-    int st, warn = OI_OK;
+    int st;
 
     if (out == NULL) return OI_ERR_NULL;
     memset(out, 0, sizeof *out);
     if (scene == NULL) return OI_ERR_NULL;
     st = oi__model_resolve(model, &m);
     if (st < 0) return st;
-    st = check_scene(scene, &m);
+    return oi__illuminate_resolved(scene, &m, out);
+}
+
+/* oi_illuminate after the model's resolution (the batch calls it once per
+ * batch, src/batch.c); out is zeroed here too. */
+int oi__illuminate_resolved(const oi_scene *scene, const oi_model *m, oi_illum *out)
+{
+    int st, warn = OI_OK;
+
+    memset(out, 0, sizeof *out);
+    st = check_scene(scene, m);
     if (st < 0) return st;
 
-    st = sun_term(scene, &m, out);
+    st = sun_term(scene, m, out);
     if (st < 0) goto fail;
     if (st > 0) warn = st;
 #ifndef OI_NO_MOON
     if (moon_given(scene)) {
-        st = moon_shadow_term(scene, &m, out);
+        st = moon_shadow_term(scene, m, out);
         if (st < 0) goto fail;
     }
 #endif
-    st = earth_term(scene, &m, out);
+    st = earth_term(scene, m, out);
     if (st < 0) goto fail;
     if (st > 0) warn = st;
 #ifndef OI_NO_MOON
     if (scene->terms & OI_TERM_MOON) {
-        st = moon_sun_fraction(scene, &m, &out->moon_sun_fraction);
+        st = moon_sun_fraction(scene, m, &out->moon_sun_fraction);
         if (st < 0) goto fail;
-        st = moon_term(scene, &m, out);
+        st = moon_term(scene, m, out);
         if (st < 0) goto fail;
     }
 #endif
     if (scene->has_observer) {
-        st = observer_term(scene, &m, out);
+        st = observer_term(scene, m, out);
         if (st < 0) goto fail;
     }
     return warn;

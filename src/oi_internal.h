@@ -331,6 +331,21 @@ int oi__model_resolve(const oi_model *in, oi_model *out);
 int oi__sun_shadow(const oi_real sun_km[3], const oi_real point_km[3], const oi_model *resolved,
                    oi_shadow *out, oi_real light_dir[3]);
 
+/* oi__sun_shadow with a choice of outputs (the batch, src/batch.c):
+ * OI__WANT_LD forms fraction_ld (else it equals fraction unless the
+ * atmosphere or the limb-darkened model needs it), OI__WANT_ATM fraction_atm
+ * and its status (else 0, the atmosphere not consulted). Every output formed
+ * is the bits of oi__sun_shadow's. */
+#define OI__WANT_LD (1u)
+#define OI__WANT_ATM (2u)
+int oi__sun_shadow_want(const oi_real sun_km[3], const oi_real point_km[3],
+                        const oi_model *resolved, unsigned want, oi_shadow *out,
+                        oi_real light_dir[3]);
+
+/* oi_illuminate (src/illuminate.c) with a resolved model and non-NULL
+ * scene and out: the model is not validated again. */
+int oi__illuminate_resolved(const oi_scene *scene, const oi_model *resolved, oi_illum *out);
+
 /*
  * oi_earthshine (src/earthshine.c) for callers that already hold a resolved
  * model and non-NULL phi, psi: same results and statuses, the model is not

@@ -127,6 +127,7 @@ static oi_real apparent_radius(oi_real rad, oi_real dist)
  *   integral of F(rho) dt around it, F(rho) the flux within rho (see
  *   oi__fraction_limb_darkened).
  */
+#ifndef OI_SUN_FRACTION_WANT_ONLY
 int oi_sun_fraction(const oi_real sun_km[3], const oi_real point_km[3],
                     const oi_model *model, oi_shadow *out)
 {
@@ -139,6 +140,7 @@ int oi_sun_fraction(const oi_real sun_km[3], const oi_real point_km[3],
     if (st < 0) return st;
     return oi__sun_shadow(sun_km, point_km, &m, out, NULL);
 }
+#endif
 
 /* The geometry of one call: distances, and the two discs on the sky of the
  * point. */
@@ -224,8 +226,11 @@ static oi_real crescent_fraction(oi_real rs, oi_real re, oi_real sep, oi_real ss
 
 /* Step 3, the discs overlapping (penumbra or annular): the region, and the
  * visible fractions of the uniform and the limb-darkened disc (Notes 1-3).
- * rs: the Sun's apparent radius, re: the occulter's, sep: their separation. */
-static int eclipse_fraction(oi_real rs, oi_real re, oi_real sep, oi_real *frac, oi_real *frac_ld)
+ * rs: the Sun's apparent radius, re: the occulter's, sep: their separation;
+ * need_ld = 0 leaves the limb-darkened integral out (frac_ld = frac);
+ * frac_ld may be NULL. */
+static int eclipse_fraction(oi_real rs, oi_real re, oi_real sep, int need_ld, oi_real *frac,
+                            oi_real *frac_ld)
 {
     oi_real ssun = oi__sin_half_sq(rs);
     oi_real pa_s = OI_PI_R; /* pi - alpha_s; pi when annular */
@@ -246,12 +251,13 @@ static int eclipse_fraction(oi_real rs, oi_real re, oi_real sep, oi_real *frac, 
 #ifdef OI_NO_LIMB_DARKENING
     (void)pa_s;
     (void)tri;
+    (void)need_ld;
     if (frac_ld != NULL) *frac_ld = *frac; /* the limb-darkened disc is compiled out */
 #else
     /* beyond OI_LD_RS_MAX (an observer within 2.1 solar radii of the Sun's
      * centre) or below 1e-15 rad the uniform disc stands in */
     if (frac_ld != NULL)
-        *frac_ld = rs <= OI_LD_RS_MAX && rs > OI_LD_RS_MIN
+        *frac_ld = need_ld && rs <= OI_LD_RS_MAX && rs > OI_LD_RS_MIN
                        ? oi__fraction_limb_darkened(rs, re, sep, pa_s, tri)
                        : *frac;
 #endif
@@ -259,9 +265,9 @@ static int eclipse_fraction(oi_real rs, oi_real re, oi_real sep, oi_real *frac, 
 }
 
 /* The region and the visible fractions of a disc of apparent radius rs
- * behind a nearer disc of radius re, centres sep apart (src/oi_internal.h):
- * the Sun behind the Earth or the Moon, the Moon behind the Earth. */
-int oi__disc_fractions(oi_real rs, oi_real re, oi_real sep, oi_real *frac, oi_real *frac_ld)
+ * behind a nearer disc of radius re, centres sep apart. */
+static int disc_fractions(oi_real rs, oi_real re, oi_real sep, int need_ld, oi_real *frac,
+                          oi_real *frac_ld)
 {
     if (sep >= re + rs) {
         *frac = (oi_real)1;
@@ -273,11 +279,20 @@ int oi__disc_fractions(oi_real rs, oi_real re, oi_real sep, oi_real *frac, oi_re
         if (frac_ld != NULL) *frac_ld = (oi_real)0;
         return OI_SHADOW_UMBRA;
     }
-    return eclipse_fraction(rs, re, sep, frac, frac_ld);
+    return eclipse_fraction(rs, re, sep, need_ld, frac, frac_ld);
 }
 
+#ifndef OI_SUN_FRACTION_WANT_ONLY
+/* disc_fractions for the other occulters (src/oi_internal.h): the Sun
+ * behind the Moon, the Moon behind the Earth; frac_ld NULL: not wanted. */
+int oi__disc_fractions(oi_real rs, oi_real re, oi_real sep, oi_real *frac, oi_real *frac_ld)
+{
+    return disc_fractions(rs, re, sep, frac_ld != NULL, frac, frac_ld);
+}
+#endif
+
 /* Step 3: the region (Note 2) and the two geometric fractions. */
-static int sun_fractions(const sun_geom *g, oi_real *frac, oi_real *frac_ld)
+static int sun_fractions(const sun_geom *g, int need_ld, oi_real *frac, oi_real *frac_ld)
 {
     if (g->dp >= g->dsp) {
         /* the Earth behind the Sun (a point beyond the Sun: whenever the
@@ -286,7 +301,7 @@ static int sun_fractions(const sun_geom *g, oi_real *frac, oi_real *frac_ld)
         *frac = *frac_ld = (oi_real)1;
         return OI_SHADOW_LIT;
     }
-    return oi__disc_fractions(g->rs, g->re, g->sep, frac, frac_ld);
+    return disc_fractions(g->rs, g->re, g->sep, need_ld, frac, frac_ld);
 }
 
 /* Step 4, the atmosphere (Note 5): the single place where refraction and
@@ -310,6 +325,7 @@ static int atmosphere_fraction(const oi_real sun_km[3], const oi_real point_km[3
 #endif
 }
 
+#ifndef OI_SUN_FRACTION_WANT_ONLY
 /* oi_sun_fraction with a resolved model, and (light_dir not NULL, atmosphere
  * compiled in and on) the mean direction the sunlight arrives from: see
  * src/oi_internal.h. The composition of the steps above. */
@@ -324,7 +340,7 @@ int oi__sun_shadow(const oi_real sun_km[3], const oi_real point_km[3], const oi_
     st = sun_geometry(sun_km, point_km, resolved, &g);
     if (st != OI_OK) return st;
     apparent_radii(resolved, &g);
-    region = sun_fractions(&g, &frac, &frac_ld);
+    region = sun_fractions(&g, 1, &frac, &frac_ld);
     out->fraction = frac;
     out->fraction_ld = frac_ld;
     st = atmosphere_fraction(sun_km, point_km, resolved, frac, frac_ld, out, light_dir);
@@ -335,3 +351,46 @@ int oi__sun_shadow(const oi_real sun_km[3], const oi_real point_km[3], const oi_
     out->region = region;
     return st;
 }
+
+#else /* OI_SUN_FRACTION_WANT_ONLY: src/sun_fraction_want.c */
+
+/* The same for the batch (src/batch.c): the limb-darkened fraction is formed
+ * only when it is wanted or the atmosphere's fraction needs it, which the
+ * atmosphere (and the limb-darkened model) do: the uniform-disc fraction
+ * without the atmosphere skips that integral. Without OI__WANT_ATM the
+ * atmosphere is not consulted and fraction_atm is 0. Compiled only in
+ * src/sun_fraction_want.c, a translation unit of its own that includes this
+ * file: the steps above are inlined there as here, and this file's
+ * oi__sun_shadow compiles as it did with one caller of each step (the
+ * Sun-only flash budget, make size). */
+int oi__sun_shadow_want(const oi_real sun_km[3], const oi_real point_km[3],
+                        const oi_model *resolved, unsigned want, oi_shadow *out,
+                        oi_real light_dir[3])
+{
+    sun_geom g;
+    oi_real frac, frac_ld;
+    int st = OI_OK, region, need_ld = (want & OI__WANT_LD) != 0;
+
+    if (want & OI__WANT_ATM) {
+#ifndef OI_NO_ATMOSPHERE
+        if (!resolved->no_atmosphere) need_ld = 1;
+#endif
+        if (resolved->limb_darkening == OI_LIMB_DARKENED) need_ld = 1;
+    }
+    memset(out, 0, sizeof *out);
+    st = sun_geometry(sun_km, point_km, resolved, &g);
+    if (st != OI_OK) return st;
+    apparent_radii(resolved, &g);
+    region = sun_fractions(&g, need_ld, &frac, &frac_ld);
+    out->fraction = frac;
+    out->fraction_ld = frac_ld;
+    if (want & OI__WANT_ATM)
+        st = atmosphere_fraction(sun_km, point_km, resolved, frac, frac_ld, out, light_dir);
+    out->sun_radius_rad = g.rs;
+    out->earth_radius_rad = g.re;
+    out->separation_rad = g.sep;
+    out->sun_distance_km = g.dsp;
+    out->region = region;
+    return st;
+}
+#endif

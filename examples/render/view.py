@@ -26,8 +26,12 @@ the frame saturates at full_well / gain. The HDR panel tone-maps the noiseless
 radiance logarithmically over HDR_DECADES decades below its maximum, so that
 sunlit, earthlit and moonlit parts (up to ~1e6 apart) all show.
 
-An unresolved target (a few pixels across) is shown as a crop of the detector,
-upsampled with nearest-neighbour pixels; the figure says so.
+A target fewer than DISC_PX pixels across is drawn as its PSF blob: a crop of
+the detector, upsampled with nearest-neighbour pixels; the figure says so.
+"Resolved" has one meaning, the library's: OI_FLAG_RESOLVED (oi_expose_scene
+Note 5: the brightest pixel limited by the target's surface brightness), shown
+among the flags; how the figure draws the target is a drawing choice and is
+named as one (drawn_as_disc).
 """
 from __future__ import annotations
 
@@ -39,8 +43,9 @@ import numpy as np
 
 from .common import read_csv, scene_inputs
 
-#: a target fewer pixels across than this is rendered as a PSF blob
-RESOLVED_PX = 4.0
+#: a target fewer pixels across than this is drawn as a PSF blob (a drawing
+#: choice; "resolved" is the library's OI_FLAG_RESOLVED)
+DISC_PX = 4.0
 #: decades of radiance shown by the HDR (logarithmic) tone map
 HDR_DECADES = 8.0
 #: sub-pixels across the target's disc at least (anti-aliasing of the limb)
@@ -95,14 +100,14 @@ def radiance_image(sc: dict, res: dict, cam: dict, crop_px: int | None = None,
     diam_px = 2 * rho / ifov
     if crop_px is None:
         crop_px = int(min(max(24, math.ceil(2.6 * diam_px) + 8), 400))
-    resolved = diam_px >= RESOLVED_PX
-    if resolved:
+    drawn_as_disc = diam_px >= DISC_PX
+    if drawn_as_disc:
         # sub-pixel grid over the whole crop
         os_ = int(max(1, math.ceil(MIN_SUBPIX_ACROSS / diam_px)))
         m = crop_px * os_
         sub = ifov / os_
     else:
-        # unresolved: a close-up grid over the disc only; the detector sees a PSF
+        # drawn as a PSF blob: a close-up grid over the disc only; the detector sees a PSF
         m = int(math.ceil(1.25 * MIN_SUBPIX_ACROSS))
         sub = 2 * rho / MIN_SUBPIX_ACROSS
         os_ = ifov / sub
@@ -140,7 +145,7 @@ def radiance_image(sc: dict, res: dict, cam: dict, crop_px: int | None = None,
         else:
             L[s] = np.zeros((m, m))
     meta = {"range_km": d, "ifov_rad": ifov, "diam_px": diam_px, "crop_px": crop_px,
-            "oversample": os_, "subpix_sr": sub * sub, "resolved": resolved,
+            "oversample": os_, "subpix_sr": sub * sub, "drawn_as_disc": drawn_as_disc,
             "shape": "sphere" if model is None else f"facet model ({len(tris)} triangles)"}
     return L, meta
 
@@ -169,7 +174,7 @@ def render(sc: dict, res: dict, cam: dict, seed: int = 1, model=None) -> dict:
     e_per_L = electrons_per_radiance(cam, t_exp, meta["subpix_sr"])
     sigma_px = psf_sigma_px(cam["psf_peak_fraction"])
     sig_e = {}
-    if meta["resolved"]:
+    if meta["drawn_as_disc"]:
         for s, img in L.items():
             e = img * e_per_L
             sig_e[s] = _bin(gaussian_filter(e, sigma_px * k, mode="constant")
@@ -240,7 +245,7 @@ def plot_view(out_png, img: dict, sc: dict, res: dict, cam: dict, when: str) -> 
     import matplotlib.pyplot as plt
 
     meta = img["meta"]
-    resolved = meta["resolved"]
+    drawn_as_disc = meta["drawn_as_disc"]
     fig, ax = plt.subplots(1, 3, figsize=(13, 5.4))
     ext = None
     ax[0].imshow(img["frame"], cmap="gray", vmin=0, vmax=1, interpolation="nearest")
@@ -267,8 +272,8 @@ def plot_view(out_png, img: dict, sc: dict, res: dict, cam: dict, when: str) -> 
             f"{res['flag_names'] or 'none'}\n"
             f"target {meta['diam_px']:.2f} px across; crop {meta['crop_px']} x "
             f"{meta['crop_px']} detector px" +
-            ("" if resolved else
-             f"; UNRESOLVED: the frame is the PSF blob, upsampled (nearest pixel); the "
+            ("" if drawn_as_disc else
+             f"; under {DISC_PX:g} px across, drawn as its PSF blob, upsampled (nearest pixel); the "
              f"HDR/colour panels show the sphere {meta['oversample']:.0f}x finer than a pixel") +
             "; up = away from the Earth")
     fig.text(0.01, 0.01, note, fontsize=8, va="bottom")

@@ -41,6 +41,45 @@ def _parse_elements(s: str) -> dict:
     return out
 
 
+def _builtin_cameras() -> list[str] | None:
+    """Names of the planner's built-in cameras: from the binding, else from
+    `build/oi-plan --list-cameras`; None when neither is available."""
+    try:
+        import orbillum
+        return orbillum.cameras()
+    except Exception:  # the binding is optional here
+        pass
+    import os
+    import subprocess
+    plan = os.path.join(os.path.dirname(__file__), "..", "..", "build", "oi-plan")
+    try:
+        out = subprocess.run([plan, "--list-cameras"], capture_output=True, text=True,
+                             timeout=30, check=True).stdout
+    except (OSError, subprocess.SubprocessError):
+        return None
+    return [ln.split()[0] for ln in out.splitlines() if ln and not ln[0].isspace()]
+
+
+def _check_columns(p, a) -> None:
+    """Refuse, before any output is written, a camera the planner does not
+    know and albedos or a radius it would refuse row by row."""
+    if a.camera is not None:
+        names = _builtin_cameras()
+        if names is None:
+            print("warning: --camera not checked (no orbillum binding, no build/oi-plan)",
+                  file=sys.stderr)
+        elif a.camera not in names:
+            p.error(f"--camera {a.camera!r}: not a built-in camera; one of {', '.join(names)}")
+    for opt in ("target_albedo", "earth_albedo"):
+        v = getattr(a, opt)
+        if v is not None and not 0.0 <= v <= 1.0:
+            p.error(f"--{opt.replace('_', '-')} {v:g}: an albedo is in [0, 1]")
+    if a.target_radius_m is not None and not 0.0 < a.target_radius_m < float("inf"):
+        p.error(f"--target-radius-m {a.target_radius_m:g}: a radius is > 0")
+    if a.step is not None and not a.step > 0:
+        p.error(f"--step {a.step:g}: the step is > 0 seconds")
+
+
 def main(argv=None) -> int:
     p = argparse.ArgumentParser(
         prog="python -m examples.scenarios",
@@ -62,6 +101,15 @@ def main(argv=None) -> int:
     p.add_argument("--earth-albedo", type=float)
     p.add_argument("-o", "--output", default="-", help="output CSV (default: standard output)")
     a = p.parse_args(argv)
+    if a.case and (a.target_tle or a.target_elements or a.observer_tle or a.observer_elements):
+        p.error("--case carries its own orbits: give --case or the --target-*/--observer-* "
+                "options, not both")
+    _check_columns(p, a)
+    if a.output != "-":
+        import os
+        folder = os.path.dirname(os.path.abspath(a.output))
+        if not os.path.isdir(folder):
+            p.error(f"-o {a.output}: the folder {folder} does not exist")
 
     import warnings
 

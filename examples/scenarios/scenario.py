@@ -19,11 +19,16 @@ Conversions done here (see docs/real-use.md):
   Julian dates it expects.
 
 Offline: IERS auto-download is switched off; Earth orientation comes from the
-IERS-B table bundled with astropy (``astropy-iers-data``). Outside that table's
-span astropy falls back to degraded accuracy (polar motion 50-year mean, UT1 =
-UTC); we allow that with a warning (``iers_degraded_accuracy = "warn"``): the
-position error it causes (< ~0.5 km in LEO for a 1 s UT1 error) is far below the
-error of a TLE.
+IERS tables bundled with astropy (``astropy-iers-data``): measured values up to
+some weeks before the package's release, then about a year of IERS
+predictions. Any date plans: within the measured span silently; beyond it on
+the predictions with a warning (``auto_max_age = None``: astropy would
+otherwise refuse predictions more than 30 days old); beyond the predictions
+astropy falls back to degraded accuracy (polar motion 50-year mean, UT1 = UTC)
+with a warning (``iers_degraded_accuracy = "warn"``) and ours
+(earth_orientation_warning). The position error is far below the error of a
+TLE: UT1 - UTC stays within 0.9 s, and 1 s of UT1 moves a LEO position by
+< ~0.5 km.
 """
 from __future__ import annotations
 
@@ -39,6 +44,7 @@ import numpy as np
 from astropy.utils import iers
 
 iers.conf.auto_download = False
+iers.conf.auto_max_age = None
 iers.conf.iers_degraded_accuracy = "warn"
 
 import astropy.units as u  # noqa: E402
@@ -379,9 +385,40 @@ def list_cases() -> list[str]:
 # ----------------------------------------------------------------- the table
 
 
+def earth_orientation_span() -> tuple[float, float]:
+    """(last measured, last predicted) MJD of the bundled IERS-A table."""
+    table = iers.IERS_Auto.open()
+    mjd = np.asarray(table["MJD"].to_value(u.d), dtype=float)
+    measured = mjd[np.asarray(table["UT1Flag_A"]) == "I"]
+    return (float(measured[-1]) if measured.size else float(mjd[0])), float(mjd[-1])
+
+
+def earth_orientation_warning(t: Time) -> str | None:
+    """The warning for epochs beyond the measured Earth orientation, or None."""
+    measured_end, predicted_end = earth_orientation_span()
+    last = float(np.max(t.utc.mjd))
+    if last <= measured_end:
+        return None
+    date = Time(last, format="mjd", scale="utc").isot[:10]
+
+    def day(m):
+        return Time(m, format="mjd", scale="utc").isot[:10]
+    if last <= predicted_end:
+        return (f"epochs up to {date}: beyond the measured Earth orientation of the shipped "
+                f"IERS data (measured to {day(measured_end)}): IERS predictions used "
+                "(UT1 good to some milliseconds; positions to metres)")
+    return (f"epochs up to {date}: beyond the shipped Earth-orientation data (predictions end "
+            f"{day(predicted_end)}): degraded accuracy, UT1 = UTC and mean polar motion "
+            "(UT1 - UTC is within 0.9 s: LEO positions off by < ~0.5 km, far below a TLE's "
+            "error); update astropy-iers-data for better")
+
+
 def build_rows(sc: Scenario) -> dict:
     """Column name -> array (or list of strings) of the planner's input CSV."""
     t = times_utc(sc.start, sc.stop, sc.step_s)
+    msg = earth_orientation_warning(t)
+    if msg:
+        warnings.warn(msg, stacklevel=2)
     cols: dict = {"id": [ti[:-4] + "Z" if ti.endswith(".000") else ti + "Z"
                          for ti in t.utc.isot]}
     for name, xyz in (("sun", body_gcrs("sun", t)), ("moon", body_gcrs("moon", t)),

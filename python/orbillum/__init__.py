@@ -19,11 +19,11 @@ import numpy as np
 
 from . import _lib as L
 
-# Every status, flag and term constant of the header, by its C name
-# (OI_OK, OI_WARN_*, OI_ERR_*, OI_FLAG_*, OI_TERM_*): taken from the mirror so
-# that a code added there is exported here too.
-_CONSTANTS = sorted(n for n in vars(L) if n == "OI_OK" or
-                    n.startswith(("OI_WARN_", "OI_ERR_", "OI_FLAG_", "OI_TERM_")))
+# Every OI_* constant of the header by its C name (statuses OI_OK, OI_WARN_*,
+# OI_ERR_*; flags, terms, model options, bounds, OI_BATCH_*): taken from the
+# mirror, which tests/python/test_binding_abi.py holds equal to the header, so
+# that a constant added there is exported here too.
+_CONSTANTS = sorted(n for n in vars(L) if n.startswith("OI_"))
 globals().update({n: getattr(L, n) for n in _CONSTANTS})
 
 __all__ = ["illuminate", "expose", "expose_flux", "sun_fraction", "earthshine",
@@ -52,6 +52,29 @@ def library_path():
 def status_name(status):
     """Name of a status code ("OK", "ERR_NONFINITE", ...), as oi_status_name."""
     return _lib.oi_status_name(int(status)).decode()
+
+
+def _names_of(values, name_fn):
+    """name_fn of every element of an integer array, one call per distinct
+    value: a table over the values' small range (statuses, flag masks),
+    np.unique beyond it."""
+    v = np.asarray(values).astype(np.int64, copy=False)
+    if v.size == 0:
+        return np.empty(v.shape, dtype=object)
+    lo, hi = int(v.min()), int(v.max())
+    if hi - lo > 4096:
+        codes, inverse = np.unique(v, return_inverse=True)
+        return np.array([name_fn(c) for c in codes], dtype=object)[inverse].reshape(v.shape)
+    present = np.bincount((v - lo).ravel(), minlength=hi - lo + 1) > 0
+    table = np.empty(hi - lo + 1, dtype=object)
+    for i in np.flatnonzero(present):
+        table[i] = name_fn(lo + int(i))
+    return table[v - lo]
+
+
+def _status_names(status):
+    """oi_status_name of every element."""
+    return _names_of(status, status_name)
 
 
 def flag_names(flags):
@@ -95,18 +118,38 @@ _MODEL_WORDS = {
 
 
 def _model(model):
-    """None -> NULL (defaults); dict of oi_model fields (words allowed) -> struct."""
+    """None -> NULL (defaults); dict of oi_model fields (words allowed) -> struct.
+    ValueError (unknown field or word) or TypeError (not a dict, a value of the
+    wrong type), each naming the field."""
     if model is None:
         return None
+    if not isinstance(model, dict):
+        raise TypeError(f"model: a dict of oi_model fields or None, got {type(model).__name__}")
     m = L.oi_model()
-    for k, v in dict(model).items():
+    types = dict(L.oi_model._fields_)
+    for k, v in model.items():
         if k in ("earth_table", "atm_table"):
-            raise ValueError(f"{k} cannot be set from Python")
-        if not any(k == f[0] for f in L.oi_model._fields_):
-            raise ValueError(f"unknown model field {k!r}")
+            raise ValueError(f"model: {k} cannot be set from Python")
+        if k not in types:
+            raise ValueError(f"model: unknown model field {k!r}")
         if isinstance(v, str):
-            v = _MODEL_WORDS[k][v]
-        setattr(m, k, int(v) if isinstance(v, (bool, np.bool_)) else v)
+            words = _MODEL_WORDS.get(k)
+            if words is None:
+                raise ValueError(f"model[{k!r}]: a number, got the string {v!r}")
+            if v not in words:
+                raise ValueError(f"model[{k!r}]: unknown word {v!r}; one of {', '.join(words)}")
+            v = words[v]
+        if isinstance(v, (bool, np.bool_)):
+            v = int(v)
+        if not isinstance(v, (int, float, np.integer, np.floating)):
+            raise TypeError(f"model[{k!r}]: a number, got {type(v).__name__}")
+        if types[k] is ctypes.c_int:
+            if float(v) != int(v):
+                raise ValueError(f"model[{k!r}]: an integer option, got {v!r}")
+            v = int(v)
+        else:
+            v = float(v)
+        setattr(m, k, v)
     return m
 
 
@@ -117,8 +160,16 @@ def _mptr(m):
 # ------------------------------------------------------------------ arrays
 
 
+def _floats(a, name):
+    """a as a float64 array; TypeError naming the argument when it is not numbers."""
+    try:
+        return np.asarray(a, dtype=np.float64)
+    except (TypeError, ValueError) as e:
+        raise TypeError(f"{name}: expected numbers, got {a!r:.60} ({e})") from None
+
+
 def _vec(a, name, n=None):
-    a = np.asarray(a, dtype=np.float64)
+    a = _floats(a, name)
     if a.shape == (3,):
         a = a[None, :]
     if a.ndim != 2 or a.shape[1] != 3:
@@ -137,7 +188,7 @@ def _n_rows(*arrays):
 
 
 def _scalar_rows(v, n, name):
-    a = np.asarray(v, dtype=np.float64)
+    a = _floats(v, name)
     if a.ndim == 0:
         return np.full(n, float(a))
     if a.shape != (n,):
@@ -154,15 +205,13 @@ def _scenes(sun, moon, target, observer, terms, earth_albedo, target_albedo,
     n = _n_rows(sun, target, moon, observer)
     d = L.oi_scene()
     _lib.oi_scene_defaults(ctypes.addressof(d))
-    sc = np.zeros(n, dtype=SCENE_DTYPE)
+    sc = np.empty(n, dtype=SCENE_DTYPE)  # every field is set below (padding is not read)
     sc["sun_km"] = sun
     sc["target_km"] = target
-    if moon is not None:
-        sc["moon_km"] = moon
-        sc["has_moon"] = 1  # the Moon occults the Sun whatever the terms
-    if observer is not None:
-        sc["observer_km"] = observer
-        sc["has_observer"] = 1
+    sc["moon_km"] = 0.0 if moon is None else moon
+    sc["observer_km"] = 0.0 if observer is None else observer
+    sc["has_observer"] = 0 if observer is None else 1
+    sc["has_moon"] = 0 if moon is None else 1  # the Moon occults the Sun whatever the terms
     if terms is None:
         mask = L.OI_TERM_SUN | L.OI_TERM_EARTH | (L.OI_TERM_MOON if moon is not None else 0)
         sc["terms"] = mask & d.terms
@@ -183,31 +232,38 @@ def _scenes(sun, moon, target, observer, terms, earth_albedo, target_albedo,
 
 
 def _flatten(rec, status):
-    out = {"status": status,
-           "status_name": np.array([status_name(s) for s in status], dtype=object)}
+    """The batch's records as a dict of arrays: views of the record array's
+    fields (no copy; strided), nested shadow fields as shadow_*."""
+    out = {"status": status, "status_name": _status_names(status)}
     for name in rec.dtype.names:
         col = rec[name]
         if col.dtype.names:  # nested struct (shadow)
             for sub in col.dtype.names:
-                out[f"shadow_{sub}"] = np.array(col[sub])
+                out[f"shadow_{sub}"] = col[sub]
         else:
-            out[name] = np.array(col)
+            out[name] = col
     out["sun_fraction"] = out["shadow_fraction"]
     out["sun_fraction_ld"] = out["shadow_fraction_ld"]
     out["sun_fraction_atm"] = out["shadow_fraction_atm"]
     return out
 
 
+def _batch_status(st, n, what):
+    """A batch call's own error (the model, the camera: every row has it) as a
+    ValueError; row errors stay in the status array."""
+    if st < 0 and n > 0:
+        raise ValueError(f"{what}: {status_name(st)} (a field out of its range: see "
+                         f"include/orbillum.h)")
+
+
 def _illuminate_raw(sc, m):
+    """oi_illuminate_batch over the scenes: one C call for every row."""
     n = sc.shape[0]
-    res = np.zeros(n, dtype=ILLUM_DTYPE)
-    status = np.zeros(n, dtype=np.int32)
-    fn = _lib.oi_illuminate
-    mp = _mptr(m)
-    s0, ss = sc.ctypes.data, sc.itemsize
-    r0, rs = res.ctypes.data, res.itemsize
-    for i in range(n):
-        status[i] = fn(s0 + i * ss, mp, r0 + i * rs)
+    res = np.empty(n, dtype=ILLUM_DTYPE)  # the batch writes (or zeroes) every row
+    status = np.empty(n, dtype=np.intc)
+    st = _lib.oi_illuminate_batch(n, sc.ctypes.data, _mptr(m), res.ctypes.data,
+                                  status.ctypes.data)
+    _batch_status(st, n, "model")
     return res, status
 
 
@@ -239,15 +295,65 @@ def illuminate(sun, moon, target, observer=None, *, terms=None, earth_albedo=Non
     return _flatten(res, status)
 
 
+_CAMERA_LISTS = {"times_s": ("n_times", L.OI_CAMERA_MAX_TIMES),
+                 "gains": ("n_gains", L.OI_CAMERA_MAX_GAINS),
+                 "read_noise_e": ("n_gains", L.OI_CAMERA_MAX_GAINS)}
+
+
+def _camera_from_dict(d):
+    """An oi_camera from the dict camera() returns (every field; the counts
+    n_times, n_gains may be left out: the lists' lengths). The C library
+    checks the values (OI_ERR_CAMERA); this checks the names and types."""
+    c = L.oi_camera()
+    fields = dict(L.oi_camera._fields_)
+    unknown = sorted(set(d) - set(fields))
+    if unknown:
+        raise ValueError(f"camera: unknown field(s) {', '.join(map(repr, unknown))}")
+    counts = {}
+    for k, (count, cap) in _CAMERA_LISTS.items():
+        if k not in d:
+            raise ValueError(f"camera: field {k!r} missing")
+        v = _floats(d[k], f"camera[{k!r}]")
+        if v.ndim != 1 or not 1 <= v.size <= cap:
+            raise ValueError(f"camera[{k!r}]: 1 to {cap} numbers, got shape {v.shape}")
+        if counts.setdefault(count, v.size) != v.size:
+            raise ValueError(f"camera[{k!r}]: {v.size} values, {count} is {counts[count]}")
+        getattr(c, k)[:v.size] = [float(x) for x in v]
+    for count, size in counts.items():
+        if count in d and int(d[count]) != size:
+            raise ValueError(f"camera[{count!r}] = {d[count]} but the lists have {size}")
+        setattr(c, count, size)
+    for k, t in fields.items():
+        if k in _CAMERA_LISTS or k in counts:
+            continue
+        if k == "name":
+            name = d.get("name")
+            if name is not None and not isinstance(name, str):
+                raise TypeError(f"camera['name']: a string, got {type(name).__name__}")
+            c._name = None if name is None else name.encode()  # kept alive with c
+            c.name = c._name
+            continue
+        if k not in d:
+            raise ValueError(f"camera: field {k!r} missing")
+        v = d[k]
+        if isinstance(v, (str, bytes)) or not isinstance(v, (int, float, np.integer, np.floating)):
+            raise TypeError(f"camera[{k!r}]: a number, got {type(v).__name__}")
+        setattr(c, k, float(v))
+    return c
+
+
 def _camera_ptr(cam):
     if isinstance(cam, str):
         p = _lib.oi_camera_find(cam.encode())
         if not p:
             raise ValueError(f"no built-in camera {cam!r}; built-in: {', '.join(cameras())}")
         return ctypes.cast(p, ctypes.c_void_p).value, p.contents
+    if isinstance(cam, dict):
+        cam = _camera_from_dict(cam)
     if isinstance(cam, L.oi_camera):
         return ctypes.addressof(cam), cam
-    raise TypeError("camera: a built-in camera name or an orbillum._lib.oi_camera")
+    raise TypeError("camera: a built-in camera name, a dict as camera() returns, or an "
+                    "orbillum._lib.oi_camera")
 
 
 def _goal(fill, snr_min):
@@ -260,11 +366,10 @@ def _goal(fill, snr_min):
 
 
 def _exposure_dict(ex, st):
-    out = {"expose_status": st,
-           "expose_status_name": np.array([status_name(s) for s in st], dtype=object)}
+    out = {"expose_status": st, "expose_status_name": _status_names(st)}
     for name in ex.dtype.names:
-        out[name] = np.array(ex[name])
-    out["flag_names"] = np.array([flag_names(f) for f in ex["flags"]], dtype=object)
+        out[name] = ex[name]
+    out["flag_names"] = _names_of(ex["flags"], flag_names)
     return out
 
 
@@ -272,7 +377,10 @@ def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None
            target_albedo=None, target_radius_m=None, model=None, fill=None, snr_min=None):
     """oi_illuminate then oi_expose_scene for each row: the suggested exposure.
 
-    camera: a built-in camera name (see cameras()) or an oi_camera structure.
+    camera: a built-in camera name (see cameras()), a dict as camera() returns
+    (a custom camera), or an oi_camera structure.
+    observer: required (the exposure is what the observer's camera sees):
+    None raises ValueError.
     fill, snr_min: the oi_expose_goal (None: the C defaults).
     Returns the dict of illuminate() plus the oi_exposure fields (exposure_s,
     gain, time_index, gain_index, signal_e, background_e, peak_e, saturation_e,
@@ -281,6 +389,10 @@ def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None
     (expose_status equals their illumination status, exposure fields 0).
     row_status / row_status_name: the status build/oi-plan prints for the row.
     """
+    if observer is None:
+        raise ValueError("observer: expose needs the observer's position, (N, 3) or (3,) km "
+                         "(the exposure is that of the observer's camera); for the light "
+                         "alone call illuminate()")
     cp, _ = _camera_ptr(camera)
     m = _model(model)
     g = _goal(fill, snr_min)
@@ -288,23 +400,22 @@ def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None
                  target_radius_m)
     res, status = _illuminate_raw(sc, m)
     n = sc.shape[0]
-    ex = np.zeros(n, dtype=EXPOSURE_DTYPE)
-    est = status.copy()
-    fn = _lib.oi_expose_scene
-    mp, gp = _mptr(m), _mptr(g)
-    s0, ss = sc.ctypes.data, sc.itemsize
-    r0, rs = res.ctypes.data, res.itemsize
-    e0, es = ex.ctypes.data, ex.itemsize
-    for i in range(n):
-        if status[i] >= 0:
-            est[i] = fn(cp, s0 + i * ss, r0 + i * rs, mp, gp, e0 + i * es)
+    ex = np.empty(n, dtype=EXPOSURE_DTYPE)  # the batch writes every row
+    est = np.empty(n, dtype=np.intc)
+    st = _lib.oi_expose_scene_batch(n, cp, sc.ctypes.data, res.ctypes.data, _mptr(m), _mptr(g),
+                                    ex.ctypes.data, est.ctypes.data)
+    _batch_status(st, n, "camera or model")
+    # rows whose illumination failed are not exposed: their status, zero fields
+    failed = status < 0
+    est[failed] = status[failed]
+    ex[failed] = np.zeros(1, dtype=EXPOSURE_DTYPE)
     out = _flatten(res, status)
     out.update(_exposure_dict(ex, est))
     # the planner's row status: the illumination's (warnings included) unless
     # the exposure failed
     row = np.where(est < 0, est, status).astype(np.int32)
     out["row_status"] = row
-    out["row_status_name"] = np.array([status_name(s) for s in row], dtype=object)
+    out["row_status_name"] = _status_names(row)
     return out
 
 
@@ -313,58 +424,73 @@ def expose_flux(camera, flux_w_m2, background_w_m2_sr=0.0, flags=0, *, fill=None
     """oi_expose per row from a flux at the aperture (W/m^2), a background
     radiance (W/m^2/sr) and known flags. Returns the oi_exposure fields."""
     cp, _ = _camera_ptr(camera)
-    flux = np.atleast_1d(np.asarray(flux_w_m2, dtype=np.float64))
+    flux = np.atleast_1d(_floats(flux_w_m2, "flux_w_m2"))
+    if flux.ndim != 1:
+        raise ValueError(f"flux_w_m2: expected a scalar or shape (N,), got {flux.shape}")
     n = flux.shape[0]
     bg = _scalar_rows(background_w_m2_sr, n, "background_w_m2_sr")
-    fl = np.broadcast_to(np.asarray(flags, dtype=np.uint32), (n,))
+    try:
+        fl = np.broadcast_to(np.asarray(flags, dtype=np.uint32), (n,))
+    except (TypeError, ValueError, OverflowError) as e:
+        raise ValueError(f"flags: a mask of OI_FLAG_* or one per row ({n}): {e}") from None
     g = _goal(fill, snr_min)
-    ex = np.zeros(n, dtype=EXPOSURE_DTYPE)
-    st = np.zeros(n, dtype=np.int32)
-    e0, es = ex.ctypes.data, ex.itemsize
-    inp = L.oi_expose_in()
-    ip, gp = ctypes.addressof(inp), _mptr(g)
-    for i in range(n):
-        inp.flux_w_m2 = flux[i]
-        inp.background_w_m2_sr = bg[i]
-        inp.flags = int(fl[i])
-        st[i] = _lib.oi_expose(cp, ip, gp, e0 + i * es)
+    inp = np.zeros(n, dtype=np.dtype(L.oi_expose_in))
+    inp["flux_w_m2"] = flux
+    inp["background_w_m2_sr"] = bg
+    inp["flags"] = fl
+    ex = np.empty(n, dtype=EXPOSURE_DTYPE)  # the batch writes every row
+    st = np.empty(n, dtype=np.intc)
+    bst = _lib.oi_expose_batch(n, cp, inp.ctypes.data, _mptr(g), ex.ctypes.data, st.ctypes.data)
+    _batch_status(bst, n, "camera")
     return _exposure_dict(ex, st)
 
 
-def sun_fraction(sun, point, *, model=None):
-    """oi_sun_fraction per row: dict of the oi_shadow fields and status."""
+def sun_fraction(sun, point, *, model=None, outputs=None):
+    """oi_sun_fraction per row (one oi_sun_fraction_batch call): dict of the
+    oi_shadow fields and status. outputs: None (every field) or a mask of
+    OI_BATCH_* bits (fraction and region always; the fields left out are 0,
+    and cost nothing: OI_BATCH_FRACTION_LD, OI_BATCH_ATMOSPHERE,
+    OI_BATCH_GEOMETRY)."""
     sun = _vec(sun, "sun")
     point = _vec(point, "point")
     n = _n_rows(sun, point)
     sun = np.ascontiguousarray(np.broadcast_to(sun, (n, 3)))
     point = np.ascontiguousarray(np.broadcast_to(point, (n, 3)))
     m = _model(model)
-    sh = np.zeros(n, dtype=np.dtype(L.oi_shadow))
-    st = np.zeros(n, dtype=np.int32)
-    mp = _mptr(m)
-    for i in range(n):
-        st[i] = _lib.oi_sun_fraction(sun[i].ctypes.data, point[i].ctypes.data, mp,
-                                     sh.ctypes.data + i * sh.itemsize)
-    out = {k: np.array(sh[k]) for k in sh.dtype.names}
+    mask = L.OI_BATCH_ALL if outputs is None else outputs
+    if not isinstance(mask, (int, np.integer)) or isinstance(mask, bool):
+        raise TypeError(f"outputs: a mask of OI_BATCH_* bits or None, got {outputs!r}")
+    if int(mask) & ~L.OI_BATCH_ALL or int(mask) < 0:
+        raise ValueError(f"outputs: unknown bits in {int(mask):#x} (OI_BATCH_ALL is "
+                         f"{L.OI_BATCH_ALL:#x})")
+    sh = np.empty(n, dtype=np.dtype(L.oi_shadow))  # the batch writes every row
+    st = np.empty(n, dtype=np.intc)
+    bst = _lib.oi_sun_fraction_batch(n, sun.ctypes.data, point.ctypes.data, _mptr(m), int(mask),
+                                     sh.ctypes.data, st.ctypes.data)
+    _batch_status(bst, n, "model")
+    out = {k: sh[k] for k in sh.dtype.names}
     out["status"] = st
     return out
 
 
 def earthshine(theta, h_km, *, model=None):
-    """oi_earthshine per element: (phi, psi, status) arrays."""
-    th, h = np.broadcast_arrays(np.asarray(theta, dtype=np.float64),
-                                np.asarray(h_km, dtype=np.float64))
-    phi = np.zeros(th.shape)
-    psi = np.zeros(th.shape)
-    st = np.zeros(th.shape, dtype=np.int32)
+    """oi_earthshine per element (one oi_earthshine_batch call): (phi, psi,
+    status) arrays of the broadcast shape of theta and h_km."""
+    try:
+        th, h = np.broadcast_arrays(_floats(theta, "theta"), _floats(h_km, "h_km"))
+    except ValueError as e:
+        raise ValueError(f"theta, h_km: shapes do not broadcast ({e})") from None
+    shape = th.shape
+    th = np.ascontiguousarray(th).ravel()
+    h = np.ascontiguousarray(h).ravel()
+    phi = np.empty(th.size)  # the batch writes every element
+    psi = np.empty(th.size)
+    st = np.empty(th.size, dtype=np.intc)
     m = _model(model)
-    mp = _mptr(m)
-    a, b = ctypes.c_double(), ctypes.c_double()
-    for idx in np.ndindex(th.shape):
-        st[idx] = _lib.oi_earthshine(float(th[idx]), float(h[idx]), mp, ctypes.byref(a),
-                                     ctypes.byref(b))
-        phi[idx], psi[idx] = a.value, b.value
-    return phi, psi, st
+    bst = _lib.oi_earthshine_batch(th.size, th.ctypes.data, h.ctypes.data, _mptr(m),
+                                   phi.ctypes.data, psi.ctypes.data, st.ctypes.data)
+    _batch_status(bst, th.size, "model")
+    return phi.reshape(shape), psi.reshape(shape), st.reshape(shape)
 
 
 def _elementwise(fn, x):

@@ -82,6 +82,11 @@ OI_FLAG_PENUMBRA = 32
 OI_FLAG_OCCULTED = 64
 OI_FLAG_RESOLVED = 128
 OI_FLAG_MOON_SHADOW = 256
+OI_BATCH_MAX = 1073741824
+OI_BATCH_FRACTION_LD = 1
+OI_BATCH_ATMOSPHERE = 2
+OI_BATCH_GEOMETRY = 4
+OI_BATCH_ALL = OI_BATCH_FRACTION_LD | OI_BATCH_ATMOSPHERE | OI_BATCH_GEOMETRY
 
 # ---- include/oi_table.h
 OI_TABLE_FORMAT = 4
@@ -236,6 +241,15 @@ _PROTOS = {
     "oi_flag_name": (c_char_p, [c_uint]),
     "oi_expose": (c_int, [c_void_p, c_void_p, c_void_p, c_void_p]),
     "oi_expose_scene": (c_int, [c_void_p, c_void_p, c_void_p, c_void_p, c_void_p, c_void_p]),
+    "oi_sun_fraction_batch": (c_int, [ctypes.c_long, c_void_p, c_void_p, c_void_p, c_uint,
+                                      c_void_p, c_void_p]),
+    "oi_earthshine_batch": (c_int, [ctypes.c_long, c_void_p, c_void_p, c_void_p, c_void_p,
+                                    c_void_p, c_void_p]),
+    "oi_illuminate_batch": (c_int, [ctypes.c_long, c_void_p, c_void_p, c_void_p, c_void_p]),
+    "oi_expose_batch": (c_int, [ctypes.c_long, c_void_p, c_void_p, c_void_p, c_void_p,
+                                c_void_p]),
+    "oi_expose_scene_batch": (c_int, [ctypes.c_long, c_void_p, c_void_p, c_void_p, c_void_p,
+                                      c_void_p, c_void_p, c_void_p]),
 }
 
 

@@ -187,3 +187,57 @@ def test_short_tle_line_and_old_elements(tmp_path):
     t = S.times_utc("2006-08-01T00:00:00", "2006-08-01T00:01:00", 60.0)
     with pytest.warns(UserWarning, match="35 days from the element epoch"):
         S.propagate_gcrs(sat, t, "x")
+
+
+def _plan_at(day, tmp_path, capsys):
+    """The CLI on mean elements whose epoch is `day`, for two minutes from it:
+    (return code, rows, stderr)."""
+    from examples.scenarios.__main__ import main
+    iso = day.strftime("%Y-%m-%dT%H:%M")
+    stop = (day + __import__("datetime").timedelta(minutes=2)).strftime("%Y-%m-%dT%H:%M")
+    out = tmp_path / f"{iso[:10]}.csv"
+    el = f"epoch={iso},a_km=6878,ecc=0.001,incl_deg=51.6,raan_deg=10,argp_deg=0,mo_deg=0"
+    rc = main(["--target-elements", el, "--start", iso, "--stop", stop, "--step", "60",
+               "-o", str(out)])
+    return rc, list(csv.DictReader(out.open())) if rc == 0 else [], capsys.readouterr().err
+
+
+@pytest.mark.parametrize("days_ahead", [0, 365])
+def test_plans_today_and_a_year_ahead(days_ahead, tmp_path, capsys):
+    """Any date plans offline: beyond the shipped Earth-orientation data with
+    the documented warning (predictions, then degraded accuracy), never a
+    traceback; the target stays on its orbit's radius (two-body, 0.5 %)."""
+    import datetime
+    day = datetime.datetime.now(datetime.timezone.utc).replace(second=0, microsecond=0)
+    day = day + datetime.timedelta(days=days_ahead)
+    rc, rows, err = _plan_at(day, tmp_path, capsys)
+    assert rc == 0, err
+    assert len(rows) == 3
+    for r in rows:
+        rad = math.sqrt(sum(float(r[f"target_{a}"]) ** 2 for a in "xyz"))
+        assert abs(rad / 6878.0 - 1) < 5e-3
+        sun = math.sqrt(sum(float(r[f"sun_{a}"]) ** 2 for a in "xyz"))
+        assert abs(sun / AU - 1) < 0.02
+    measured_end, predicted_end = S.earth_orientation_span()
+    mjd = (day - datetime.datetime(1858, 11, 17, tzinfo=datetime.timezone.utc)).days
+    if mjd > predicted_end:
+        assert "degraded accuracy" in err
+    elif mjd > measured_end:
+        assert "IERS predictions used" in err
+    assert "Traceback" not in err
+
+
+@pytest.mark.parametrize("args, message", [
+    (["--case", "leo-inspector", "--target-tle", "x.tle"], "not both"),
+    (["--case", "leo-inspector", "--camera", "hubble"], "not a built-in camera"),
+    (["--case", "leo-inspector", "--earth-albedo", "1.5"], "albedo is in"),
+    (["--case", "leo-inspector", "--target-albedo", "-0.1"], "albedo is in"),
+    (["--case", "leo-inspector", "--step", "0"], "step is > 0"),
+    (["--case", "leo-inspector", "-o", "/no/such/folder/x.csv"], "does not exist"),
+])
+def test_cli_refuses_bad_arguments_before_writing(args, message, capsys):
+    from examples.scenarios.__main__ import main
+    with pytest.raises(SystemExit) as e:
+        main(args)
+    assert e.value.code == 2
+    assert message in capsys.readouterr().err

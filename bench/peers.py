@@ -1,0 +1,109 @@
+# SPDX-License-Identifier: MIT
+"""peers.py: the planar peers of oi_sun_fraction, timed in the same run as the
+runtime (make bench, bench/run_bench.py).
+
+numpy Montenbruck & Gill: the conical shadow of Montenbruck, O. & Gill, E.
+2000, Satellite Orbits, Springer, sec. 3.4.2 (eq. 3.85-3.87), written over
+numpy arrays: apparent radii a = asin(R_sun / |s - r|), b = asin(R_E / |r|),
+separation c = acos(-r . (s - r) / (|r| |s - r|)); lit when c >= a + b,
+umbra when c <= b - a, else the planar two-circle overlap
+A = a^2 acos(x / a) + b^2 acos((c - x) / b) - c y, x = (c^2 + a^2 - b^2) / (2 c),
+y = sqrt(a^2 - x^2), fraction 1 - A / (pi a^2). The annular case (c < a - b)
+does not occur at the benchmark's distances.
+
+Orekit and Basilisk are not installable from the package registries this
+repository's lock file draws on (Orekit needs a JVM and its Python wrapper
+from conda; Basilisk builds from source): not timed here.
+"""
+import time
+
+import numpy as np
+
+R_SUN_KM = 695700.0
+R_EARTH_KM = 6378.137
+
+
+def mg_fraction(sun, r):
+    """Visible fraction of the Sun, Montenbruck & Gill's conical model;
+    sun, r: (n, 3) arrays (km). Returns (n,) fractions."""
+    rel = sun - r
+    d_rel = np.sqrt(np.einsum("ij,ij->i", rel, rel))
+    d_r = np.sqrt(np.einsum("ij,ij->i", r, r))
+    a = np.arcsin(R_SUN_KM / d_rel)
+    b = np.arcsin(R_EARTH_KM / d_r)
+    c = np.arccos(np.clip(-np.einsum("ij,ij->i", r, rel) / (d_r * d_rel), -1.0, 1.0))
+    x = (c * c + a * a - b * b) / (2.0 * c)
+    y = np.sqrt(np.maximum(a * a - x * x, 0.0))
+    area = (a * a * np.arccos(np.clip(x / a, -1.0, 1.0))
+            + b * b * np.arccos(np.clip((c - x) / b, -1.0, 1.0)) - c * y)
+    frac = 1.0 - area / (np.pi * a * a)
+    return np.where(c >= a + b, 1.0, np.where(c <= b - a, 0.0, frac))
+
+
+def time_pair(f, g, n, reps=15):
+    """Median wall time per point (ns) of f() and of g(), their calls
+    interleaved so that the machine's load falls on both alike."""
+    tf, tg = [], []
+    for _ in range(reps):
+        for fn, ts in ((f, tf), (g, tg)):
+            t0 = time.perf_counter()
+            fn()
+            ts.append(time.perf_counter() - t0)
+    tf.sort()
+    tg.sort()
+    return tf[reps // 2] * 1e9 / n, tg[reps // 2] * 1e9 / n
+
+
+def run(points, out, n=100000):
+    """points: rows (light, sun[3], target[3], orbillum fraction) from
+    `bench points`; the mix tiled to n points. Puts the peer's ns per point,
+    its largest difference from orbillum's exact fraction, and its cost over
+    oi_sun_fraction_batch's (outputs mask 0) on the same n points, the two
+    timed in turn in this process (through the binding's library): the
+    ratio the goal reads. Also over the in-cache medians of bench/bench.c."""
+    sun = np.array([p[1] for p in points], dtype=float)
+    r = np.array([p[2] for p in points], dtype=float)
+    ours = np.array([p[3] for p in points], dtype=float)
+    diff = float(np.abs(mg_fraction(sun, r) - ours).max())
+    k = -(-n // len(points))
+    sun_n = np.ascontiguousarray(np.tile(sun, (k, 1))[:n])
+    r_n = np.ascontiguousarray(np.tile(r, (k, 1))[:n])
+    out.put("peer.numpy_mg.sun_fraction.max_diff_vs_orbillum", "%.2g" % diff, "1",
+            "|M&G - oi_sun_fraction| over the mix (the planar approximation)")
+    try:
+        import orbillum
+    except Exception as e:  # the binding is built by `make binding`
+        out.put("peer.numpy_mg.same_rows", "unavailable", "-", "import orbillum: %s" % e)
+        return
+    lib, L = orbillum._lib, orbillum.L
+    sh = np.empty(n, dtype=np.dtype(L.oi_shadow))
+    st = np.empty(n, dtype=np.intc)
+
+    def ours_batch():
+        lib.oi_sun_fraction_batch(n, sun_n.ctypes.data, r_n.ctypes.data, None, 0,
+                                  sh.ctypes.data, st.ctypes.data)
+
+    ns_peer, ns_ours = time_pair(lambda: mg_fraction(sun_n, r_n), ours_batch, n)
+    out.put("peer.numpy_mg.sun_fraction.ns_per_point", "%.1f" % ns_peer, "ns",
+            "numpy Montenbruck & Gill conical (planar), %d points, median of 15 calls" % n)
+    out.put("peer.orbillum.sun_fraction_batch.ns_per_point", "%.1f" % ns_ours, "ns",
+            "oi_sun_fraction_batch, outputs mask 0, the same %d points, calls interleaved" % n)
+    out.put("peer.numpy_mg.over.sun_fraction_batch_same_rows", "%.2f" % (ns_peer / ns_ours), "x",
+            "peer ns / orbillum ns on the same points (a third in the penumbra); > 1: "
+            "orbillum faster")
+    # the same without the penumbra third (a catalogue's epochs are almost all lit or
+    # in the umbra: the penumbra lasts seconds of an orbit)
+    keep = np.array([p[0] != "penumbra" for p in points])
+    k2 = -(-n // int(keep.sum()))
+    sun_n[:] = np.tile(sun[keep], (k2, 1))[:n]
+    r_n[:] = np.tile(r[keep], (k2, 1))[:n]
+    ns_peer2, ns_ours2 = time_pair(lambda: mg_fraction(sun_n, r_n), ours_batch, n)
+    out.put("peer.numpy_mg.over.sun_fraction_batch_lit_umbra", "%.2f" % (ns_peer2 / ns_ours2),
+            "x", "the same on the lit and umbra points only: peer %.1f ns, orbillum %.1f ns"
+            % (ns_peer2, ns_ours2))
+    for cfg in ("sun_fraction_batch", "sun_fraction"):
+        d = out.data.get("bench.double.%s.ns_median" % cfg)
+        if d:
+            out.put("peer.numpy_mg.over.%s_in_cache" % cfg, "%.2f" % (ns_peer / float(d["value"])),
+                    "x", "peer ns / bench.c's in-cache median over the 72-scene mix (another "
+                    "harness: indicative only)")

@@ -1,0 +1,334 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * batch.c: the batch calls, the single calls over caller-owned arrays with
+ * the model (and the camera) validated once per batch (include/orbillum.h,
+ * "batch"). Each row goes through the same internal function the single
+ * call uses, so its outputs are the single call's bits; the savings are the
+ * model's validation per row and, in oi_sun_fraction_batch, what the
+ * outputs mask leaves out.
+ */
+#include "oi_internal.h"
+
+/* Alignment of a type in C99 (no _Alignof): the offset of a member after a
+ * char. */
+#define ALIGN_OF(type) offsetof(struct { char c; type t; }, t)
+
+/* A caller's array: its address range, for the alignment and overlap checks. */
+typedef struct {
+    uintptr_t lo, hi; /* [lo, hi); lo == hi: absent (NULL, optional) */
+} span;
+
+/* The span of n elements of size bytes at p; 0 when p is not aligned to
+ * align or the size overflows the address space. */
+static int span_of(const void *p, long n, size_t size, size_t align, span *s)
+{
+    const uintptr_t a = (uintptr_t)p;
+    s->lo = s->hi = a;
+    if (p == NULL) return 1;
+    if (a % align != 0) return 0;
+    if ((uintptr_t)n > (UINTPTR_MAX - a) / size) return 0;
+    s->hi = a + (uintptr_t)n * size;
+    return 1;
+}
+
+static int spans_overlap(const span *a, const span *b)
+{
+    return a->lo < a->hi && b->lo < b->hi && a->lo < b->hi && b->lo < a->hi;
+}
+
+/* OI_OK when no output span overlaps an input span or another output span;
+ * else OI_ERR_INPUT. */
+static int check_overlap(const span *in, int n_in, const span *out, int n_out)
+{
+    int i, j;
+    for (i = 0; i < n_out; i++) {
+        for (j = 0; j < n_in; j++)
+            if (spans_overlap(&out[i], &in[j])) return OI_ERR_INPUT;
+        for (j = i + 1; j < n_out; j++)
+            if (spans_overlap(&out[i], &out[j])) return OI_ERR_INPUT;
+    }
+    return OI_OK;
+}
+
+/* The checks common to every batch: n, the required pointers. */
+static int check_n(long n)
+{
+    if (n < 0 || n > OI_BATCH_MAX) return OI_ERR_INPUT;
+    return OI_OK;
+}
+
+/* A batch error: every status set to it, every output row zeroed (when the
+ * arrays could be used: not NULL, aligned; not on overlap, where zeroing
+ * would write into the inputs). */
+static int batch_fail(int st, long n, int *status, void *out, size_t size, int zero_out)
+{
+    long i;
+    span s;
+    if (status != NULL && span_of(status, n, sizeof *status, ALIGN_OF(int), &s))
+        for (i = 0; i < n; i++) status[i] = st;
+    if (zero_out && out != NULL) memset(out, 0, (size_t)n * size);
+    return st;
+}
+
+/* ---------------------------------------------------------------- Sun */
+
+/* Margin, in cosine, of the batch's certain-region tests: far beyond the
+ * rounding of the cosines and of the arctangents the full call forms
+ * (a few epsilon). */
+#ifdef OI_SINGLE_PRECISION
+#define COS_MARGIN OI_R(1e-5)
+#else
+#define COS_MARGIN OI_R(1e-6)
+#endif
+
+/* Height above the surface every grazing ray stays below (twice
+ * OI_ATM_TOP_MAX_KM), as in src/illuminate.c. */
+#define GRAZING_TOP_KM OI_R(200.0)
+
+#define ROW_UNSURE (0)
+#define ROW_LIT (1)
+#define ROW_UMBRA (2)
+
+/*
+ * ROW_LIT or ROW_UMBRA when the row certainly is in that region, decided
+ * from cosines alone; ROW_UNSURE otherwise (the full call follows). A row is
+ * decided only when every check of the full call's geometry (sun_geometry in
+ * src/sun_fraction.c) passes, formed the same way, so its status is OI_OK:
+ * finite, |point| > 1.001 R (|point|^2 - R^2 >= 0.002 R^2, far beyond the
+ * rounding of the full call's compensated form: not below the surface),
+ * |sun| > R_sun + R, sun - point finite, |sun - point| > R_sun. Both
+ * apparent radii are below pi/2 (sines below 1), so their sum is below pi
+ * and the comparison of cosines is the comparison of angles. LIT: the angle between the
+ * Sun's centre and the Earth's anti-centre exceeds the sum of the radii of
+ * the Sun and of the Earth enlarged by GRAZING_TOP_KM (outside the
+ * atmosphere's window too: its fraction is then 1, src/illuminate.c's
+ * certainly_lit). UMBRA (only asked without the atmosphere, which lights
+ * the umbra): the Sun's disc inside the Earth's, sep + r_sun < r_earth.
+ */
+static int certain_region(const oi_real sun[3], const oi_real p[3], const oi_model *m,
+                          int umbra_too)
+{
+    oi_real ds, dp, dsp, rel[3], sin_e, sin_s, cos_e, cos_s, cos_sep, sin_sep, sin_r, cos_r;
+    if (!oi__finite3(sun) || !oi__finite3(p)) return ROW_UNSURE;
+    ds = oi__norm(sun);
+    dp = oi__norm(p);
+    if (!(dp > OI_R(1.001) * m->earth_radius_km) || !OI_ISFINITE(dp)) return ROW_UNSURE;
+    if (!(ds > m->sun_radius_km + m->earth_radius_km)) return ROW_UNSURE;
+    oi__sub(sun, p, rel);
+    if (!oi__finite3(rel)) return ROW_UNSURE;
+    dsp = oi__norm(rel);
+    if (!OI_ISFINITE(dsp) || !(dsp > m->sun_radius_km)) return ROW_UNSURE;
+    /* the Earth behind the Sun is LIT in the full call too, but rare: left to it */
+    sin_s = m->sun_radius_km / dsp;
+    if (!(sin_s < (oi_real)1)) return ROW_UNSURE;
+    cos_s = OI_SQRT(((oi_real)1 - sin_s) * ((oi_real)1 + sin_s));
+    cos_sep = -oi__dot(rel, p) / dsp / dp;
+    if (!OI_ISFINITE(cos_sep)) return ROW_UNSURE;
+    sin_e = (m->earth_radius_km + GRAZING_TOP_KM) / dp;
+    if (sin_e < (oi_real)1) {
+        cos_e = OI_SQRT(((oi_real)1 - sin_e) * ((oi_real)1 + sin_e));
+        if (cos_sep < cos_e * cos_s - sin_e * sin_s - COS_MARGIN) return ROW_LIT;
+    }
+    if (!umbra_too) return ROW_UNSURE;
+    /* cos(sep + r_sun) > cos(r_earth) + margin: sep + r_sun < r_earth <= pi/2 */
+    sin_r = m->earth_radius_km / dp;
+    cos_r = OI_SQRT(((oi_real)1 - sin_r) * ((oi_real)1 + sin_r));
+    sin_sep = OI_SQRT(oi__clamp(((oi_real)1 - cos_sep) * ((oi_real)1 + cos_sep), (oi_real)0,
+                                (oi_real)1));
+    if (cos_sep > (oi_real)0 && cos_sep * cos_s - sin_sep * sin_s > cos_r + COS_MARGIN)
+        return ROW_UMBRA;
+    return ROW_UNSURE;
+}
+
+static int sun_row(const oi_real sun[3], const oi_real p[3], const oi_model *m,
+                   unsigned outputs, oi_shadow *out)
+{
+    unsigned want = 0;
+    int st;
+    if (!(outputs & OI_BATCH_GEOMETRY)) {
+        int atm_on = 0;
+#ifndef OI_NO_ATMOSPHERE
+        atm_on = (outputs & OI_BATCH_ATMOSPHERE) && !m->no_atmosphere;
+#endif
+        st = certain_region(sun, p, m, !atm_on);
+        if (st != ROW_UNSURE) {
+            const oi_real f = st == ROW_LIT ? (oi_real)1 : (oi_real)0;
+            memset(out, 0, sizeof *out);
+            out->fraction = f;
+            if (outputs & OI_BATCH_FRACTION_LD) out->fraction_ld = f;
+            if (outputs & OI_BATCH_ATMOSPHERE) out->fraction_atm = f;
+            out->region = st == ROW_LIT ? OI_SHADOW_LIT : OI_SHADOW_UMBRA;
+            return OI_OK;
+        }
+    }
+    if (outputs & OI_BATCH_FRACTION_LD) want |= OI__WANT_LD;
+    if (outputs & OI_BATCH_ATMOSPHERE) want |= OI__WANT_ATM;
+    st = oi__sun_shadow_want(sun, p, m, want, out, NULL);
+    if (!(outputs & OI_BATCH_FRACTION_LD)) out->fraction_ld = (oi_real)0;
+    if (!(outputs & OI_BATCH_GEOMETRY)) {
+        out->sun_radius_rad = out->earth_radius_rad = (oi_real)0;
+        out->separation_rad = out->sun_distance_km = (oi_real)0;
+    }
+    return st;
+}
+
+int oi_sun_fraction_batch(long n, const oi_real *sun_km, const oi_real *point_km,
+                          const oi_model *model, unsigned outputs, oi_shadow *out,
+                          int *status)
+{
+    oi_model m;
+    span in[2], o[2];
+    long i, bad = 0;
+    int st;
+    if (n == 0) return 0;
+    if (check_n(n) != OI_OK) return OI_ERR_INPUT; /* nothing written: n is not the arrays' */
+    st = OI_OK;
+    if (st == OI_OK && (sun_km == NULL || point_km == NULL || out == NULL || status == NULL))
+        st = OI_ERR_NULL;
+    if (st != OI_OK) return batch_fail(st, n, status, NULL, 0, 0);
+    if (!span_of(sun_km, n, 3 * sizeof *sun_km, ALIGN_OF(oi_real), &in[0]) ||
+        !span_of(point_km, n, 3 * sizeof *point_km, ALIGN_OF(oi_real), &in[1]) ||
+        !span_of(out, n, sizeof *out, ALIGN_OF(oi_shadow), &o[0]) ||
+        !span_of(status, n, sizeof *status, ALIGN_OF(int), &o[1]) ||
+        check_overlap(in, 2, o, 2) != OI_OK)
+        return batch_fail(OI_ERR_INPUT, n, status, NULL, 0, 0);
+    st = outputs & ~(unsigned)OI_BATCH_ALL ? OI_ERR_FLAGS : oi__model_resolve(model, &m);
+    if (st < 0) return batch_fail(st, n, status, out, sizeof *out, 1);
+    for (i = 0; i < n; i++) {
+        status[i] = sun_row(sun_km + 3 * i, point_km + 3 * i, &m, outputs, &out[i]);
+        bad += status[i] < 0;
+    }
+    return (int)bad;
+}
+
+/* ---------------------------------------------------------------- earthshine */
+
+int oi_earthshine_batch(long n, const oi_real *theta, const oi_real *h_km,
+                        const oi_model *model, oi_real *phi, oi_real *psi, int *status)
+{
+    oi_model m;
+    span in[2], o[3];
+    oi_real psi_row;
+    long i, bad = 0;
+    int st;
+    if (n == 0) return 0;
+    if (check_n(n) != OI_OK) return OI_ERR_INPUT; /* nothing written: n is not the arrays' */
+    st = OI_OK;
+    if (st == OI_OK && (theta == NULL || h_km == NULL || phi == NULL || status == NULL))
+        st = OI_ERR_NULL;
+    if (st != OI_OK) return batch_fail(st, n, status, NULL, 0, 0);
+    if (!span_of(theta, n, sizeof *theta, ALIGN_OF(oi_real), &in[0]) ||
+        !span_of(h_km, n, sizeof *h_km, ALIGN_OF(oi_real), &in[1]) ||
+        !span_of(phi, n, sizeof *phi, ALIGN_OF(oi_real), &o[0]) ||
+        !span_of(psi, n, sizeof *psi, ALIGN_OF(oi_real), &o[1]) ||
+        !span_of(status, n, sizeof *status, ALIGN_OF(int), &o[2]) ||
+        check_overlap(in, 2, o, 3) != OI_OK)
+        return batch_fail(OI_ERR_INPUT, n, status, NULL, 0, 0);
+    st = oi__model_resolve(model, &m);
+    if (st < 0) {
+        if (psi != NULL) memset(psi, 0, (size_t)n * sizeof *psi);
+        return batch_fail(st, n, status, phi, sizeof *phi, 1);
+    }
+    for (i = 0; i < n; i++) {
+        /* oi_earthshine's own checks: NULL outputs are excluded above */
+        status[i] = oi__earthshine(theta[i], (oi_real)2, (oi_real)0, h_km[i], &m, &phi[i],
+                                   &psi_row);
+        if (psi != NULL) psi[i] = psi_row;
+        bad += status[i] < 0;
+    }
+    return (int)bad;
+}
+
+/* ---------------------------------------------------------------- illuminate */
+
+int oi_illuminate_batch(long n, const oi_scene *scenes, const oi_model *model, oi_illum *out,
+                        int *status)
+{
+    oi_model m;
+    span in[1], o[2];
+    long i, bad = 0;
+    int st;
+    if (n == 0) return 0;
+    if (check_n(n) != OI_OK) return OI_ERR_INPUT; /* nothing written: n is not the arrays' */
+    st = OI_OK;
+    if (st == OI_OK && (scenes == NULL || out == NULL || status == NULL)) st = OI_ERR_NULL;
+    if (st != OI_OK) return batch_fail(st, n, status, NULL, 0, 0);
+    if (!span_of(scenes, n, sizeof *scenes, ALIGN_OF(oi_scene), &in[0]) ||
+        !span_of(out, n, sizeof *out, ALIGN_OF(oi_illum), &o[0]) ||
+        !span_of(status, n, sizeof *status, ALIGN_OF(int), &o[1]) ||
+        check_overlap(in, 1, o, 2) != OI_OK)
+        return batch_fail(OI_ERR_INPUT, n, status, NULL, 0, 0);
+    st = oi__model_resolve(model, &m);
+    if (st < 0) return batch_fail(st, n, status, out, sizeof *out, 1);
+    for (i = 0; i < n; i++) {
+        status[i] = oi__illuminate_resolved(&scenes[i], &m, &out[i]);
+        bad += status[i] < 0;
+    }
+    return (int)bad;
+}
+
+/* ---------------------------------------------------------------- exposure */
+#ifndef OI_NO_EXPOSURE
+
+int oi_expose_batch(long n, const oi_camera *camera, const oi_expose_in *in,
+                    const oi_expose_goal *goal, oi_exposure *out, int *status)
+{
+    span si[1], o[2];
+    long i, bad = 0;
+    int st;
+    if (n == 0) return 0;
+    if (check_n(n) != OI_OK) return OI_ERR_INPUT; /* nothing written: n is not the arrays' */
+    st = OI_OK;
+    if (st == OI_OK && (camera == NULL || in == NULL || out == NULL || status == NULL))
+        st = OI_ERR_NULL;
+    if (st != OI_OK) return batch_fail(st, n, status, NULL, 0, 0);
+    if (!span_of(in, n, sizeof *in, ALIGN_OF(oi_expose_in), &si[0]) ||
+        !span_of(out, n, sizeof *out, ALIGN_OF(oi_exposure), &o[0]) ||
+        !span_of(status, n, sizeof *status, ALIGN_OF(int), &o[1]) ||
+        check_overlap(si, 1, o, 2) != OI_OK)
+        return batch_fail(OI_ERR_INPUT, n, status, NULL, 0, 0);
+    if (!oi__camera_valid(camera)) return batch_fail(OI_ERR_CAMERA, n, status, out, sizeof *out, 1);
+    for (i = 0; i < n; i++) {
+        memset(&out[i], 0, sizeof out[i]);
+        status[i] = oi__expose_valid(camera, &in[i], goal, &out[i]);
+        if (status[i] < 0) memset(&out[i], 0, sizeof out[i]);
+        bad += status[i] < 0;
+    }
+    return (int)bad;
+}
+
+int oi_expose_scene_batch(long n, const oi_camera *camera, const oi_scene *scenes,
+                          const oi_illum *illum, const oi_model *model,
+                          const oi_expose_goal *goal, oi_exposure *out, int *status)
+{
+    span in[2], o[2];
+    oi_model m;
+    long i, bad = 0;
+    int st;
+    if (n == 0) return 0;
+    if (check_n(n) != OI_OK) return OI_ERR_INPUT; /* nothing written: n is not the arrays' */
+    st = OI_OK;
+    if (st == OI_OK &&
+        (camera == NULL || scenes == NULL || illum == NULL || out == NULL || status == NULL))
+        st = OI_ERR_NULL;
+    if (st != OI_OK) return batch_fail(st, n, status, NULL, 0, 0);
+    if (!span_of(scenes, n, sizeof *scenes, ALIGN_OF(oi_scene), &in[0]) ||
+        !span_of(illum, n, sizeof *illum, ALIGN_OF(oi_illum), &in[1]) ||
+        !span_of(out, n, sizeof *out, ALIGN_OF(oi_exposure), &o[0]) ||
+        !span_of(status, n, sizeof *status, ALIGN_OF(int), &o[1]) ||
+        check_overlap(in, 2, o, 2) != OI_OK)
+        return batch_fail(OI_ERR_INPUT, n, status, NULL, 0, 0);
+    /* the batch's errors: the model, then the camera (a row's own checks
+     * come before the camera's in the single call, so a valid model and
+     * camera are the batch's condition, the rows' statuses the single call's) */
+    st = oi__model_resolve(model, &m);
+    if (st == OI_OK && !oi__camera_valid(camera)) st = OI_ERR_CAMERA;
+    if (st < 0) return batch_fail(st, n, status, out, sizeof *out, 1);
+    for (i = 0; i < n; i++) {
+        status[i] = oi_expose_scene(camera, &scenes[i], &illum[i], model, goal, &out[i]);
+        bad += status[i] < 0;
+    }
+    return (int)bad;
+}
+
+#endif /* OI_NO_EXPOSURE */
