@@ -14,6 +14,9 @@
  *   OI_NO_ATMOSPHERE     no refraction into the shadow (sun_fraction_atm equals
  *                        sun_fraction): the atmosphere's code and its default
  *                        table are removed.
+ *   OI_NO_SKY            no zodiacal light: removes oi_zodiacal_radiance, its
+ *                        table (src/zodiacal.c) and OI_SKY_ZODIACAL (a goal
+ *                        with that bit gets OI_ERR_FLAGS).
  *   OI_NO_LIMB_DARKENING no limb-darkened solar disc: removes its integral
  *                        (src/limb_darkening.c); oi_shadow.fraction_ld equals
  *                        fraction (the uniform disc), and a model with
@@ -67,6 +70,7 @@ typedef double oi_real;
 #define oi_flag_name oi_flag_name_sp
 #define oi_expose oi_expose_sp
 #define oi_expose_scene oi_expose_scene_sp
+#define oi_zodiacal_radiance oi_zodiacal_radiance_sp
 #endif
 
 #endif /* OI_CONFIG_H */

@@ -321,6 +321,27 @@ int oi_earthshine(oi_real theta, oi_real h_km, const oi_model *model,
 oi_real oi_moon_phase_law(oi_real alpha);
 #endif
 
+/* ---------------------------------------------------------------- sky */
+#ifndef OI_NO_SKY
+/*
+ * oi_zodiacal_radiance: radiance of the zodiacal light seen from the Earth
+ * (W/m^2/sr, as sunlight over the whole spectrum, the convention of
+ * oi_expose_in.background_w_m2_sr) in the direction at ecliptic longitude
+ * dlambda_rad from the Sun's and ecliptic latitude beta_rad.
+ * Given:   dlambda_rad  any finite value (taken modulo 2 pi; the sign does
+ *                       not matter); beta_rad: the sign does not matter,
+ *                       |beta| above pi/2 is taken as pi/2
+ * Returns: the radiance; 0 for a non-finite argument.
+ * Notes:   Leinert et al. 1998 (A&AS 127, 1), Table 17 at 500 nm, bilinear
+ *          between its nodes, converted to a whole-spectrum radiance with
+ *          the 5772 K solar spectrum (7.635e-9 W/m^2/sr per table unit).
+ *          The table has no entries within ~15 deg of the Sun: those cells
+ *          hold the nearest tabulated value of their latitude (a lower
+ *          bound). src/zodiacal.c, docs/camera.md.
+ */
+oi_real oi_zodiacal_radiance(oi_real dlambda_rad, oi_real beta_rad);
+#endif
+
 /* ---------------------------------------------------------------- scene */
 
 typedef struct oi_scene {
@@ -464,16 +485,26 @@ const oi_camera *oi_camera_find(const char *name);
 #define OI_FLAG_PENUMBRA      (32u)  /* target in the penumbra */
 #define OI_FLAG_OCCULTED      (64u)  /* the Earth hides the target from the observer */
 #define OI_FLAG_RESOLVED      (128u) /* target wider than a pixel: peak limited by its radiance */
+#define OI_FLAG_MOON_IN_FOV   (256u) /* the Moon's disc in the field (oi_expose_goal.sky OI_SKY_MOON) */
 
 /* oi_flag_name: name of one flag bit ("sun_exclusion", "earth_in_fov",
  * "eclipsed", "too_faint", "saturated", "penumbra", "occulted", "resolved");
  * NULL for 0, several bits or an unknown bit. */
 const char *oi_flag_name(unsigned flag_bit);
 
+/* Sky backgrounds oi_expose_scene adds behind the target (oi_expose_goal.sky,
+ * a bit mask; 0: the dark sky, with the sunlit Earth only, of earlier
+ * versions). docs/camera.md, "Sky background". */
+#ifndef OI_NO_SKY
+#define OI_SKY_ZODIACAL (1u)  /* zodiacal light (Leinert et al. 1998), where the ray misses Earth and Moon */
+#endif
+#define OI_SKY_MOON     (2u)  /* the Moon: OI_FLAG_MOON_IN_FOV, its surface behind the target, occultation */
+
 /* Goals of the exposure choice. Zero fields mean defaults. */
 typedef struct oi_expose_goal {
     oi_real fill;            /* brightest-pixel fill as a fraction of saturation (0.5) */
     oi_real snr_min;         /* SNR below which TOO_FAINT is raised (5) */
+    unsigned sky;            /* OI_SKY_* backgrounds oi_expose_scene adds (0: none) */
 } oi_expose_goal;
 
 /* Photometric input of the exposure choice. */
@@ -496,6 +527,7 @@ typedef struct oi_exposure {
     oi_real snr;             /* signal / noise of the brightest pixel */
     oi_real sun_angle_rad;   /* Sun to boresight (oi_expose_scene only) */
     unsigned flags;          /* OI_FLAG_* */
+    oi_real background_w_m2_sr; /* radiance behind the target used (W/m^2/sr) */
 } oi_exposure;
 
 /*

@@ -21,7 +21,8 @@
 /* Flags that describe the geometry (kept from the input); the others are
  * computed here. */
 #define FLAGS_GEOMETRIC (OI_FLAG_SUN_EXCLUSION | OI_FLAG_EARTH_IN_FOV | OI_FLAG_ECLIPSED | \
-                         OI_FLAG_PENUMBRA | OI_FLAG_OCCULTED | OI_FLAG_RESOLVED)
+                         OI_FLAG_PENUMBRA | OI_FLAG_OCCULTED | OI_FLAG_RESOLVED | \
+                         OI_FLAG_MOON_IN_FOV)
 #define FLAGS_ALL (FLAGS_GEOMETRIC | OI_FLAG_TOO_FAINT | OI_FLAG_SATURATED)
 
 /* Brightest accepted target flux (W/m^2): magnitude OI_MAG_MIN at the
@@ -66,6 +67,13 @@ typedef struct {
     oi_real snr_min;    /* goal SNR, defaults filled in */
 } expose_rates;
 
+/* The sky backgrounds this build knows (oi_expose_goal.sky). */
+#ifndef OI_NO_SKY
+#define SKY_ALL (OI_SKY_ZODIACAL | OI_SKY_MOON)
+#else
+#define SKY_ALL (OI_SKY_MOON)
+#endif
+
 /* Goal with defaults filled in; 0 when a field is out of range. */
 static int goal_resolve(const oi_expose_goal *goal, oi_real *fill, oi_real *snr_min)
 {
@@ -84,12 +92,13 @@ static int goal_resolve(const oi_expose_goal *goal, oi_real *fill, oi_real *snr_
 }
 
 /* The goal and the photometric input checked, in this order: goal
- * (OI_ERR_INPUT), non-finite values (OI_ERR_NONFINITE), a negative flux
+ * (OI_ERR_INPUT), unknown sky bits (OI_ERR_FLAGS), non-finite values (OI_ERR_NONFINITE), a negative flux
  * (OI_ERR_INPUT), a flux brighter than OI_MAG_MIN (OI_ERR_MAGNITUDE), the
  * background (OI_ERR_INPUT), unknown flag bits (OI_ERR_FLAGS). */
 static int check_input(const oi_expose_in *in, const oi_expose_goal *goal, expose_rates *r)
 {
     if (!goal_resolve(goal, &r->goal_fill, &r->snr_min)) return OI_ERR_INPUT;
+    if (goal != NULL && (goal->sky & ~(unsigned)SKY_ALL) != 0u) return OI_ERR_FLAGS;
     if (!OI_ISFINITE(in->flux_w_m2) || !OI_ISFINITE(in->background_w_m2_sr)) {
         return OI_ERR_NONFINITE;
     }
@@ -281,6 +290,7 @@ int oi__expose_valid(const oi_camera *camera, const oi_expose_in *in,
     }
     out->flags = flags;
     out->sun_angle_rad = 0;
+    out->background_w_m2_sr = in->background_w_m2_sr;
     return OI_OK;
 }
 
@@ -305,7 +315,8 @@ int oi_expose(const oi_camera *camera, const oi_expose_in *in,
  * Returned (function value):
  *             const char *  "sun_exclusion", "earth_in_fov", "eclipsed",
  *                           "too_faint", "saturated", "penumbra",
- *                           "occulted", "resolved"; NULL for 0, a combination of bits
+ *                           "occulted", "resolved", "moon_in_fov"; NULL for 0, a
+ *                           combination of bits
  *                           or an unknown bit.
  */
 const char *oi_flag_name(unsigned flag_bit)
@@ -319,6 +330,7 @@ const char *oi_flag_name(unsigned flag_bit)
     case OI_FLAG_PENUMBRA: return "penumbra";
     case OI_FLAG_OCCULTED: return "occulted";
     case OI_FLAG_RESOLVED: return "resolved";
+    case OI_FLAG_MOON_IN_FOV: return "moon_in_fov";
     default: return NULL;
     }
 }

@@ -81,6 +81,9 @@ OI_FLAG_SATURATED = 16
 OI_FLAG_PENUMBRA = 32
 OI_FLAG_OCCULTED = 64
 OI_FLAG_RESOLVED = 128
+OI_FLAG_MOON_IN_FOV = 256
+OI_SKY_ZODIACAL = 1
+OI_SKY_MOON = 2
 
 # ---- include/oi_table.h
 OI_TABLE_FORMAT = 4
@@ -192,7 +195,7 @@ class oi_camera(ctypes.Structure):
 
 
 class oi_expose_goal(ctypes.Structure):
-    _fields_ = [("fill", real), ("snr_min", real)]
+    _fields_ = [("fill", real), ("snr_min", real), ("sky", c_uint)]
 
 
 class oi_expose_in(ctypes.Structure):
@@ -204,6 +207,7 @@ class oi_exposure(ctypes.Structure):
         ("exposure_s", real), ("gain", real), ("time_index", c_int), ("gain_index", c_int),
         ("signal_e", real), ("background_e", real), ("peak_e", real), ("saturation_e", real),
         ("fill", real), ("snr", real), ("sun_angle_rad", real), ("flags", c_uint),
+        ("background_w_m2_sr", real),
     ]
 
 
@@ -224,6 +228,7 @@ _PROTOS = {
     "oi_earth_table_default": (POINTER(oi_earth_table), []),
     "oi_atm_table_default": (POINTER(oi_atm_table), []),
     "oi_moon_phase_law": (real, [real]),
+    "oi_zodiacal_radiance": (real, [real, real]),
     "oi_scene_defaults": (None, [c_void_p]),
     "oi_illuminate": (c_int, [c_void_p, c_void_p, c_void_p]),
     "oi_magnitude_v": (real, [real, c_void_p]),
