@@ -334,7 +334,7 @@ oi_real oi_moon_phase_law(oi_real alpha);
  * Returns: the radiance; 0 for a non-finite argument.
  * Notes:   Leinert et al. 1998 (A&AS 127, 1), Table 17 at 500 nm, bilinear
  *          between its nodes, converted to a whole-spectrum radiance with
- *          the 5772 K solar spectrum (7.635e-9 W/m^2/sr per table unit).
+ *          the 5772 K solar spectrum (7.6353e-9 W/m^2/sr per table unit).
  *          The table has no entries within ~15 deg of the Sun: those cells
  *          hold the nearest tabulated value of their latitude (a lower
  *          bound). src/zodiacal.c, docs/camera.md.

@@ -294,6 +294,8 @@ int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
     if ((sky & OI_SKY_ZODIACAL) != 0u && s_earth < 0 && !moon_hit) {
         in.background_w_m2_sr = zodiacal_background(scene, &g);
     }
+#else
+    (void)moon_hit;
 #endif
     if (in.flags & OI_FLAG_OCCULTED) in.flux_w_m2 = 0;
     limit_resolved(camera, scene, illum, &in);

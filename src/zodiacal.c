@@ -51,12 +51,13 @@ static const unsigned short zl_table[ZL_ROWS][ZL_COLS] = {
 
 /* One table unit (1e-8 W m^-2 sr^-1 um^-1 at 500 nm) as the radiance of
  * sunlight over the whole spectrum (W m^-2 sr^-1): 1e-8 / s500, with s500 =
- * 1.3097 um^-1 the solar spectral irradiance at 500 nm over the total, for
+ * 1.3097021 um^-1 = pi B(500 nm) / (sigma T^4), the solar spectral irradiance at
+ * 500 nm over the total, in closed form (mpmath, 30 digits) for
  * the 5772 K Planck spectrum that gives the cameras' band fraction
  * (docs/camera.md). The zodiacal light is then treated as sunlight, as the
  * camera treats every source (grey): Leinert et al. 1998, Sect. 8, find its
  * colour solar within a moderate reddening from 0.2 to 2 um. */
-#define ZL_UNIT_W_M2_SR OI_R(7.635324128456452e-09)
+#define ZL_UNIT_W_M2_SR OI_R(7.6353241345209276e-09)
 
 /* Grid position of x (degrees, clamped to [0, top]) on nodes spaced 5 deg
  * up to knee (index knee / 5), then 15 deg up to top: the index of the cell

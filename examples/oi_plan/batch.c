@@ -25,6 +25,7 @@ enum column {
     C_MOON_X, C_MOON_Y, C_MOON_Z,
     C_OBSERVER_X, C_OBSERVER_Y, C_OBSERVER_Z,
     C_TERMS, C_EARTH_ALBEDO, C_TARGET_ALBEDO, C_TARGET_RADIUS, C_CAMERA, C_ATMOSPHERE,
+    C_SKY,
     C_COUNT
 };
 
@@ -34,7 +35,8 @@ static const char *const column_name[C_COUNT] = {
     "target_x", "target_y", "target_z",
     "moon_x", "moon_y", "moon_z",
     "observer_x", "observer_y", "observer_z",
-    "terms", "earth_albedo", "target_albedo", "target_radius_m", "camera", "atmosphere"
+    "terms", "earth_albedo", "target_albedo", "target_radius_m", "camera", "atmosphere",
+    "sky"
 };
 
 typedef struct batch {
@@ -206,6 +208,36 @@ static int parse_terms(const char *s, unsigned *terms)
     }
 }
 
+/* Parse a sky list ("zodiacal+moon", "all", "none"; empty: none) into
+ * oi_expose_goal.sky; 0 or -1. */
+static int parse_sky(const char *s, unsigned *sky)
+{
+    char tok[16];
+    const char *p = s;
+    *sky = 0;
+    while (*p == ' ' || *p == '\t') p++;
+    if (*p == '\0') return 0;
+    for (;;) {
+        size_t n = 0;
+        while (*p == ' ' || *p == '\t') p++;
+        while (*p && *p != '+' && *p != ' ' && *p != '\t') {
+            if (n + 1 >= sizeof tok) return -1;
+            tok[n++] = *p++;
+        }
+        tok[n] = '\0';
+        while (*p == ' ' || *p == '\t') p++;
+        if (same_nocase(tok, "none")) {
+            /* nothing added */
+        } else if (same_nocase(tok, "zodiacal")) *sky |= OI_SKY_ZODIACAL;
+        else if (same_nocase(tok, "moon")) *sky |= OI_SKY_MOON;
+        else if (same_nocase(tok, "all")) *sky |= OI_SKY_ZODIACAL | OI_SKY_MOON;
+        else return -1;
+        if (*p == '\0') return 0;
+        if (*p != '+') return -1;
+        p++;
+    }
+}
+
 /* Read a group of three coordinates; returns 1 given, 0 all empty or the
  * columns absent, -1 after reporting a parse error. */
 static int parse_vec(batch *b, const csv_reader *r, int k0, oi_real v[3], int required)
@@ -263,6 +295,7 @@ static int run_row(batch *b, const csv_reader *r, plan_row *row)
 {
     oi_scene sc;
     oi_model model;
+    oi_expose_goal goal;
     const oi_camera *cam = b->default_camera;
     int has_moon, st, short_row = 0;
     double x;
@@ -340,6 +373,14 @@ static int run_row(batch *b, const csv_reader *r, plan_row *row)
     }
     model.no_atmosphere = x == 0;
 
+    memset(&goal, 0, sizeof goal);
+    s = field_of(b, r, C_SKY, &short_row);
+    if (s != NULL && parse_sky(s, &goal.sky) < 0) {
+        row_error(b, r->rec_line, b->col[C_SKY],
+                  "sky must be none, zodiacal, moon or all, joined by +; got", s);
+        return 0;
+    }
+
     s = field_of(b, r, C_CAMERA, &short_row);
     if (s != NULL && s[0] != '\0') {
         cam = oi_camera_find(s);
@@ -371,7 +412,7 @@ static int run_row(batch *b, const csv_reader *r, plan_row *row)
         row->flags |= OI_FLAG_PENUMBRA;
     }
     if (sc.has_observer) {
-        int st2 = oi_expose_scene(cam, &sc, &row->illum, &model, NULL, &row->expo);
+        int st2 = oi_expose_scene(cam, &sc, &row->illum, &model, &goal, &row->expo);
         if (st2 < 0) {
             row->status = st2;
             row->status_name = oi_status_name(st2);

@@ -114,7 +114,7 @@ static void test_choice_custom_goal(void **state)
 {
     oi_camera c = synth();
     oi_expose_in in = input(1e-15, 0);
-    oi_expose_goal goal = {(oi_real)0.05, (oi_real)200};
+    oi_expose_goal goal = {(oi_real)0.05, (oi_real)200, 0u};
     oi_exposure out;
     (void)state;
     check_int(OI_OK, oi_expose(&c, &in, &goal, &out), "status");
@@ -443,7 +443,8 @@ static void test_flag_names(void **state)
     assert_string_equal(oi_flag_name(OI_FLAG_RESOLVED), "resolved");
     assert_null(oi_flag_name(0));
     assert_null(oi_flag_name(OI_FLAG_SUN_EXCLUSION | OI_FLAG_ECLIPSED));
-    assert_null(oi_flag_name(256u));
+    assert_string_equal(oi_flag_name(OI_FLAG_MOON_IN_FOV), "moon_in_fov");
+    assert_null(oi_flag_name(512u));
 }
 #endif /* OI_NO_EXPOSURE */
 
