@@ -354,6 +354,9 @@ typedef struct oi_scene {
     oi_real earth_albedo;    /* [0, 1] */
     oi_real target_albedo;   /* [0, 1] */
     oi_real target_radius_m; /* > 0 */
+    oi_real target_vel_km_s[3];   /* target velocity (km/s, the positions' frame); read by
+                                     oi_expose_scene only; zero: at rest */
+    oi_real observer_vel_km_s[3]; /* observer velocity (km/s), as target_vel_km_s */
 } oi_scene;
 
 /* oi_scene_defaults: fill a scene with the defaults: zero positions, no
@@ -465,6 +468,7 @@ typedef struct oi_camera {
     int n_gains;                /* number of gains, 1..OI_CAMERA_MAX_GAINS */
     oi_real gains[OI_CAMERA_MAX_GAINS];    /* ascending; saturation = full_well / gain */
     oi_real read_noise_e[OI_CAMERA_MAX_GAINS]; /* input-referred read noise per gain (e-) */
+    oi_real max_trail_px;       /* longest acceptable trail (pixels), [0, 1e6]; 0: no limit */
 } oi_camera;
 
 /* oi_camera_builtin: built-in camera number index (0 is the default,
@@ -486,6 +490,7 @@ const oi_camera *oi_camera_find(const char *name);
 #define OI_FLAG_OCCULTED      (64u)  /* the Earth hides the target from the observer */
 #define OI_FLAG_RESOLVED      (128u) /* target wider than a pixel: peak limited by its radiance */
 #define OI_FLAG_MOON_IN_FOV   (256u) /* the Moon's disc in the field (oi_expose_goal.sky OI_SKY_MOON) */
+#define OI_FLAG_TRAILED       (512u) /* even the chosen exposure trails beyond max_trail_px */
 
 /* oi_flag_name: name of one flag bit ("sun_exclusion", "earth_in_fov",
  * "eclipsed", "too_faint", "saturated", "penumbra", "occulted", "resolved");
@@ -512,6 +517,8 @@ typedef struct oi_expose_in {
     oi_real flux_w_m2;           /* target flux at the aperture (W/m^2) */
     oi_real background_w_m2_sr;  /* sky radiance behind the target (W/m^2/sr) */
     unsigned flags;              /* geometric flags already known (OI_FLAG_*) */
+    oi_real rate_rad_s;          /* target's angular rate across the field (rad/s, [0, 1e3]);
+                                    0: at rest */
 } oi_expose_in;
 
 typedef struct oi_exposure {
@@ -528,6 +535,9 @@ typedef struct oi_exposure {
     oi_real sun_angle_rad;   /* Sun to boresight (oi_expose_scene only) */
     unsigned flags;          /* OI_FLAG_* */
     oi_real background_w_m2_sr; /* radiance behind the target used (W/m^2/sr) */
+    oi_real rate_rad_s;      /* target's angular rate across the field (rad/s) */
+    oi_real trail_px;        /* trail length during the chosen exposure (pixels) */
+    oi_real trail_factor;    /* peak pixel's signal over that at rest, (0, 1] */
 } oi_exposure;
 
 /*
@@ -551,6 +561,8 @@ typedef struct oi_exposure {
  *   OI_ERR_CAMERA     a camera field outside Note 4's ranges, times or gains
  *                     not strictly ascending, n_times or n_gains out of range
  *   OI_ERR_INPUT      a goal field out of range (NaN included)
+ *   OI_ERR_FLAGS      goal->sky has bits outside OI_SKY_* (oi_expose itself
+ *                     has no geometry and adds no sky)
  *   OI_ERR_NONFINITE  flux or background NaN or infinite
  *   OI_ERR_INPUT      flux negative
  *   OI_ERR_MAGNITUDE  flux brighter than magnitude OI_MAG_MIN (> 2.74e4 W/m^2)
@@ -599,15 +611,19 @@ int oi_expose(const oi_camera *camera, const oi_expose_in *in,
  *   illum   oi_illuminate's result for this scene (e_sun, e_earth, e_moon,
  *           flux_obs and shadow.region are used)
  *   model   NULL or model (earth_radius_km, au_km, tsi_w_m2)
- *   goal    NULL or goals (as oi_expose)
+ *   goal    NULL or goals (as oi_expose); goal->sky: the sky backgrounds
+ *           (Note 8; 0 or a NULL goal: none but the sunlit Earth)
  * Returned:
- *   out     as oi_expose, with sun_angle_rad (Note 1) and the geometric flags
+ *   out     as oi_expose, with sun_angle_rad (Note 1), the geometric flags
+ *           and background_w_m2_sr, the radiance used behind the target
  * Returns (checked in this order; on error *out is zeroed):
  *   OI_OK
  *   OI_ERR_NULL       camera, scene, illum or out is NULL, or
  *                     scene->has_observer is 0 (the observer is required)
  *   OI_ERR_MODEL, OI_ERR_RADIUS  the model is invalid (as oi_illuminate)
- *   OI_ERR_NONFINITE  a component of sun_km, target_km or observer_km
+ *   OI_ERR_NONFINITE  a component of sun_km, target_km or observer_km (or
+ *                     moon_km, when goal->sky has OI_SKY_MOON and
+ *                     scene->terms has OI_TERM_MOON)
  *   OI_ERR_ALBEDO     earth_albedo or target_albedo outside [0, 1] (NaN too)
  *   OI_ERR_NONFINITE  illum's e_sun, e_earth, e_moon or flux_obs
  *   OI_ERR_INPUT      one of those four negative
@@ -616,8 +632,9 @@ int oi_expose(const oi_camera *camera, const oi_expose_in *in,
  *   OI_ERR_BELOW_SURFACE  |observer| or |target| <= the Earth's radius
  *   OI_ERR_OBSERVER_AT_TARGET  observer and target at the same position
  *   then oi_expose's statuses for the goal and the derived flux
- *   (OI_ERR_INPUT for a goal out of range, OI_ERR_MAGNITUDE for a flux
- *   brighter than magnitude OI_MAG_MIN).
+ *   (OI_ERR_INPUT for a goal out of range, OI_ERR_FLAGS for unknown
+ *   goal->sky bits, OI_ERR_MAGNITUDE for a flux brighter than magnitude
+ *   OI_MAG_MIN).
  * Notes:
  *   1. Boresight b = target - observer. sun_angle_rad = angle(sun - observer,
  *      b) (as oi_angle); OI_FLAG_SUN_EXCLUSION when it is below
@@ -641,9 +658,19 @@ int oi_expose(const oi_camera *camera, const oi_expose_in *in,
  *   6. OI_FLAG_ECLIPSED when illum->shadow.region is OI_SHADOW_UMBRA,
  *      OI_FLAG_PENUMBRA when it is OI_SHADOW_PENUMBRA or OI_SHADOW_ANNULAR
  *      (part of the Sun hidden in both).
- *   7. Not modelled: the Moon or the Earth's limb glow in the field, stray
- *      light from the Sun outside the exclusion angle, the atmosphere's
- *      radiance at the limb. docs/camera.md.
+ *   7. Not modelled: the Earth's limb glow in the field, stray light from
+ *      the Sun outside the exclusion angle or from a Moon beside the target,
+ *      the atmosphere's radiance at the limb, the integrated starlight.
+ *   8. Sky (goal->sky; positions taken as ICRF/GCRS-aligned, the ecliptic
+ *      of J2000): the first surface the boresight ray meets decides. The
+ *      Earth: Note 3. OI_SKY_MOON (read only with OI_TERM_MOON in
+ *      scene->terms): OI_FLAG_MOON_IN_FOV when the Moon's disc comes within
+ *      fov_rad / 2 of the boresight; met before the target, OI_FLAG_OCCULTED
+ *      (flux 0); met, a Lambertian Moon of model moon_albedo lit by
+ *      illum->moon_sun_fraction of the Sun. OI_SKY_ZODIACAL, where the ray
+ *      meets neither: oi_zodiacal_radiance of the boresight's ecliptic
+ *      longitude from the Sun and latitude, seen from the observer.
+ *      docs/camera.md, "Sky background".
  */
 int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
                     const oi_illum *illum, const oi_model *model,

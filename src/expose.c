@@ -23,7 +23,11 @@
 #define FLAGS_GEOMETRIC (OI_FLAG_SUN_EXCLUSION | OI_FLAG_EARTH_IN_FOV | OI_FLAG_ECLIPSED | \
                          OI_FLAG_PENUMBRA | OI_FLAG_OCCULTED | OI_FLAG_RESOLVED | \
                          OI_FLAG_MOON_IN_FOV)
-#define FLAGS_ALL (FLAGS_GEOMETRIC | OI_FLAG_TOO_FAINT | OI_FLAG_SATURATED)
+#define FLAGS_ALL (FLAGS_GEOMETRIC | OI_FLAG_TOO_FAINT | OI_FLAG_SATURATED | OI_FLAG_TRAILED)
+
+/* Largest accepted angular rate (rad/s): far above any orbit's, small
+ * enough that no trail overflows (1e3 rad/s * 1e4 s / 1e-10 rad). */
+#define IN_RATE_MAX OI_R(1e3)
 
 /* Brightest accepted target flux (W/m^2): magnitude OI_MAG_MIN at the
  * nominal TSI, OI_TSI_W_M2 * 10^(-0.4 (OI_MAG_MIN - OI_SUN_MAG_V)) =
@@ -106,6 +110,8 @@ static int check_input(const oi_expose_in *in, const oi_expose_goal *goal, expos
     if (!(in->flux_w_m2 <= FLUX_MAX_W_M2)) return OI_ERR_MAGNITUDE;
     if (!oi__in_closed(in->background_w_m2_sr, 0, IN_RADIANCE_MAX)) return OI_ERR_INPUT;
     if ((in->flags & ~(unsigned)FLAGS_ALL) != 0u) return OI_ERR_FLAGS;
+    if (!OI_ISFINITE(in->rate_rad_s)) return OI_ERR_NONFINITE;
+    if (!oi__in_closed(in->rate_rad_s, 0, IN_RATE_MAX)) return OI_ERR_INPUT;
     return OI_OK;
 }
 
@@ -239,6 +245,93 @@ static void best_setting(const oi_camera *camera, const expose_rates *r, int kk,
     }
 }
 
+/* A moving target's trail (docs/camera.md, "Motion"): its rate across the
+ * focal plane and the Gaussian PSF of the camera's peak fraction. */
+typedef struct {
+    oi_real px_s;   /* trail rate (pixels/s) */
+    oi_real sigma;  /* PSF sigma (pixels) */
+    oi_real q;      /* central fraction per axis, erf(1 / (2 sqrt(2) sigma)) */
+} trail_model;
+
+/* Fill *out for time index ti and gain index gi of a moving target: the
+ * brightest pixel's signal is the rate at rest times the trail's factor. */
+static void evaluate_moving(const oi_camera *c, const expose_rates *r, const trail_model *tm,
+                            int ti, int gi, oi_exposure *out)
+{
+    oi_real t = c->times_s[ti];
+    out->exposure_s = t;
+    out->gain = c->gains[gi];
+    out->time_index = ti;
+    out->gain_index = gi;
+    out->trail_px = tm->px_s * t;
+    out->trail_factor = oi__trail_factor(tm->sigma, tm->q, out->trail_px);
+    out->signal_e = r->rate_s * out->trail_factor * t;
+    out->background_e = r->rate_b * t;
+    out->peak_e = out->signal_e + out->background_e;
+    out->saturation_e = c->full_well_e / c->gains[gi];
+    out->fill = out->peak_e / out->saturation_e;
+    out->snr = snr_of(out->signal_e, out->background_e, c->read_noise_e[gi]);
+}
+
+/*
+ * The choice for a moving target (rate_rad_s > 0). The trail makes the
+ * peak's signal grow more slowly than t (about as min(t, t_1) for a trail
+ * of one pixel at t_1), so the SNR may fall at long times and the short
+ * search of the target at rest does not apply: every allowed (time, gain)
+ * pair is evaluated, at most 16 x 8, by the same rule (gains ascending
+ * outside, times ascending inside, strict comparisons). The allowed times
+ * are those whose trail is at most camera->max_trail_px (every time when it
+ * is 0), and at least the shortest: OI_FLAG_TRAILED when even that trails
+ * beyond it. OI_FLAG_TOO_FAINT when no allowed time reaches goal.snr_min
+ * at the highest gain. Returns the flags computed here.
+ */
+static unsigned expose_moving(const oi_camera *camera, const oi_expose_in *in,
+                              const expose_rates *r, oi_exposure *out)
+{
+    trail_model tm;
+    oi_exposure e;
+    oi_real best_snr = 0, low_fill = 0, max_snr = 0;
+    int n, ti, gi, found = 0, best_t = 0, best_g = 0, low_t = 0, low_g = 0;
+    unsigned flags = 0;
+    tm.px_s = in->rate_rad_s / (camera->pixel_pitch_m / camera->focal_length_m);
+    tm.sigma = oi__psf_sigma_px(camera->psf_peak_fraction);
+    tm.q = OI_ERF(OI_R(1.0) / (OI_R(2.8284271247461903) * tm.sigma));
+    n = camera->n_times;
+    if (camera->max_trail_px > 0) {
+        n = 0;
+        while (n < camera->n_times && tm.px_s * camera->times_s[n] <= camera->max_trail_px) n++;
+        if (n == 0) {
+            n = 1;
+            flags |= OI_FLAG_TRAILED;
+        }
+    }
+    for (gi = 0; gi < camera->n_gains; gi++) {
+        for (ti = 0; ti < n; ti++) {
+            evaluate_moving(camera, r, &tm, ti, gi, &e);
+            if (e.fill < OI_R(1.0) && e.fill <= r->goal_fill && (!found || e.snr > best_snr)) {
+                found = 1;
+                best_snr = e.snr;
+                best_t = ti;
+                best_g = gi;
+            }
+            if ((gi == 0 && ti == 0) || e.fill < low_fill) {
+                low_fill = e.fill;
+                low_t = ti;
+                low_g = gi;
+            }
+            if (gi == camera->n_gains - 1 && e.snr > max_snr) max_snr = e.snr;
+        }
+    }
+    if (!found) {
+        best_t = low_t;
+        best_g = low_g;
+        if (!(low_fill < OI_R(1.0))) flags |= OI_FLAG_SATURATED;
+    }
+    evaluate_moving(camera, r, &tm, best_t, best_g, out);
+    if (!(max_snr >= r->snr_min)) flags |= OI_FLAG_TOO_FAINT;
+    return flags;
+}
+
 /*
  * oi__expose_valid: the choice of oi_expose for a valid camera; out already
  * zeroed, and left so on error.
@@ -274,8 +367,15 @@ int oi__expose_valid(const oi_camera *camera, const oi_expose_in *in,
     st = check_input(in, goal, &r);
     if (st != OI_OK) return st;
     pixel_rates(camera, in, &r);
-    kk = first_time_over_goal(camera, &r); /* 1 */
     flags = in->flags & (unsigned)FLAGS_GEOMETRIC;
+    if (in->rate_rad_s > 0) {
+        out->flags = flags | expose_moving(camera, in, &r, out);
+        out->sun_angle_rad = 0;
+        out->background_w_m2_sr = in->background_w_m2_sr;
+        out->rate_rad_s = in->rate_rad_s;
+        return OI_OK;
+    }
+    kk = first_time_over_goal(camera, &r); /* 1 */
     if (kk == 0) {
         /* 2. */
         evaluate(camera, &r, 0, 0, out);
@@ -291,6 +391,7 @@ int oi__expose_valid(const oi_camera *camera, const oi_expose_in *in,
     out->flags = flags;
     out->sun_angle_rad = 0;
     out->background_w_m2_sr = in->background_w_m2_sr;
+    out->trail_factor = 1; /* at rest: no trail */
     return OI_OK;
 }
 
@@ -315,7 +416,8 @@ int oi_expose(const oi_camera *camera, const oi_expose_in *in,
  * Returned (function value):
  *             const char *  "sun_exclusion", "earth_in_fov", "eclipsed",
  *                           "too_faint", "saturated", "penumbra",
- *                           "occulted", "resolved", "moon_in_fov"; NULL for 0, a
+ *                           "occulted", "resolved", "moon_in_fov", "trailed";
+ *                           NULL for 0, a
  *                           combination of bits
  *                           or an unknown bit.
  */
@@ -331,6 +433,7 @@ const char *oi_flag_name(unsigned flag_bit)
     case OI_FLAG_OCCULTED: return "occulted";
     case OI_FLAG_RESOLVED: return "resolved";
     case OI_FLAG_MOON_IN_FOV: return "moon_in_fov";
+    case OI_FLAG_TRAILED: return "trailed";
     default: return NULL;
     }
 }

@@ -38,6 +38,33 @@ static OI_NOINLINE int scene_model(const oi_model *model, oi_real *re, oi_real *
     return st;
 }
 
+/* Largest accepted velocity component (km/s): the speed of light, far above
+ * any orbit's (and a bound that keeps differences finite in single
+ * precision). */
+#define SPEED_MAX_KM_S OI_R(299792.458)
+
+static int speed_ok(const oi_real v[3])
+{
+    return OI_FABS(v[0]) <= SPEED_MAX_KM_S && OI_FABS(v[1]) <= SPEED_MAX_KM_S &&
+           OI_FABS(v[2]) <= SPEED_MAX_KM_S;
+}
+
+/* Largest angular rate handed to oi_expose (rad/s, its limit): a faster
+ * target is smeared over the whole field at any exposure anyway. */
+#define RATE_MAX_RAD_S OI_R(1e3)
+
+/* The target's angular rate seen by the observer (docs/camera.md,
+ * "Motion"): the relative velocity across the line of sight over the
+ * range, |(v_t - v_o) x bh| / range; 0 at rest. */
+static oi_real angular_rate(const oi_scene *scene, const scene_geom *g)
+{
+    oi_real v[3], c[3], w;
+    oi__sub(scene->target_vel_km_s, scene->observer_vel_km_s, v);
+    oi__cross(v, g->bh, c);
+    w = oi__norm(c) / g->range;
+    return w < RATE_MAX_RAD_S ? w : RATE_MAX_RAD_S;
+}
+
 /* The inputs checked in the order of the statuses of the contract, and the
  * boresight formed. */
 static int check_scene(const oi_camera *camera, const oi_scene *scene, const oi_illum *illum,
@@ -82,6 +109,12 @@ static int check_scene(const oi_camera *camera, const oi_scene *scene, const oi_
     if (g->r_obs == 0 ||
         (scene->sun_km[0] == 0 && scene->sun_km[1] == 0 && scene->sun_km[2] == 0)) {
         return OI_ERR_ZERO_VECTOR;
+    }
+    if (!oi__finite3(scene->target_vel_km_s) || !oi__finite3(scene->observer_vel_km_s)) {
+        return OI_ERR_NONFINITE;
+    }
+    if (!speed_ok(scene->target_vel_km_s) || !speed_ok(scene->observer_vel_km_s)) {
+        return OI_ERR_INPUT;
     }
     if (!(g->r_obs > g->re) || !(r_tgt > g->re)) return OI_ERR_BELOW_SURFACE;
     oi__sub(scene->target_km, scene->observer_km, g->b);
@@ -285,6 +318,7 @@ int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
     in.flux_w_m2 = illum->flux_obs;
     in.background_w_m2_sr = 0;
     in.flags = 0;
+    in.rate_rad_s = angular_rate(scene, &g);
     sun_angle = sun_angle_of(scene, &g);
     if (sun_angle < camera->sun_exclusion_rad) in.flags |= OI_FLAG_SUN_EXCLUSION;
     if (earth_in_fov(scene, &g, camera->fov_rad)) in.flags |= OI_FLAG_EARTH_IN_FOV;

@@ -82,6 +82,7 @@ OI_FLAG_PENUMBRA = 32
 OI_FLAG_OCCULTED = 64
 OI_FLAG_RESOLVED = 128
 OI_FLAG_MOON_IN_FOV = 256
+OI_FLAG_TRAILED = 512
 OI_SKY_ZODIACAL = 1
 OI_SKY_MOON = 2
 
@@ -165,6 +166,7 @@ class oi_scene(ctypes.Structure):
         ("sun_km", real * 3), ("moon_km", real * 3), ("target_km", real * 3),
         ("observer_km", real * 3), ("has_observer", c_int), ("terms", c_uint),
         ("earth_albedo", real), ("target_albedo", real), ("target_radius_m", real),
+        ("target_vel_km_s", real * 3), ("observer_vel_km_s", real * 3),
     ]
 
 
@@ -191,6 +193,7 @@ class oi_camera(ctypes.Structure):
         ("n_times", c_int), ("times_s", real * OI_CAMERA_MAX_TIMES),
         ("n_gains", c_int), ("gains", real * OI_CAMERA_MAX_GAINS),
         ("read_noise_e", real * OI_CAMERA_MAX_GAINS),
+        ("max_trail_px", real),
     ]
 
 
@@ -199,7 +202,8 @@ class oi_expose_goal(ctypes.Structure):
 
 
 class oi_expose_in(ctypes.Structure):
-    _fields_ = [("flux_w_m2", real), ("background_w_m2_sr", real), ("flags", c_uint)]
+    _fields_ = [("flux_w_m2", real), ("background_w_m2_sr", real), ("flags", c_uint),
+                ("rate_rad_s", real)]
 
 
 class oi_exposure(ctypes.Structure):
@@ -207,7 +211,8 @@ class oi_exposure(ctypes.Structure):
         ("exposure_s", real), ("gain", real), ("time_index", c_int), ("gain_index", c_int),
         ("signal_e", real), ("background_e", real), ("peak_e", real), ("saturation_e", real),
         ("fill", real), ("snr", real), ("sun_angle_rad", real), ("flags", c_uint),
-        ("background_w_m2_sr", real),
+        ("background_w_m2_sr", real), ("rate_rad_s", real), ("trail_px", real),
+        ("trail_factor", real),
     ]
 
 

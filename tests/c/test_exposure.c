@@ -444,7 +444,8 @@ static void test_flag_names(void **state)
     assert_null(oi_flag_name(0));
     assert_null(oi_flag_name(OI_FLAG_SUN_EXCLUSION | OI_FLAG_ECLIPSED));
     assert_string_equal(oi_flag_name(OI_FLAG_MOON_IN_FOV), "moon_in_fov");
-    assert_null(oi_flag_name(512u));
+    assert_string_equal(oi_flag_name(OI_FLAG_TRAILED), "trailed");
+    assert_null(oi_flag_name(1024u));
 }
 #endif /* OI_NO_EXPOSURE */
 
@@ -1062,6 +1063,7 @@ static void test_search_matches_bruteforce(void **state)
         } else {
             goal.fill = u < 0.5 ? 0 : (u < 0.55 ? 1 : (oi_real)(0.01 + 0.99 * urand()));
             goal.snr_min = urand() < 0.3 ? 0 : (oi_real)log_uniform(0.1, 1e4);
+            goal.sky = 0u;
             gp = &goal;
         }
         /* one case in five: a setting's fill exactly at 1 or at the goal
