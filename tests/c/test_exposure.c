@@ -355,6 +355,7 @@ static void test_input_errors(void **state)
     in = input(1e-15, 2e8);
     expect_status(OI_ERR_INPUT, &c, &in, NULL, "background too bright");
     in = input(1e-15, 0);
+    goal.sky = 0u;
     goal.fill = (oi_real)1.5;
     goal.snr_min = 0;
     expect_status(OI_ERR_INPUT, &c, &in, &goal, "goal fill 1.5");
