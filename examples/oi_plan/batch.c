@@ -26,6 +26,8 @@ enum column {
     C_OBSERVER_X, C_OBSERVER_Y, C_OBSERVER_Z,
     C_TERMS, C_EARTH_ALBEDO, C_TARGET_ALBEDO, C_TARGET_RADIUS, C_CAMERA, C_ATMOSPHERE,
     C_SKY,
+    C_TARGET_VX, C_TARGET_VY, C_TARGET_VZ,
+    C_OBSERVER_VX, C_OBSERVER_VY, C_OBSERVER_VZ,
     C_COUNT
 };
 
@@ -36,7 +38,9 @@ static const char *const column_name[C_COUNT] = {
     "moon_x", "moon_y", "moon_z",
     "observer_x", "observer_y", "observer_z",
     "terms", "earth_albedo", "target_albedo", "target_radius_m", "camera", "atmosphere",
-    "sky"
+    "sky",
+    "target_vx", "target_vy", "target_vz",
+    "observer_vx", "observer_vy", "observer_vz"
 };
 
 typedef struct batch {
@@ -87,7 +91,9 @@ static int read_header(batch *b, csv_reader *r)
     int k, st, missing = 0;
     static const int required[] = {C_SUN_X, C_SUN_Y, C_SUN_Z, C_TARGET_X, C_TARGET_Y, C_TARGET_Z};
     static const int groups[][3] = {{C_MOON_X, C_MOON_Y, C_MOON_Z},
-                                    {C_OBSERVER_X, C_OBSERVER_Y, C_OBSERVER_Z}};
+                                    {C_OBSERVER_X, C_OBSERVER_Y, C_OBSERVER_Z},
+                                    {C_TARGET_VX, C_TARGET_VY, C_TARGET_VZ},
+                                    {C_OBSERVER_VX, C_OBSERVER_VY, C_OBSERVER_VZ}};
 
     for (k = 0; k < C_COUNT; k++) b->col[k] = -1;
     st = csv_next(r);
@@ -130,7 +136,7 @@ static int read_header(batch *b, csv_reader *r)
             missing = 1;
         }
     }
-    for (k = 0; k < 2; k++) {
+    for (k = 0; k < (int)(sizeof groups / sizeof groups[0]); k++) {
         int n = (b->col[groups[k][0]] >= 0) + (b->col[groups[k][1]] >= 0) +
                 (b->col[groups[k][2]] >= 0);
         if (n != 0 && n != 3) {
@@ -332,6 +338,9 @@ static int run_row(batch *b, const csv_reader *r, plan_row *row)
     st = parse_vec(b, r, C_OBSERVER_X, sc.observer_km, 0);
     if (st < 0) return 0;
     sc.has_observer = st;
+    /* velocities (km/s): absent or empty, at rest (oi_scene_defaults) */
+    if (parse_vec(b, r, C_TARGET_VX, sc.target_vel_km_s, 0) < 0) return 0;
+    if (parse_vec(b, r, C_OBSERVER_VX, sc.observer_vel_km_s, 0) < 0) return 0;
 
     terms = OI_TERM_SUN | OI_TERM_EARTH | (has_moon ? OI_TERM_MOON : 0u);
     s = field_of(b, r, C_TERMS, &short_row);
