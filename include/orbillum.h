@@ -568,6 +568,8 @@ typedef struct oi_exposure {
  *   OI_ERR_MAGNITUDE  flux brighter than magnitude OI_MAG_MIN (> 2.74e4 W/m^2)
  *   OI_ERR_INPUT      background negative or above 1e8 W/m^2/sr
  *   OI_ERR_FLAGS      in->flags has bits outside the OI_FLAG_* set
+ *   OI_ERR_NONFINITE  in->rate_rad_s NaN or infinite
+ *   OI_ERR_INPUT      in->rate_rad_s outside [0, 1e3] rad/s
  * Notes:
  *   1. Rates of photo-electrons (e-/s) in the brightest pixel, with
  *      A = pi (D/2)^2 and k = transmission * band_fraction * QE / photon_energy:
@@ -589,7 +591,8 @@ typedef struct oi_exposure {
  *      [1, 1e9] e-, dark current [0, 1e9] e-/s, fov (0, pi], Sun exclusion
  *      [0, pi], 1..OI_CAMERA_MAX_TIMES times in (0, 1e4] s strictly
  *      ascending, 1..OI_CAMERA_MAX_GAINS gains in (0, 1e3] strictly
- *      ascending, read noise [0, 1e6] e-. name is not used (may be NULL).
+ *      ascending, read noise [0, 1e6] e-, max_trail_px [0, 1e6]. name is
+ *      not used (may be NULL).
  *      Every camera is checked, the built-in ones too.
  *   5. The target is treated as a point source: a resolved target puts less
  *      than psf_peak_fraction of its light in one pixel (oi_expose_scene
@@ -597,6 +600,16 @@ typedef struct oi_exposure {
  *   6. Exactness and cost: the choice is that of the full search over every
  *      (time, gain) pair, to the bit, made from O(log n_times + n_gains)
  *      evaluations (docs/camera.md, "Cost of the search"; src/expose.c).
+ *   7. Motion (in->rate_rad_s > 0; docs/camera.md, "Motion"): the trail of
+ *      time t is L = rate t / (pitch / focal) pixels; the brightest pixel's
+ *      signal is that at rest times trail_factor, the closed form for a
+ *      Gaussian PSF of the camera's peak fraction swept along a pixel row.
+ *      The times allowed are those with L <= max_trail_px (all when it is
+ *      0), at least the shortest, with OI_FLAG_TRAILED when even that
+ *      trails beyond it; every allowed (time, gain) pair is evaluated by
+ *      Note 2's rule; OI_FLAG_TOO_FAINT when no allowed time reaches
+ *      goal.snr_min at the highest gain. At rest: trail_px 0,
+ *      trail_factor 1, the choice of earlier versions bit for bit.
  */
 int oi_expose(const oi_camera *camera, const oi_expose_in *in,
               const oi_expose_goal *goal, oi_exposure *out);
@@ -629,6 +642,8 @@ int oi_expose(const oi_camera *camera, const oi_expose_in *in,
  *   OI_ERR_INPUT      one of those four negative
  *   OI_ERR_CAMERA     the camera is invalid (oi_expose Note 4)
  *   OI_ERR_ZERO_VECTOR  observer or Sun at the Earth's centre
+ *   OI_ERR_NONFINITE  a velocity component NaN or infinite
+ *   OI_ERR_INPUT      a velocity component beyond 299792.458 km/s
  *   OI_ERR_BELOW_SURFACE  |observer| or |target| <= the Earth's radius
  *   OI_ERR_OBSERVER_AT_TARGET  observer and target at the same position
  *   then oi_expose's statuses for the goal and the derived flux
@@ -671,6 +686,8 @@ int oi_expose(const oi_camera *camera, const oi_expose_in *in,
  *      meets neither: oi_zodiacal_radiance of the boresight's ecliptic
  *      longitude from the Sun and latitude, seen from the observer.
  *      docs/camera.md, "Sky background".
+ *   9. Motion: rate_rad_s = |(target_vel - observer_vel) x b^| / range
+ *      (clamped at 1e3 rad/s), then oi_expose's Note 7.
  */
 int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
                     const oi_illum *illum, const oi_model *model,

@@ -11,10 +11,9 @@ import math
 import numpy as np
 
 import orbillum
-from orbillum import _lib as L
 
-LIB = L.load()
-L.bind(LIB)
+L = orbillum.L        # the mirror of the header (constants)
+LIB = orbillum._lib   # the loaded runtime, prototypes set
 DEG = math.pi / 180.0
 ARCSEC2_SR = (DEG / 3600.0) ** 2
 
