@@ -469,6 +469,9 @@ typedef struct oi_camera {
     oi_real gains[OI_CAMERA_MAX_GAINS];    /* ascending; saturation = full_well / gain */
     oi_real read_noise_e[OI_CAMERA_MAX_GAINS]; /* input-referred read noise per gain (e-) */
     oi_real max_trail_px;       /* longest acceptable trail (pixels), [0, 1e6]; 0: no limit */
+    oi_real detect_false_alarm; /* detection rule: per-pixel false-alarm probability of its
+                                   threshold, [1e-15, 0.5); 0: the SNR rule (goal.snr_min) */
+    oi_real detect_probability; /* detection probability required, [0.5, 0.999999]; 0: 0.5 */
 } oi_camera;
 
 /* oi_camera_builtin: built-in camera number index (0 is the default,
@@ -538,7 +541,13 @@ typedef struct oi_exposure {
     oi_real rate_rad_s;      /* target's angular rate across the field (rad/s) */
     oi_real trail_px;        /* trail length during the chosen exposure (pixels) */
     oi_real trail_factor;    /* peak pixel's signal over that at rest, (0, 1] */
+    oi_real signal_min_e;    /* smallest signal_e the detection rule accepts at this setting */
+    oi_real detect_margin_mag; /* 2.5 log10(signal_e / signal_min_e): > 0 detectable;
+                                  OI_DETECT_MARGIN_NONE without signal */
 } oi_exposure;
+
+/* detect_margin_mag of a setting without any target signal. */
+#define OI_DETECT_MARGIN_NONE (-100.0)
 
 /*
  * oi_expose: choose the exposure time and gain for a point-like target.

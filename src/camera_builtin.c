@@ -51,8 +51,9 @@ static const oi_camera builtin[] = {
         4,
         { OI_R(1.0), OI_R(1.2), OI_R(1.4), OI_R(1.6) },
         { OI_R(13.0), OI_R(13.0), OI_R(13.0), OI_R(13.0) },
-        OI_R(3.0)           /* longest acceptable trail: about twice the PSF's FWHM (1.6 px
+        OI_R(3.0),          /* longest acceptable trail: about twice the PSF's FWHM (1.6 px
                                for its peak fraction 0.30) (assumption) */
+        0, 0                /* detection: the SNR rule of the goal (docs/camera.md) */
     },
     /*
      * 1: "telescope-15cm": a 15 cm space telescope of the NEOSSat / MOST
@@ -82,8 +83,9 @@ static const oi_camera builtin[] = {
         1,
         { OI_R(1.0) },
         { OI_R(6.0) },
-        OI_R(3.0)           /* longest acceptable trail: about twice the PSF's FWHM (1.7 px
+        OI_R(3.0),          /* longest acceptable trail: about twice the PSF's FWHM (1.7 px
                                for its peak fraction 0.25) (assumption) */
+        0, 0                /* detection: the SNR rule of the goal (docs/camera.md) */
     }
 };
 

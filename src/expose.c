@@ -69,7 +69,61 @@ typedef struct {
     oi_real rate_b;     /* background and dark current */
     oi_real goal_fill;  /* goal fill, defaults filled in */
     oi_real snr_min;    /* goal SNR, defaults filled in */
+    oi_real det_k;      /* detection threshold in background sigmas; < 0: the SNR rule */
+    oi_real det_z;      /* detection margin in the target pixel's sigmas */
 } expose_rates;
+
+/* The detection rule (docs/camera.md, "Detection"): the camera's threshold
+ * k = Phi^-1(1 - false_alarm) and z = Phi^-1(detect_probability), or the SNR
+ * rule (det_k < 0, z = goal.snr_min). */
+static void detect_rule(const oi_camera *c, expose_rates *r)
+{
+    if (c->detect_false_alarm > 0) {
+        r->det_k = oi__normal_quantile(OI_R(1.0) - c->detect_false_alarm);
+        r->det_z = c->detect_probability > 0 ? oi__normal_quantile(c->detect_probability)
+                                             : OI_R(0.0);
+    } else {
+        r->det_k = -1;
+        r->det_z = r->snr_min;
+    }
+}
+
+/* The smallest detectable signal at background b (electrons, dark
+ * included) and read noise rn: the threshold k sqrt(b + rn^2) above the
+ * background plus z times the target pixel's noise; the SNR rule is the
+ * threshold 0 and z = snr_min (s / sqrt(s + b + rn^2) = snr_min). */
+static oi_real signal_min(const expose_rates *r, oi_real b, oi_real rn)
+{
+    const oi_real c = b + rn * rn;
+    const oi_real thr = r->det_k > 0 ? r->det_k * OI_SQRT(c) : OI_R(0.0);
+    return oi__signal_min_e(thr, r->det_z, c);
+}
+
+/* Is signal s at background b and read noise rn detected? The SNR rule
+ * keeps its comparison of earlier versions (snr >= snr_min). */
+static int detected(const expose_rates *r, oi_real s, oi_real b, oi_real rn)
+{
+    oi_real var;
+    if (r->det_k < 0) {
+        var = s + b + rn * rn;
+        return (var > 0 ? s / OI_SQRT(var) : OI_R(0.0)) >= r->snr_min;
+    }
+    return s >= signal_min(r, b, rn);
+}
+
+/* The chosen setting's smallest detectable signal and margin (magnitudes,
+ * within +-100; OI_DETECT_MARGIN_NONE without signal). */
+static void detect_margin(const oi_camera *c, const expose_rates *r, oi_exposure *out)
+{
+    oi_real smin = signal_min(r, out->background_e, c->read_noise_e[out->gain_index]);
+    oi_real m = (oi_real)OI_DETECT_MARGIN_NONE;
+    out->signal_min_e = smin;
+    if (out->signal_e > 0) {
+        m = smin > 0 ? OI_R(2.5) * OI_LOG10(out->signal_e / smin) : OI_R(100.0);
+        m = oi__clamp(m, (oi_real)OI_DETECT_MARGIN_NONE, OI_R(100.0));
+    }
+    out->detect_margin_mag = m;
+}
 
 /* The sky backgrounds this build knows (oi_expose_goal.sky). */
 #ifndef OI_NO_SKY
@@ -290,8 +344,8 @@ static unsigned expose_moving(const oi_camera *camera, const oi_expose_in *in,
 {
     trail_model tm;
     oi_exposure e;
-    oi_real best_snr = 0, low_fill = 0, max_snr = 0;
-    int n, ti, gi, found = 0, best_t = 0, best_g = 0, low_t = 0, low_g = 0;
+    oi_real best_snr = 0, low_fill = 0;
+    int n, ti, gi, found = 0, best_t = 0, best_g = 0, low_t = 0, low_g = 0, any_detected = 0;
     unsigned flags = 0;
     tm.px_s = in->rate_rad_s / (camera->pixel_pitch_m / camera->focal_length_m);
     tm.sigma = oi__psf_sigma_px(camera->psf_peak_fraction);
@@ -319,7 +373,10 @@ static unsigned expose_moving(const oi_camera *camera, const oi_expose_in *in,
                 low_t = ti;
                 low_g = gi;
             }
-            if (gi == camera->n_gains - 1 && e.snr > max_snr) max_snr = e.snr;
+            if (gi == camera->n_gains - 1 &&
+                detected(r, e.signal_e, e.background_e, camera->read_noise_e[gi])) {
+                any_detected = 1;
+            }
         }
     }
     if (!found) {
@@ -328,7 +385,7 @@ static unsigned expose_moving(const oi_camera *camera, const oi_expose_in *in,
         if (!(low_fill < OI_R(1.0))) flags |= OI_FLAG_SATURATED;
     }
     evaluate_moving(camera, r, &tm, best_t, best_g, out);
-    if (!(max_snr >= r->snr_min)) flags |= OI_FLAG_TOO_FAINT;
+    if (!any_detected) flags |= OI_FLAG_TOO_FAINT;
     return flags;
 }
 
@@ -367,9 +424,11 @@ int oi__expose_valid(const oi_camera *camera, const oi_expose_in *in,
     st = check_input(in, goal, &r);
     if (st != OI_OK) return st;
     pixel_rates(camera, in, &r);
+    detect_rule(camera, &r);
     flags = in->flags & (unsigned)FLAGS_GEOMETRIC;
     if (in->rate_rad_s > 0) {
         out->flags = flags | expose_moving(camera, in, &r, out);
+        detect_margin(camera, &r, out);
         out->sun_angle_rad = 0;
         out->background_w_m2_sr = in->background_w_m2_sr;
         out->rate_rad_s = in->rate_rad_s;
@@ -384,10 +443,18 @@ int oi__expose_valid(const oi_camera *camera, const oi_expose_in *in,
         best_setting(camera, &r, kk, &best_t, &best_g);
         evaluate(camera, &r, best_t, best_g, out);
     }
-    if (snr_at(&r, camera->times_s[camera->n_times - 1],
-               camera->read_noise_e[camera->n_gains - 1]) < r.snr_min) {
-        flags |= OI_FLAG_TOO_FAINT;
+    if (r.det_k < 0) {
+        if (snr_at(&r, camera->times_s[camera->n_times - 1],
+                   camera->read_noise_e[camera->n_gains - 1]) < r.snr_min) {
+            flags |= OI_FLAG_TOO_FAINT;
+        }
+    } else {
+        oi_real t = camera->times_s[camera->n_times - 1];
+        if (!detected(&r, r.rate_s * t, r.rate_b * t, camera->read_noise_e[camera->n_gains - 1])) {
+            flags |= OI_FLAG_TOO_FAINT;
+        }
     }
+    detect_margin(camera, &r, out);
     out->flags = flags;
     out->sun_angle_rad = 0;
     out->background_w_m2_sr = in->background_w_m2_sr;

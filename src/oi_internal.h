@@ -328,6 +328,11 @@ int oi__expose_valid(const oi_camera *camera, const oi_expose_in *in,
  * and the trailed peak's factor for a trail of L pixels (src/trail.c). */
 oi_real oi__psf_sigma_px(oi_real p);
 oi_real oi__trail_factor(oi_real sigma, oi_real q, oi_real trail);
+
+/* The standard normal quantile for p in [0.5, 1), and the smallest signal
+ * a detection rule accepts (src/detect.c). */
+oi_real oi__normal_quantile(oi_real p);
+oi_real oi__signal_min_e(oi_real thr, oi_real z, oi_real c);
 #endif
 
 #ifndef OI_NO_ATMOSPHERE

@@ -83,6 +83,7 @@ OI_FLAG_OCCULTED = 64
 OI_FLAG_RESOLVED = 128
 OI_FLAG_MOON_IN_FOV = 256
 OI_FLAG_TRAILED = 512
+OI_DETECT_MARGIN_NONE = -100.0
 OI_SKY_ZODIACAL = 1
 OI_SKY_MOON = 2
 
@@ -193,7 +194,7 @@ class oi_camera(ctypes.Structure):
         ("n_times", c_int), ("times_s", real * OI_CAMERA_MAX_TIMES),
         ("n_gains", c_int), ("gains", real * OI_CAMERA_MAX_GAINS),
         ("read_noise_e", real * OI_CAMERA_MAX_GAINS),
-        ("max_trail_px", real),
+        ("max_trail_px", real), ("detect_false_alarm", real), ("detect_probability", real),
     ]
 
 
@@ -212,7 +213,7 @@ class oi_exposure(ctypes.Structure):
         ("signal_e", real), ("background_e", real), ("peak_e", real), ("saturation_e", real),
         ("fill", real), ("snr", real), ("sun_angle_rad", real), ("flags", c_uint),
         ("background_w_m2_sr", real), ("rate_rad_s", real), ("trail_px", real),
-        ("trail_factor", real),
+        ("trail_factor", real), ("signal_min_e", real), ("detect_margin_mag", real),
     ]
 
 
