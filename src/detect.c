@@ -12,16 +12,17 @@
 #define SQRT2PI_INV OI_R(0.3989422804014327) /* 1 / sqrt(2 pi) */
 
 /*
- * oi__normal_quantile: z with Phi(z) = p for p in [0.5, 1): the standard
- * normal quantile, by Newton's method on ln Q(z) = ln(1 - p), Q(z) =
+ * oi__normal_quantile_upper: z with 1 - Phi(z) = tail for tail in (0, 0.5]:
+ * the standard normal quantile of the upper tail, taken as given (not as
+ * 1 - p, which loses the digits of a small tail), by Newton's method on
+ * ln Q(z) = ln(tail), Q(z) =
  * erfc(z / sqrt 2) / 2 the upper tail (accurate for p near 1; ln Q is
- * concave, so Newton converges from the tail bound sqrt(-2 ln(1 - p)),
+ * concave, so Newton converges from the tail bound sqrt(-2 ln(tail)),
  * above the root, without overshoot); 12 steps are past double precision
- * for 1 - p down to 1e-15 (tests/c/test_detect.c).
+ * for tails down to 1e-15 (tests/c/test_detect.c).
  */
-oi_real oi__normal_quantile(oi_real p)
+oi_real oi__normal_quantile_upper(oi_real tail)
 {
-    const oi_real tail = OI_R(1.0) - p;
     const oi_real ln_tail = OI_LOG(tail);
     oi_real z, q;
     int i;

@@ -74,14 +74,17 @@ typedef struct {
 } expose_rates;
 
 /* The detection rule (docs/camera.md, "Detection"): the camera's threshold
- * k = Phi^-1(1 - false_alarm) and z = Phi^-1(detect_probability), or the SNR
+ * k = Phi^-1(1 - false_alarm) and z = Phi^-1(detect_probability) (as upper
+ * tails, so that a false-alarm rate of 1e-15 keeps its digits), or the SNR
  * rule (det_k < 0, z = goal.snr_min). */
 static void detect_rule(const oi_camera *c, expose_rates *r)
 {
     if (c->detect_false_alarm > 0) {
-        r->det_k = oi__normal_quantile(OI_R(1.0) - c->detect_false_alarm);
-        r->det_z = c->detect_probability > 0 ? oi__normal_quantile(c->detect_probability)
-                                             : OI_R(0.0);
+        r->det_k = oi__normal_quantile_upper(c->detect_false_alarm);
+        /* 1 - p is exact for p in [0.5, 1] (Sterbenz) */
+        r->det_z = c->detect_probability > 0
+                       ? oi__normal_quantile_upper(OI_R(1.0) - c->detect_probability)
+                       : OI_R(0.0);
     } else {
         r->det_k = -1;
         r->det_z = r->snr_min;

@@ -329,9 +329,9 @@ int oi__expose_valid(const oi_camera *camera, const oi_expose_in *in,
 oi_real oi__psf_sigma_px(oi_real p);
 oi_real oi__trail_factor(oi_real sigma, oi_real q, oi_real trail);
 
-/* The standard normal quantile for p in [0.5, 1), and the smallest signal
- * a detection rule accepts (src/detect.c). */
-oi_real oi__normal_quantile(oi_real p);
+/* The standard normal quantile of an upper tail in (0, 0.5], and the
+ * smallest signal a detection rule accepts (src/detect.c). */
+oi_real oi__normal_quantile_upper(oi_real tail);
 oi_real oi__signal_min_e(oi_real thr, oi_real z, oi_real c);
 #endif
 
