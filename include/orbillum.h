@@ -590,8 +590,9 @@ typedef struct oi_exposure {
  *      highest SNR (ties: lower gain, then shorter time); if none reaches
  *      down to the goal, the shortest time at the lowest gain (the lowest
  *      fill), with OI_FLAG_SATURATED when even that saturates.
- *      OI_FLAG_TOO_FAINT when the SNR at the longest time and highest gain
- *      is below goal.snr_min.
+ *      OI_FLAG_TOO_FAINT when the target is not detectable (Note 8) at the
+ *      longest time and highest gain: with the SNR rule, when the SNR
+ *      there is below goal.snr_min.
  *   3. in->flags bits OI_FLAG_TOO_FAINT and OI_FLAG_SATURATED are ignored
  *      (recomputed); the geometric bits are copied to out->flags.
  *   4. Valid camera ranges: aperture (0, 10] m, focal length [1e-3, 1e3] m,
@@ -600,8 +601,9 @@ typedef struct oi_exposure {
  *      [1, 1e9] e-, dark current [0, 1e9] e-/s, fov (0, pi], Sun exclusion
  *      [0, pi], 1..OI_CAMERA_MAX_TIMES times in (0, 1e4] s strictly
  *      ascending, 1..OI_CAMERA_MAX_GAINS gains in (0, 1e3] strictly
- *      ascending, read noise [0, 1e6] e-, max_trail_px [0, 1e6]. name is
- *      not used (may be NULL).
+ *      ascending, read noise [0, 1e6] e-, max_trail_px [0, 1e6],
+ *      detect_false_alarm 0 or [1e-15, 0.5), detect_probability 0 or
+ *      [0.5, 0.999999]. name is not used (may be NULL).
  *      Every camera is checked, the built-in ones too.
  *   5. The target is treated as a point source: a resolved target puts less
  *      than psf_peak_fraction of its light in one pixel (oi_expose_scene
@@ -616,9 +618,18 @@ typedef struct oi_exposure {
  *      The times allowed are those with L <= max_trail_px (all when it is
  *      0), at least the shortest, with OI_FLAG_TRAILED when even that
  *      trails beyond it; every allowed (time, gain) pair is evaluated by
- *      Note 2's rule; OI_FLAG_TOO_FAINT when no allowed time reaches
- *      goal.snr_min at the highest gain. At rest: trail_px 0,
- *      trail_factor 1, the choice of earlier versions bit for bit.
+ *      Note 2's rule; OI_FLAG_TOO_FAINT when no allowed time is detectable
+ *      at the highest gain. At rest: trail_px 0, trail_factor 1, the
+ *      choice of earlier versions bit for bit.
+ *   8. Detection (docs/camera.md, "Detection"): camera->detect_false_alarm
+ *      0, the SNR rule: S / sqrt(S + B + R^2) >= goal.snr_min. Otherwise a
+ *      per-pixel threshold T = k sqrt(B + R^2), k = Phi^-1(1 -
+ *      detect_false_alarm), crossed with probability detect_probability
+ *      (0: 0.5): S >= T + z sqrt(S + B + R^2), z = Phi^-1(probability)
+ *      (electrons at the setting; Gaussian noise). signal_min_e is the
+ *      smallest such S at the chosen setting, detect_margin_mag =
+ *      2.5 log10(signal_e / signal_min_e) (within +-100;
+ *      OI_DETECT_MARGIN_NONE without signal).
  */
 int oi_expose(const oi_camera *camera, const oi_expose_in *in,
               const oi_expose_goal *goal, oi_exposure *out);

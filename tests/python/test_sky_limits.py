@@ -68,3 +68,55 @@ def test_limiting_magnitudes():
     for cam, name, m, t in rows:
         assert t == orbillum.expose_flux(cam, [1e-30])["exposure_s"][0]  # the longest time
     assert np.all(np.isfinite([m for _, _, m, _ in rows]))
+
+
+def camera_at(name, t, p_fa=0.0, p_d=0.0):
+    """A copy of a built-in camera with the one exposure time t and the
+    detection rule (p_fa, p_d); zeros: the SNR rule."""
+    import ctypes
+    src = LIB.oi_camera_find(name.encode())
+    c = L.oi_camera()
+    ctypes.memmove(ctypes.addressof(c), ctypes.addressof(src.contents), ctypes.sizeof(c))
+    c.n_times = 1
+    c.times_s[0] = t
+    c.n_gains = 1  # the lowest gain (read noise flat in both built-in cameras)
+    c.detect_false_alarm = p_fa
+    c.detect_probability = p_d
+    return c
+
+
+def limiting_mag_rule(camera, background):
+    """The faintest V with detect_margin_mag >= 0 at the camera's one time."""
+    lo, hi = math.log(1e-30), math.log(1e-3)
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        r = orbillum.expose_flux(camera, [math.exp(mid)], background)
+        assert r["expose_status"][0] == 0
+        if r["detect_margin_mag"][0] >= 0:
+            hi = mid
+        else:
+            lo = mid
+    return mag_of(math.exp(hi))
+
+
+def test_limiting_magnitudes_detection_rule():
+    """SNR 5 on the brightest pixel against a threshold of 1e-6 false alarms
+    per pixel (4.75 sigma; about 4 per star-tracker frame of 4.2 Mpixel)
+    met with probability 0.9, black sky and the zodiacal light at 90 deg
+    from the Sun in the ecliptic."""
+    zodi = LIB.oi_zodiacal_radiance(math.pi / 2, 0.0)
+    rows = []
+    for name, t in (("telescope-15cm", 100.0), ("star-tracker", 0.1), ("star-tracker", 0.5)):
+        for sky, bg in (("black", 0.0), ("zodiacal 90 deg", zodi)):
+            snr = limiting_mag_rule(camera_at(name, t), bg)
+            det = limiting_mag_rule(camera_at(name, t, 1e-6, 0.9), bg)
+            rows.append((name, t, sky, snr, det))
+    print()
+    for name, t, sky, snr, det in rows:
+        print(f"{name:15s} {t:6g} s {sky:16s} SNR 5: V = {snr:6.2f}  "
+              f"threshold 1e-6, P_d 0.9: V = {det:6.2f}")
+    for name, t, sky, snr, det in rows:
+        # the SNR-rule margin is 0 where the SNR is 5: the same limit as the
+        # bisection on the SNR above (to the bisection's resolution)
+        assert det < snr  # 4.75 sigma + 1.28 sigma is stricter than 5 sigma
+        assert snr - det < 1.0
