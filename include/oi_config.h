@@ -9,7 +9,8 @@
  *                        oi_model.earth_table, earthshine is the Lambert far
  *                        field with OI_WARN_TABLE_RANGE; a caller's table
  *                        still works.
- *   OI_NO_MOON           no moonlight: removes oi_moon_* and the Moon term.
+ *   OI_NO_MOON           no moonlight: removes oi_moon_* and the Moon term, and
+ *                        OI_SKY_MOON (a goal with that bit gets OI_ERR_FLAGS).
  *   OI_NO_EXPOSURE       no camera model: removes oi_camera*, oi_expose*.
  *   OI_NO_ATMOSPHERE     no refraction into the shadow (sun_fraction_atm equals
  *                        sun_fraction): the atmosphere's code and its default

@@ -506,7 +506,9 @@ const char *oi_flag_name(unsigned flag_bit);
 #ifndef OI_NO_SKY
 #define OI_SKY_ZODIACAL (1u)  /* zodiacal light (Leinert et al. 1998), where the ray misses Earth and Moon */
 #endif
+#ifndef OI_NO_MOON
 #define OI_SKY_MOON     (2u)  /* the Moon: OI_FLAG_MOON_IN_FOV, its surface behind the target, occultation */
+#endif
 
 /* Goals of the exposure choice. Zero fields mean defaults. */
 typedef struct oi_expose_goal {

@@ -311,7 +311,11 @@ int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
     memset(out, 0, sizeof *out);
     if (camera == NULL || scene == NULL || illum == NULL) return OI_ERR_NULL;
     /* the Moon's position is read only with OI_TERM_MOON (as oi_illuminate) */
+#ifndef OI_NO_MOON
     use_moon = (sky & OI_SKY_MOON) != 0u && (scene->terms & OI_TERM_MOON) != 0u;
+#else
+    use_moon = 0; /* no Moon in this build: goal->sky cannot ask for it (OI_ERR_FLAGS) */
+#endif
     st = check_scene(camera, scene, illum, model, use_moon, &g);
     if (st != OI_OK) return st;
 

@@ -120,3 +120,22 @@ def test_limiting_magnitudes_detection_rule():
         # bisection on the SNR above (to the bisection's resolution)
         assert det < snr  # 4.75 sigma + 1.28 sigma is stricter than 5 sigma
         assert snr - det < 1.0
+
+
+def test_binding_sky_argument():
+    """orbillum.expose(sky=...) reaches oi_expose_goal.sky: the observer
+    under the target looking away from the Earth sees the zodiacal light
+    only when asked; the radiance is the table's at that direction."""
+    au = 149597870.7
+    sun, moon = [au, 0.0, 0.0], [0.0, 0.0, 0.0]
+    target, observer = [0.0, 8000.0, 0.0], [0.0, 7000.0, 0.0]
+    off = orbillum.expose("telescope-15cm", sun, moon, target, observer, terms=3)
+    on = orbillum.expose("telescope-15cm", sun, moon, target, observer, terms=3,
+                         sky=L.OI_SKY_ZODIACAL)
+    assert off["background_w_m2_sr"][0] == 0.0
+    # boresight +y (equatorial) is 90 deg from the Sun (+x) in ecliptic
+    # longitude, at ecliptic latitude -23.44 deg
+    eps = 84381.406 / 3600.0 * DEG
+    want = LIB.oi_zodiacal_radiance(math.pi / 2, -eps)
+    assert abs(on["background_w_m2_sr"][0] / want - 1) < 1e-12
+    assert on["snr"][0] < off["snr"][0]
