@@ -116,7 +116,7 @@ static int detected(const expose_rates *r, oi_real s, oi_real b, oi_real rn)
 
 /* The chosen setting's smallest detectable signal and margin (magnitudes,
  * within +-100; OI_DETECT_MARGIN_NONE without signal). */
-static void detect_margin(const oi_camera *c, const expose_rates *r, oi_exposure *out)
+static OI_NOINLINE void detect_margin(const oi_camera *c, const expose_rates *r, oi_exposure *out)
 {
     oi_real smin = signal_min(r, out->background_e, c->read_noise_e[out->gain_index]);
     oi_real m = (oi_real)OI_DETECT_MARGIN_NONE;
@@ -348,11 +348,25 @@ static void evaluate_moving(const oi_camera *c, const expose_rates *r, const tra
  * beyond it. OI_FLAG_TOO_FAINT when no allowed time reaches goal.snr_min
  * at the highest gain. Returns the flags computed here.
  */
-static unsigned expose_moving(const oi_camera *camera, const oi_expose_in *in,
-                              const expose_rates *r, oi_exposure *out)
+/* The signal and background electrons, fill and SNR of one setting of a
+ * moving target, by the same operations as evaluate_moving (without a
+ * whole oi_exposure on the stack). */
+static oi_real moving_setting(const oi_camera *c, const expose_rates *r, const trail_model *tm,
+                              int ti, int gi, oi_real *sig, oi_real *bkg, oi_real *snr)
+{
+    oi_real t = c->times_s[ti];
+    oi_real factor = oi__trail_factor(tm->sigma, tm->q, tm->px_s * t);
+    *sig = r->rate_s * factor * t;
+    *bkg = r->rate_b * t;
+    *snr = snr_of(*sig, *bkg, c->read_noise_e[gi]);
+    return (*sig + *bkg) / (c->full_well_e / c->gains[gi]);
+}
+
+static OI_NOINLINE unsigned expose_moving(const oi_camera *camera, const oi_expose_in *in,
+                                          const expose_rates *r, oi_exposure *out)
 {
     trail_model tm;
-    oi_exposure e;
+    oi_real fill, sig, bkg, snr;
     oi_real best_snr = 0, low_fill = 0;
     int n, ti, gi, found = 0, best_t = 0, best_g = 0, low_t = 0, low_g = 0, any_detected = 0;
     unsigned flags = 0;
@@ -370,20 +384,19 @@ static unsigned expose_moving(const oi_camera *camera, const oi_expose_in *in,
     }
     for (gi = 0; gi < camera->n_gains; gi++) {
         for (ti = 0; ti < n; ti++) {
-            evaluate_moving(camera, r, &tm, ti, gi, &e);
-            if (e.fill < OI_R(1.0) && e.fill <= r->goal_fill && (!found || e.snr > best_snr)) {
+            fill = moving_setting(camera, r, &tm, ti, gi, &sig, &bkg, &snr);
+            if (fill < OI_R(1.0) && fill <= r->goal_fill && (!found || snr > best_snr)) {
                 found = 1;
-                best_snr = e.snr;
+                best_snr = snr;
                 best_t = ti;
                 best_g = gi;
             }
-            if ((gi == 0 && ti == 0) || e.fill < low_fill) {
-                low_fill = e.fill;
+            if ((gi == 0 && ti == 0) || fill < low_fill) {
+                low_fill = fill;
                 low_t = ti;
                 low_g = gi;
             }
-            if (gi == camera->n_gains - 1 &&
-                detected(r, e.signal_e, e.background_e, camera->read_noise_e[gi])) {
+            if (gi == camera->n_gains - 1 && detected(r, sig, bkg, camera->read_noise_e[gi])) {
                 any_detected = 1;
             }
         }

@@ -56,7 +56,7 @@ static int speed_ok(const oi_real v[3])
 /* The target's angular rate seen by the observer (docs/camera.md,
  * "Motion"): the relative velocity across the line of sight over the
  * range, |(v_t - v_o) x bh| / range; 0 at rest. */
-static oi_real angular_rate(const oi_scene *scene, const scene_geom *g)
+static OI_NOINLINE oi_real angular_rate(const oi_scene *scene, const scene_geom *g)
 {
     oi_real v[3], c[3], w;
     oi__sub(scene->target_vel_km_s, scene->observer_vel_km_s, v);
@@ -67,7 +67,7 @@ static oi_real angular_rate(const oi_scene *scene, const scene_geom *g)
 
 /* The inputs checked in the order of the statuses of the contract, and the
  * boresight formed. */
-static int check_scene(const oi_camera *camera, const oi_scene *scene, const oi_illum *illum,
+static OI_NOINLINE int check_scene(const oi_camera *camera, const oi_scene *scene, const oi_illum *illum,
                        const oi_model *model, int use_moon, scene_geom *g)
 {
     oi_real r_tgt, re, au, tsi, moon[2]; /* locals: g's address does not leave this file */
@@ -127,7 +127,7 @@ static int check_scene(const oi_camera *camera, const oi_scene *scene, const oi_
  * form, by the same operations as oi_angle(sun - observer, b) (bh is its
  * unit vector of b); 0, as there, when a difference overflows or the
  * observer is at the Sun. */
-static oi_real sun_angle_of(const oi_scene *scene, const scene_geom *g)
+static OI_NOINLINE oi_real sun_angle_of(const oi_scene *scene, const scene_geom *g)
 {
     oi_real u[3], d; /* sun - observer, its unit vector, then u x bh */
     oi__sub(scene->sun_km, scene->observer_km, u);
@@ -148,7 +148,7 @@ static oi_real sun_angle_of(const oi_scene *scene, const scene_geom *g)
  * "Cost of the search"): gamma < rho (sine negative) is on the disc,
  * whatever h; gamma - rho >= pi/2 (cosine not positive) is at least
  * pi/2 >= h away; only in between is the angle computed and compared with h. */
-static int earth_in_fov(const oi_scene *scene, const scene_geom *g, oi_real fov_rad)
+static OI_NOINLINE int earth_in_fov(const oi_scene *scene, const scene_geom *g, oi_real fov_rad)
 {
     const oi_real one = OI_R(1.0);
     oi_real sin_rho, cos_rho, cos_g, sin_g, sin_gr, cos_gr;
@@ -175,7 +175,7 @@ static int earth_in_fov(const oi_scene *scene, const scene_geom *g, oi_real fov_
  * s^2 + 2 ob s + c = 0 hits when ob < 0 and ob^2 >= c; the near root
  * c / (-ob + sqrt(ob^2 - c)) avoids cancellation, and
  * ob^2 - c = (-ob - sc)(-ob + sc). */
-static oi_real ground_background(const oi_scene *scene, const scene_geom *g, oi_expose_in *in)
+static OI_NOINLINE oi_real ground_background(const oi_scene *scene, const scene_geom *g, oi_expose_in *in)
 {
     oi_real c, sc, ob, s_hit, cos_i, au_d, e0;
     oi_real hit[3], sun_hit[3]; /* then their unit vectors, in place */
@@ -209,7 +209,7 @@ static oi_real ground_background(const oi_scene *scene, const scene_geom *g, oi_
  * background when no nearer Earth is in the way (s_earth: the distance to
  * the Earth along the ray, < 0 when missed). Returns 1 when the ray meets
  * the Moon (the zodiacal light is then behind it), else 0. */
-static int moon_view(const oi_scene *scene, const oi_illum *illum, const scene_geom *g,
+static OI_NOINLINE int moon_view(const oi_scene *scene, const oi_illum *illum, const scene_geom *g,
                      oi_real fov_rad, oi_real s_earth, oi_expose_in *in)
 {
     oi_real m[3], c[3], d, p, q2, rm2, s_hit, cos_i, e_moon_sun, au_d;
@@ -258,7 +258,7 @@ static int moon_view(const oi_scene *scene, const oi_illum *illum, const scene_g
 /* Zodiacal light behind the target (OI_SKY_ZODIACAL): the boresight and
  * the Sun seen from the observer in ecliptic coordinates, their longitude
  * difference and the boresight's latitude, into oi_zodiacal_radiance. */
-static oi_real zodiacal_background(const oi_scene *scene, const scene_geom *g)
+static OI_NOINLINE oi_real zodiacal_background(const oi_scene *scene, const scene_geom *g)
 {
     oi_real u[3], bx, by, bz, sx, sy, dl, beta;
     oi__sub(scene->sun_km, scene->observer_km, u);
@@ -276,7 +276,7 @@ static oi_real zodiacal_background(const oi_scene *scene, const scene_geom *g)
 
 /* Resolved target (Note 5): the brightest pixel sees at most the radiance
  * albedo * sum(E) / pi over its solid angle. */
-static void limit_resolved(const oi_camera *camera, const oi_scene *scene, const oi_illum *illum,
+static OI_NOINLINE void limit_resolved(const oi_camera *camera, const oi_scene *scene, const oi_illum *illum,
                            oi_expose_in *in)
 {
     oi_real ifov = camera->pixel_pitch_m / camera->focal_length_m;

@@ -133,9 +133,19 @@ def test_binding_sky_argument():
     on = orbillum.expose("telescope-15cm", sun, moon, target, observer, terms=3,
                          sky=L.OI_SKY_ZODIACAL)
     assert off["background_w_m2_sr"][0] == 0.0
-    # boresight +y (equatorial) is 90 deg from the Sun (+x) in ecliptic
-    # longitude, at ecliptic latitude -23.44 deg
+    # the boresight (+y, equatorial) and the Sun seen from the observer, in
+    # the J2000 ecliptic (obliquity 84381.406 arcsec): longitude difference
+    # 90 deg plus the observer's parallax, latitude -23.44 deg
     eps = 84381.406 / 3600.0 * DEG
-    want = LIB.oi_zodiacal_radiance(math.pi / 2, -eps)
+
+    def ecl(v):
+        return np.array([v[0], v[1] * math.cos(eps) + v[2] * math.sin(eps),
+                         -v[1] * math.sin(eps) + v[2] * math.cos(eps)])
+
+    b = ecl([0.0, 1.0, 0.0])
+    s = ecl(np.subtract(sun, observer))
+    dl = math.atan2(abs(b[0] * s[1] - b[1] * s[0]), b[0] * s[0] + b[1] * s[1])
+    beta = math.atan2(b[2], math.hypot(b[0], b[1]))
+    want = LIB.oi_zodiacal_radiance(dl, beta)
     assert abs(on["background_w_m2_sr"][0] / want - 1) < 1e-12
     assert on["snr"][0] < off["snr"][0]
