@@ -22,8 +22,8 @@ ROOT = Path(__file__).resolve().parents[2]
 PLAN = Path(os.environ.get("OI_PLAN", ROOT / "build" / "oi-plan"))
 
 HEADER = ("id,status,sun_fraction,sun_fraction_atm,e_sun,e_earth,e_moon,earth_theta_deg,"
-          "earth_h_km,flux_obs,mag_v,exposure_s,gain,snr,flags,detect_margin_mag")
-NUMERIC = HEADER.split(",")[2:14] + ["detect_margin_mag"]
+          "earth_h_km,flux_obs,mag_v,exposure_s,gain,snr,flags")
+NUMERIC = HEADER.split(",")[2:14]
 FLAG_NAMES = {"sun_exclusion", "earth_in_fov", "eclipsed", "too_faint", "saturated",
               "penumbra", "occulted", "resolved", "moon_in_fov", "trailed"}
 AU = 149597870.7
