@@ -326,8 +326,10 @@ static void do_expose(fz_in *in)
     x.flux_w_m2 = fz_real(in);
     x.background_w_m2_sr = fz_real(in);
     x.flags = fz_u8(in);
+    x.rate_rad_s = 0;
     g.fill = fz_real(in);
     g.snr_min = fz_real(in);
+    g.sky = 0u;
     NAN_FILL(e);
     st = oi_expose((which & 1) ? NULL : &cam, &x, (which & 2) ? NULL : &g, &e);
     check_exposure(st, &cam, &e);
@@ -344,6 +346,7 @@ static void do_expose_scene(fz_in *in, const oi_scene *s, oi_illum *il, const oi
     fz_camera(in, &cam);
     g.fill = fz_real(in);
     g.snr_min = fz_real(in);
+    g.sky = 0u;
     if (which & 4) {
         /* corrupted telemetry: an illumination record that oi_illuminate did
          * not produce */

@@ -9,11 +9,15 @@
  *                        oi_model.earth_table, earthshine is the Lambert far
  *                        field with OI_WARN_TABLE_RANGE; a caller's table
  *                        still works.
- *   OI_NO_MOON           no moonlight: removes oi_moon_* and the Moon term.
+ *   OI_NO_MOON           no moonlight: removes oi_moon_* and the Moon term, and
+ *                        OI_SKY_MOON (a goal with that bit gets OI_ERR_FLAGS).
  *   OI_NO_EXPOSURE       no camera model: removes oi_camera*, oi_expose*.
  *   OI_NO_ATMOSPHERE     no refraction into the shadow (sun_fraction_atm equals
  *                        sun_fraction): the atmosphere's code and its default
  *                        table are removed.
+ *   OI_NO_SKY            no zodiacal light: removes oi_zodiacal_radiance, its
+ *                        table (src/zodiacal.c) and OI_SKY_ZODIACAL (a goal
+ *                        with that bit gets OI_ERR_FLAGS).
  *   OI_NO_LIMB_DARKENING no limb-darkened solar disc: removes its integral
  *                        (src/limb_darkening.c); oi_shadow.fraction_ld equals
  *                        fraction (the uniform disc), and a model with
@@ -72,6 +76,7 @@ typedef double oi_real;
 #define oi_illuminate_batch oi_illuminate_batch_sp
 #define oi_expose_batch oi_expose_batch_sp
 #define oi_expose_scene_batch oi_expose_scene_batch_sp
+#define oi_zodiacal_radiance oi_zodiacal_radiance_sp
 #endif
 
 #endif /* OI_CONFIG_H */

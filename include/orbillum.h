@@ -321,6 +321,27 @@ int oi_earthshine(oi_real theta, oi_real h_km, const oi_model *model,
 oi_real oi_moon_phase_law(oi_real alpha);
 #endif
 
+/* ---------------------------------------------------------------- sky */
+#ifndef OI_NO_SKY
+/*
+ * oi_zodiacal_radiance: radiance of the zodiacal light seen from the Earth
+ * (W/m^2/sr, as sunlight over the whole spectrum, the convention of
+ * oi_expose_in.background_w_m2_sr) in the direction at ecliptic longitude
+ * dlambda_rad from the Sun's and ecliptic latitude beta_rad.
+ * Given:   dlambda_rad  any finite value (taken modulo 2 pi; the sign does
+ *                       not matter); beta_rad: the sign does not matter,
+ *                       |beta| above pi/2 is taken as pi/2
+ * Returns: the radiance; 0 for a non-finite argument.
+ * Notes:   Leinert et al. 1998 (A&AS 127, 1), Table 17 at 500 nm, bilinear
+ *          between its nodes, converted to a whole-spectrum radiance with
+ *          the 5772 K solar spectrum (7.6353e-9 W/m^2/sr per table unit).
+ *          The table has no entries within ~15 deg of the Sun: those cells
+ *          hold the nearest tabulated value of their latitude (a lower
+ *          bound). src/zodiacal.c, docs/camera.md.
+ */
+oi_real oi_zodiacal_radiance(oi_real dlambda_rad, oi_real beta_rad);
+#endif
+
 /* ---------------------------------------------------------------- scene */
 
 typedef struct oi_scene {
@@ -336,6 +357,9 @@ typedef struct oi_scene {
     oi_real target_radius_m; /* > 0 */
     int has_moon;            /* nonzero: moon_km is given, whatever the terms: the
                                 Moon then occults the Sun (OI_TERM_MOON implies it) */
+    oi_real target_vel_km_s[3];   /* target velocity (km/s, the positions' frame); read by
+                                     oi_expose_scene only; zero: at rest */
+    oi_real observer_vel_km_s[3]; /* observer velocity (km/s), as target_vel_km_s */
 } oi_scene;
 
 /* oi_scene_defaults: fill a scene with the defaults: zero positions, no
@@ -459,6 +483,10 @@ typedef struct oi_camera {
     int n_gains;                /* number of gains, 1..OI_CAMERA_MAX_GAINS */
     oi_real gains[OI_CAMERA_MAX_GAINS];    /* ascending; saturation = full_well / gain */
     oi_real read_noise_e[OI_CAMERA_MAX_GAINS]; /* input-referred read noise per gain (e-) */
+    oi_real max_trail_px;       /* longest acceptable trail (pixels), [0, 1e6]; 0: no limit */
+    oi_real detect_false_alarm; /* detection rule: per-pixel false-alarm probability of its
+                                   threshold, [1e-15, 0.5); 0: the SNR rule (goal.snr_min) */
+    oi_real detect_probability; /* detection probability required, [0.5, 0.999999]; 0: 0.5 */
 } oi_camera;
 
 /* oi_camera_builtin: built-in camera number index (0 is the default,
@@ -480,6 +508,8 @@ const oi_camera *oi_camera_find(const char *name);
 #define OI_FLAG_OCCULTED      (64u)  /* the Earth hides the target from the observer */
 #define OI_FLAG_RESOLVED      (128u) /* target wider than a pixel: peak limited by its radiance */
 #define OI_FLAG_MOON_SHADOW   (256u) /* the Moon hides part of the Sun from the target */
+#define OI_FLAG_MOON_IN_FOV   (512u) /* the Moon's disc in the field (oi_expose_goal.sky OI_SKY_MOON) */
+#define OI_FLAG_TRAILED       (1024u) /* even the chosen exposure trails beyond max_trail_px */
 
 /* oi_flag_name: name of one flag bit ("sun_exclusion", "earth_in_fov",
  * "eclipsed", "too_faint", "saturated", "penumbra", "occulted", "resolved",
@@ -487,10 +517,21 @@ const oi_camera *oi_camera_find(const char *name);
  * NULL for 0, several bits or an unknown bit. */
 const char *oi_flag_name(unsigned flag_bit);
 
+/* Sky backgrounds oi_expose_scene adds behind the target (oi_expose_goal.sky,
+ * a bit mask; 0: the dark sky, with the sunlit Earth only, of earlier
+ * versions). docs/camera.md, "Sky background". */
+#ifndef OI_NO_SKY
+#define OI_SKY_ZODIACAL (1u)  /* zodiacal light (Leinert et al. 1998), where the ray misses Earth and Moon */
+#endif
+#ifndef OI_NO_MOON
+#define OI_SKY_MOON     (2u)  /* the Moon: OI_FLAG_MOON_IN_FOV, its surface behind the target, occultation */
+#endif
+
 /* Goals of the exposure choice. Zero fields mean defaults. */
 typedef struct oi_expose_goal {
     oi_real fill;            /* brightest-pixel fill as a fraction of saturation (0.5) */
     oi_real snr_min;         /* SNR below which TOO_FAINT is raised (5) */
+    unsigned sky;            /* OI_SKY_* backgrounds oi_expose_scene adds (0: none) */
 } oi_expose_goal;
 
 /* Photometric input of the exposure choice. */
@@ -498,6 +539,8 @@ typedef struct oi_expose_in {
     oi_real flux_w_m2;           /* target flux at the aperture (W/m^2) */
     oi_real background_w_m2_sr;  /* sky radiance behind the target (W/m^2/sr) */
     unsigned flags;              /* geometric flags already known (OI_FLAG_*) */
+    oi_real rate_rad_s;          /* target's angular rate across the field (rad/s, [0, 1e3]);
+                                    0: at rest */
 } oi_expose_in;
 
 typedef struct oi_exposure {
@@ -513,7 +556,17 @@ typedef struct oi_exposure {
     oi_real snr;             /* signal / noise of the brightest pixel */
     oi_real sun_angle_rad;   /* Sun to boresight (oi_expose_scene only) */
     unsigned flags;          /* OI_FLAG_* */
+    oi_real background_w_m2_sr; /* radiance behind the target used (W/m^2/sr) */
+    oi_real rate_rad_s;      /* target's angular rate across the field (rad/s) */
+    oi_real trail_px;        /* trail length during the chosen exposure (pixels) */
+    oi_real trail_factor;    /* peak pixel's signal over that at rest, (0, 1] */
+    oi_real signal_min_e;    /* smallest signal_e the detection rule accepts at this setting */
+    oi_real detect_margin_mag; /* 2.5 log10(signal_e / signal_min_e): > 0 detectable;
+                                  OI_DETECT_MARGIN_NONE without signal */
 } oi_exposure;
+
+/* detect_margin_mag of a setting without any target signal. */
+#define OI_DETECT_MARGIN_NONE (-100.0)
 
 /*
  * oi_expose: choose the exposure time and gain for a point-like target.
@@ -536,11 +589,15 @@ typedef struct oi_exposure {
  *   OI_ERR_CAMERA     a camera field outside Note 4's ranges, times or gains
  *                     not strictly ascending, n_times or n_gains out of range
  *   OI_ERR_INPUT      a goal field out of range (NaN included)
+ *   OI_ERR_FLAGS      goal->sky has bits outside OI_SKY_* (oi_expose itself
+ *                     has no geometry and adds no sky)
  *   OI_ERR_NONFINITE  flux or background NaN or infinite
  *   OI_ERR_INPUT      flux negative
  *   OI_ERR_MAGNITUDE  flux brighter than magnitude OI_MAG_MIN (> 2.74e4 W/m^2)
  *   OI_ERR_INPUT      background negative or above 1e8 W/m^2/sr
  *   OI_ERR_FLAGS      in->flags has bits outside the OI_FLAG_* set
+ *   OI_ERR_NONFINITE  in->rate_rad_s NaN or infinite
+ *   OI_ERR_INPUT      in->rate_rad_s outside [0, 1e3] rad/s
  * Notes:
  *   1. Rates of photo-electrons (e-/s) in the brightest pixel, with
  *      A = pi (D/2)^2 and k = transmission * band_fraction * QE / photon_energy:
@@ -552,8 +609,9 @@ typedef struct oi_exposure {
  *      highest SNR (ties: lower gain, then shorter time); if none reaches
  *      down to the goal, the shortest time at the lowest gain (the lowest
  *      fill), with OI_FLAG_SATURATED when even that saturates.
- *      OI_FLAG_TOO_FAINT when the SNR at the longest time and highest gain
- *      is below goal.snr_min.
+ *      OI_FLAG_TOO_FAINT when the target is not detectable (Note 8) at the
+ *      longest time and highest gain: with the SNR rule, when the SNR
+ *      there is below goal.snr_min.
  *   3. in->flags bits OI_FLAG_TOO_FAINT and OI_FLAG_SATURATED are ignored
  *      (recomputed); the geometric bits are copied to out->flags.
  *   4. Valid camera ranges: aperture (0, 10] m, focal length [1e-3, 1e3] m,
@@ -562,7 +620,9 @@ typedef struct oi_exposure {
  *      [1, 1e9] e-, dark current [0, 1e9] e-/s, fov (0, pi], Sun exclusion
  *      [0, pi], 1..OI_CAMERA_MAX_TIMES times in (0, 1e4] s strictly
  *      ascending, 1..OI_CAMERA_MAX_GAINS gains in (0, 1e3] strictly
- *      ascending, read noise [0, 1e6] e-. name is not used (may be NULL).
+ *      ascending, read noise [0, 1e6] e-, max_trail_px [0, 1e6],
+ *      detect_false_alarm 0 or [1e-15, 0.5), detect_probability 0 or
+ *      [0.5, 0.999999]. name is not used (may be NULL).
  *      Every camera is checked, the built-in ones too.
  *   5. The target is treated as a point source: a resolved target puts less
  *      than psf_peak_fraction of its light in one pixel (oi_expose_scene
@@ -570,6 +630,25 @@ typedef struct oi_exposure {
  *   6. Exactness and cost: the choice is that of the full search over every
  *      (time, gain) pair, to the bit, made from O(log n_times + n_gains)
  *      evaluations (docs/camera.md, "Cost of the search"; src/expose.c).
+ *   7. Motion (in->rate_rad_s > 0; docs/camera.md, "Motion"): the trail of
+ *      time t is L = rate t / (pitch / focal) pixels; the brightest pixel's
+ *      signal is that at rest times trail_factor, the closed form for a
+ *      Gaussian PSF of the camera's peak fraction swept along a pixel row.
+ *      The times allowed are those with L <= max_trail_px (all when it is
+ *      0), at least the shortest, with OI_FLAG_TRAILED when even that
+ *      trails beyond it; every allowed (time, gain) pair is evaluated by
+ *      Note 2's rule; OI_FLAG_TOO_FAINT when no allowed time is detectable
+ *      at the highest gain. At rest: trail_px 0, trail_factor 1, the
+ *      choice of earlier versions bit for bit.
+ *   8. Detection (docs/camera.md, "Detection"): camera->detect_false_alarm
+ *      0, the SNR rule: S / sqrt(S + B + R^2) >= goal.snr_min. Otherwise a
+ *      per-pixel threshold T = k sqrt(B + R^2), k = Phi^-1(1 -
+ *      detect_false_alarm), crossed with probability detect_probability
+ *      (0: 0.5): S >= T + z sqrt(S + B + R^2), z = Phi^-1(probability)
+ *      (electrons at the setting; Gaussian noise). signal_min_e is the
+ *      smallest such S at the chosen setting, detect_margin_mag =
+ *      2.5 log10(signal_e / signal_min_e) (within +-100;
+ *      OI_DETECT_MARGIN_NONE without signal).
  */
 int oi_expose(const oi_camera *camera, const oi_expose_in *in,
               const oi_expose_goal *goal, oi_exposure *out);
@@ -584,25 +663,32 @@ int oi_expose(const oi_camera *camera, const oi_expose_in *in,
  *   illum   oi_illuminate's result for this scene (e_sun, e_earth, e_moon,
  *           flux_obs and shadow.region are used)
  *   model   NULL or model (earth_radius_km, au_km, tsi_w_m2)
- *   goal    NULL or goals (as oi_expose)
+ *   goal    NULL or goals (as oi_expose); goal->sky: the sky backgrounds
+ *           (Note 8; 0 or a NULL goal: none but the sunlit Earth)
  * Returned:
- *   out     as oi_expose, with sun_angle_rad (Note 1) and the geometric flags
+ *   out     as oi_expose, with sun_angle_rad (Note 1), the geometric flags
+ *           and background_w_m2_sr, the radiance used behind the target
  * Returns (checked in this order; on error *out is zeroed):
  *   OI_OK
  *   OI_ERR_NULL       camera, scene, illum or out is NULL, or
  *                     scene->has_observer is 0 (the observer is required)
  *   OI_ERR_MODEL, OI_ERR_RADIUS  the model is invalid (as oi_illuminate)
- *   OI_ERR_NONFINITE  a component of sun_km, target_km or observer_km
+ *   OI_ERR_NONFINITE  a component of sun_km, target_km or observer_km (or
+ *                     moon_km, when goal->sky has OI_SKY_MOON and
+ *                     scene->terms has OI_TERM_MOON)
  *   OI_ERR_ALBEDO     earth_albedo or target_albedo outside [0, 1] (NaN too)
  *   OI_ERR_NONFINITE  illum's e_sun, e_earth, e_moon or flux_obs
  *   OI_ERR_INPUT      one of those four negative
  *   OI_ERR_CAMERA     the camera is invalid (oi_expose Note 4)
  *   OI_ERR_ZERO_VECTOR  observer or Sun at the Earth's centre
+ *   OI_ERR_NONFINITE  a velocity component NaN or infinite
+ *   OI_ERR_INPUT      a velocity component beyond 299792.458 km/s
  *   OI_ERR_BELOW_SURFACE  |observer| or |target| <= the Earth's radius
  *   OI_ERR_OBSERVER_AT_TARGET  observer and target at the same position
  *   then oi_expose's statuses for the goal and the derived flux
- *   (OI_ERR_INPUT for a goal out of range, OI_ERR_MAGNITUDE for a flux
- *   brighter than magnitude OI_MAG_MIN).
+ *   (OI_ERR_INPUT for a goal out of range, OI_ERR_FLAGS for unknown
+ *   goal->sky bits, OI_ERR_MAGNITUDE for a flux brighter than magnitude
+ *   OI_MAG_MIN).
  * Notes:
  *   1. Boresight b = target - observer. sun_angle_rad = angle(sun - observer,
  *      b) (as oi_angle); OI_FLAG_SUN_EXCLUSION when it is below
@@ -627,9 +713,21 @@ int oi_expose(const oi_camera *camera, const oi_expose_in *in,
  *      OI_FLAG_PENUMBRA when it is OI_SHADOW_PENUMBRA or OI_SHADOW_ANNULAR
  *      (part of the Sun hidden in both); OI_FLAG_MOON_SHADOW when
  *      illum->sun_moon_hidden > 0 (the Moon hides part of the Sun).
- *   7. Not modelled: the Moon or the Earth's limb glow in the field, stray
- *      light from the Sun outside the exclusion angle, the atmosphere's
- *      radiance at the limb. docs/camera.md.
+ *   7. Not modelled: the Earth's limb glow in the field, stray light from
+ *      the Sun outside the exclusion angle or from a Moon beside the target,
+ *      the atmosphere's radiance at the limb, the integrated starlight.
+ *   8. Sky (goal->sky; positions taken as ICRF/GCRS-aligned, the ecliptic
+ *      of J2000): the first surface the boresight ray meets decides. The
+ *      Earth: Note 3. OI_SKY_MOON (read only with OI_TERM_MOON in
+ *      scene->terms): OI_FLAG_MOON_IN_FOV when the Moon's disc comes within
+ *      fov_rad / 2 of the boresight; met before the target, OI_FLAG_OCCULTED
+ *      (flux 0); met, a Lambertian Moon of model moon_albedo lit by
+ *      illum->moon_sun_fraction of the Sun. OI_SKY_ZODIACAL, where the ray
+ *      meets neither: oi_zodiacal_radiance of the boresight's ecliptic
+ *      longitude from the Sun and latitude, seen from the observer.
+ *      docs/camera.md, "Sky background".
+ *   9. Motion: rate_rad_s = |(target_vel - observer_vel) x b^| / range
+ *      (clamped at 1e3 rad/s), then oi_expose's Note 7.
  */
 int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
                     const oi_illum *illum, const oi_model *model,

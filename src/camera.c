@@ -24,6 +24,9 @@
 #define CAM_TIME_MAX_S       OI_R(1e4)
 #define CAM_GAIN_MAX         OI_R(1e3)
 #define CAM_READ_NOISE_MAX_E OI_R(1e6)
+#define CAM_TRAIL_MAX_PX     OI_R(1e6)
+#define CAM_FALSE_ALARM_MIN  OI_R(1e-15) /* a threshold of 7.9 sigma */
+#define CAM_DETECT_P_MAX     OI_R(0.999999)
 
 /*
  * oi__camera_valid: nonzero when every field of the camera is in range (the
@@ -51,6 +54,11 @@ int oi__camera_valid(const oi_camera *c)
         !oi__in_open_closed(c->psf_peak_fraction, 0, one) ||
         !oi__in_open_closed(c->fov_rad, 0, OI_PI_R) ||
         !oi__in_closed(c->sun_exclusion_rad, 0, OI_PI_R) ||
+        !oi__in_closed(c->max_trail_px, 0, CAM_TRAIL_MAX_PX) ||
+        !(c->detect_false_alarm == 0 ||
+          (c->detect_false_alarm >= CAM_FALSE_ALARM_MIN && c->detect_false_alarm < OI_R(0.5))) ||
+        !(c->detect_probability == 0 ||
+          oi__in_closed(c->detect_probability, OI_R(0.5), CAM_DETECT_P_MAX)) ||
         c->n_times < 1 || c->n_times > OI_CAMERA_MAX_TIMES ||
         c->n_gains < 1 || c->n_gains > OI_CAMERA_MAX_GAINS) {
         return 0;

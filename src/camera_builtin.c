@@ -50,7 +50,10 @@ static const oi_camera builtin[] = {
            13 e- at unit gain (datasheet), assumed unchanged at higher gain */
         4,
         { OI_R(1.0), OI_R(1.2), OI_R(1.4), OI_R(1.6) },
-        { OI_R(13.0), OI_R(13.0), OI_R(13.0), OI_R(13.0) }
+        { OI_R(13.0), OI_R(13.0), OI_R(13.0), OI_R(13.0) },
+        OI_R(3.0),          /* longest acceptable trail: about twice the PSF's FWHM (1.6 px
+                               for its peak fraction 0.30) (assumption) */
+        0, 0                /* detection: the SNR rule of the goal (docs/camera.md) */
     },
     /*
      * 1: "telescope-15cm": a 15 cm space telescope of the NEOSSat / MOST
@@ -79,7 +82,10 @@ static const oi_camera builtin[] = {
         /* one conversion gain; read noise 6 e- (datasheet typical at 1 MHz) */
         1,
         { OI_R(1.0) },
-        { OI_R(6.0) }
+        { OI_R(6.0) },
+        OI_R(3.0),          /* longest acceptable trail: about twice the PSF's FWHM (1.7 px
+                               for its peak fraction 0.25) (assumption) */
+        0, 0                /* detection: the SNR rule of the goal (docs/camera.md) */
     }
 };
 

@@ -22,8 +22,12 @@
  * computed here. */
 #define FLAGS_GEOMETRIC (OI_FLAG_SUN_EXCLUSION | OI_FLAG_EARTH_IN_FOV | OI_FLAG_ECLIPSED | \
                          OI_FLAG_PENUMBRA | OI_FLAG_OCCULTED | OI_FLAG_RESOLVED | \
-                         OI_FLAG_MOON_SHADOW)
-#define FLAGS_ALL (FLAGS_GEOMETRIC | OI_FLAG_TOO_FAINT | OI_FLAG_SATURATED)
+                         OI_FLAG_MOON_SHADOW | OI_FLAG_MOON_IN_FOV)
+#define FLAGS_ALL (FLAGS_GEOMETRIC | OI_FLAG_TOO_FAINT | OI_FLAG_SATURATED | OI_FLAG_TRAILED)
+
+/* Largest accepted angular rate (rad/s): far above any orbit's, small
+ * enough that no trail overflows (1e3 rad/s * 1e4 s / 1e-10 rad). */
+#define IN_RATE_MAX OI_R(1e3)
 
 /* Brightest accepted target flux (W/m^2): magnitude OI_MAG_MIN at the
  * nominal TSI, OI_TSI_W_M2 * 10^(-0.4 (OI_MAG_MIN - OI_SUN_MAG_V)) =
@@ -65,7 +69,77 @@ typedef struct {
     oi_real rate_b;     /* background and dark current */
     oi_real goal_fill;  /* goal fill, defaults filled in */
     oi_real snr_min;    /* goal SNR, defaults filled in */
+    oi_real det_k;      /* detection threshold in background sigmas; < 0: the SNR rule */
+    oi_real det_z;      /* detection margin in the target pixel's sigmas */
 } expose_rates;
+
+/* The detection rule (docs/camera.md, "Detection"): the camera's threshold
+ * k = Phi^-1(1 - false_alarm) and z = Phi^-1(detect_probability) (as upper
+ * tails, so that a false-alarm rate of 1e-15 keeps its digits), or the SNR
+ * rule (det_k < 0, z = goal.snr_min). */
+static void detect_rule(const oi_camera *c, expose_rates *r)
+{
+    if (c->detect_false_alarm > 0) {
+        r->det_k = oi__normal_quantile_upper(c->detect_false_alarm);
+        /* 1 - p is exact for p in [0.5, 1] (Sterbenz) */
+        r->det_z = c->detect_probability > 0
+                       ? oi__normal_quantile_upper(OI_R(1.0) - c->detect_probability)
+                       : OI_R(0.0);
+    } else {
+        r->det_k = -1;
+        r->det_z = r->snr_min;
+    }
+}
+
+/* The smallest detectable signal at background b (electrons, dark
+ * included) and read noise rn: the threshold k sqrt(b + rn^2) above the
+ * background plus z times the target pixel's noise; the SNR rule is the
+ * threshold 0 and z = snr_min (s / sqrt(s + b + rn^2) = snr_min). */
+static oi_real signal_min(const expose_rates *r, oi_real b, oi_real rn)
+{
+    const oi_real c = b + rn * rn;
+    const oi_real thr = r->det_k > 0 ? r->det_k * OI_SQRT(c) : OI_R(0.0);
+    return oi__signal_min_e(thr, r->det_z, c);
+}
+
+/* Is signal s at background b and read noise rn detected? The SNR rule
+ * keeps its comparison of earlier versions (snr >= snr_min). */
+static int detected(const expose_rates *r, oi_real s, oi_real b, oi_real rn)
+{
+    oi_real var;
+    if (r->det_k < 0) {
+        var = s + b + rn * rn;
+        return (var > 0 ? s / OI_SQRT(var) : OI_R(0.0)) >= r->snr_min;
+    }
+    return s >= signal_min(r, b, rn);
+}
+
+/* The chosen setting's smallest detectable signal and margin (magnitudes,
+ * within +-100; OI_DETECT_MARGIN_NONE without signal). */
+static OI_NOINLINE void detect_margin(const oi_camera *c, const expose_rates *r, oi_exposure *out)
+{
+    oi_real smin = signal_min(r, out->background_e, c->read_noise_e[out->gain_index]);
+    oi_real m = (oi_real)OI_DETECT_MARGIN_NONE;
+    out->signal_min_e = smin;
+    if (out->signal_e > 0) {
+        m = smin > 0 ? OI_R(2.5) * OI_LOG10(out->signal_e / smin) : OI_R(100.0);
+        m = oi__clamp(m, (oi_real)OI_DETECT_MARGIN_NONE, OI_R(100.0));
+    }
+    out->detect_margin_mag = m;
+}
+
+/* The sky backgrounds this build knows (oi_expose_goal.sky). */
+#ifndef OI_NO_SKY
+#define SKY_ZODIACAL_BIT OI_SKY_ZODIACAL
+#else
+#define SKY_ZODIACAL_BIT 0u
+#endif
+#ifndef OI_NO_MOON
+#define SKY_MOON_BIT OI_SKY_MOON
+#else
+#define SKY_MOON_BIT 0u
+#endif
+#define SKY_ALL (SKY_ZODIACAL_BIT | SKY_MOON_BIT)
 
 /* Goal with defaults filled in; 0 when a field is out of range. */
 static int goal_resolve(const oi_expose_goal *goal, oi_real *fill, oi_real *snr_min)
@@ -85,12 +159,13 @@ static int goal_resolve(const oi_expose_goal *goal, oi_real *fill, oi_real *snr_
 }
 
 /* The goal and the photometric input checked, in this order: goal
- * (OI_ERR_INPUT), non-finite values (OI_ERR_NONFINITE), a negative flux
+ * (OI_ERR_INPUT), unknown sky bits (OI_ERR_FLAGS), non-finite values (OI_ERR_NONFINITE), a negative flux
  * (OI_ERR_INPUT), a flux brighter than OI_MAG_MIN (OI_ERR_MAGNITUDE), the
  * background (OI_ERR_INPUT), unknown flag bits (OI_ERR_FLAGS). */
 static int check_input(const oi_expose_in *in, const oi_expose_goal *goal, expose_rates *r)
 {
     if (!goal_resolve(goal, &r->goal_fill, &r->snr_min)) return OI_ERR_INPUT;
+    if (goal != NULL && (goal->sky & ~(unsigned)SKY_ALL) != 0u) return OI_ERR_FLAGS;
     if (!OI_ISFINITE(in->flux_w_m2) || !OI_ISFINITE(in->background_w_m2_sr)) {
         return OI_ERR_NONFINITE;
     }
@@ -98,6 +173,8 @@ static int check_input(const oi_expose_in *in, const oi_expose_goal *goal, expos
     if (!(in->flux_w_m2 <= FLUX_MAX_W_M2)) return OI_ERR_MAGNITUDE;
     if (!oi__in_closed(in->background_w_m2_sr, 0, IN_RADIANCE_MAX)) return OI_ERR_INPUT;
     if ((in->flags & ~(unsigned)FLAGS_ALL) != 0u) return OI_ERR_FLAGS;
+    if (!OI_ISFINITE(in->rate_rad_s)) return OI_ERR_NONFINITE;
+    if (!oi__in_closed(in->rate_rad_s, 0, IN_RATE_MAX)) return OI_ERR_INPUT;
     return OI_OK;
 }
 
@@ -231,6 +308,109 @@ static void best_setting(const oi_camera *camera, const expose_rates *r, int kk,
     }
 }
 
+/* A moving target's trail (docs/camera.md, "Motion"): its rate across the
+ * focal plane and the Gaussian PSF of the camera's peak fraction. */
+typedef struct {
+    oi_real px_s;   /* trail rate (pixels/s) */
+    oi_real sigma;  /* PSF sigma (pixels) */
+    oi_real q;      /* central fraction per axis, erf(1 / (2 sqrt(2) sigma)) */
+} trail_model;
+
+/* Fill *out for time index ti and gain index gi of a moving target: the
+ * brightest pixel's signal is the rate at rest times the trail's factor. */
+static void evaluate_moving(const oi_camera *c, const expose_rates *r, const trail_model *tm,
+                            int ti, int gi, oi_exposure *out)
+{
+    oi_real t = c->times_s[ti];
+    out->exposure_s = t;
+    out->gain = c->gains[gi];
+    out->time_index = ti;
+    out->gain_index = gi;
+    out->trail_px = tm->px_s * t;
+    out->trail_factor = oi__trail_factor(tm->sigma, tm->q, out->trail_px);
+    out->signal_e = r->rate_s * out->trail_factor * t;
+    out->background_e = r->rate_b * t;
+    out->peak_e = out->signal_e + out->background_e;
+    out->saturation_e = c->full_well_e / c->gains[gi];
+    out->fill = out->peak_e / out->saturation_e;
+    out->snr = snr_of(out->signal_e, out->background_e, c->read_noise_e[gi]);
+}
+
+/*
+ * The choice for a moving target (rate_rad_s > 0). The trail makes the
+ * peak's signal grow more slowly than t (about as min(t, t_1) for a trail
+ * of one pixel at t_1), so the SNR may fall at long times and the short
+ * search of the target at rest does not apply: every allowed (time, gain)
+ * pair is evaluated, at most 16 x 8, by the same rule (gains ascending
+ * outside, times ascending inside, strict comparisons). The allowed times
+ * are those whose trail is at most camera->max_trail_px (every time when it
+ * is 0), and at least the shortest: OI_FLAG_TRAILED when even that trails
+ * beyond it. OI_FLAG_TOO_FAINT when no allowed time reaches goal.snr_min
+ * at the highest gain. Returns the flags computed here.
+ */
+/* The signal and background electrons, fill and SNR of one setting of a
+ * moving target, by the same operations as evaluate_moving (without a
+ * whole oi_exposure on the stack). */
+static oi_real moving_setting(const oi_camera *c, const expose_rates *r, const trail_model *tm,
+                              int ti, int gi, oi_real *sig, oi_real *bkg, oi_real *snr)
+{
+    oi_real t = c->times_s[ti];
+    oi_real factor = oi__trail_factor(tm->sigma, tm->q, tm->px_s * t);
+    *sig = r->rate_s * factor * t;
+    *bkg = r->rate_b * t;
+    *snr = snr_of(*sig, *bkg, c->read_noise_e[gi]);
+    return (*sig + *bkg) / (c->full_well_e / c->gains[gi]);
+}
+
+static OI_NOINLINE unsigned expose_moving(const oi_camera *camera, const oi_expose_in *in,
+                                          const expose_rates *r, oi_exposure *out)
+{
+    trail_model tm;
+    oi_real fill, sig, bkg, snr;
+    oi_real best_snr = 0, low_fill = 0;
+    int n, ti, gi, found = 0, best_t = 0, best_g = 0, low_t = 0, low_g = 0, any_detected = 0;
+    unsigned flags = 0;
+    tm.px_s = in->rate_rad_s / (camera->pixel_pitch_m / camera->focal_length_m);
+    tm.sigma = oi__psf_sigma_px(camera->psf_peak_fraction);
+    tm.q = OI_ERF(OI_R(1.0) / (OI_R(2.8284271247461903) * tm.sigma));
+    n = camera->n_times;
+    if (camera->max_trail_px > 0) {
+        n = 0;
+        while (n < camera->n_times && tm.px_s * camera->times_s[n] <= camera->max_trail_px) n++;
+        if (n == 0) {
+            n = 1;
+            flags |= OI_FLAG_TRAILED;
+        }
+    }
+    for (gi = 0; gi < camera->n_gains; gi++) {
+        for (ti = 0; ti < n; ti++) {
+            fill = moving_setting(camera, r, &tm, ti, gi, &sig, &bkg, &snr);
+            if (fill < OI_R(1.0) && fill <= r->goal_fill && (!found || snr > best_snr)) {
+                found = 1;
+                best_snr = snr;
+                best_t = ti;
+                best_g = gi;
+            }
+            if ((gi == 0 && ti == 0) || fill < low_fill) {
+                low_fill = fill;
+                low_t = ti;
+                low_g = gi;
+            }
+            if (gi == camera->n_gains - 1 && detected(r, sig, bkg, camera->read_noise_e[gi])) {
+                any_detected = 1;
+            }
+        }
+    }
+    if (!found) {
+        best_t = low_t;
+        best_g = low_g;
+        if (!(low_fill < OI_R(1.0))) flags |= OI_FLAG_SATURATED;
+    }
+    evaluate_moving(camera, r, &tm, best_t, best_g, out);
+    if (!any_detected) flags |= OI_FLAG_TOO_FAINT;
+    return flags;
+}
+
 /*
  * oi__expose_valid: the choice of oi_expose for a valid camera; out already
  * zeroed, and left so on error.
@@ -266,8 +446,17 @@ int oi__expose_valid(const oi_camera *camera, const oi_expose_in *in,
     st = check_input(in, goal, &r);
     if (st != OI_OK) return st;
     pixel_rates(camera, in, &r);
-    kk = first_time_over_goal(camera, &r); /* 1 */
+    detect_rule(camera, &r);
     flags = in->flags & (unsigned)FLAGS_GEOMETRIC;
+    if (in->rate_rad_s > 0) {
+        out->flags = flags | expose_moving(camera, in, &r, out);
+        detect_margin(camera, &r, out);
+        out->sun_angle_rad = 0;
+        out->background_w_m2_sr = in->background_w_m2_sr;
+        out->rate_rad_s = in->rate_rad_s;
+        return OI_OK;
+    }
+    kk = first_time_over_goal(camera, &r); /* 1 */
     if (kk == 0) {
         /* 2. */
         evaluate(camera, &r, 0, 0, out);
@@ -276,12 +465,22 @@ int oi__expose_valid(const oi_camera *camera, const oi_expose_in *in,
         best_setting(camera, &r, kk, &best_t, &best_g);
         evaluate(camera, &r, best_t, best_g, out);
     }
-    if (snr_at(&r, camera->times_s[camera->n_times - 1],
-               camera->read_noise_e[camera->n_gains - 1]) < r.snr_min) {
-        flags |= OI_FLAG_TOO_FAINT;
+    if (r.det_k < 0) {
+        if (snr_at(&r, camera->times_s[camera->n_times - 1],
+                   camera->read_noise_e[camera->n_gains - 1]) < r.snr_min) {
+            flags |= OI_FLAG_TOO_FAINT;
+        }
+    } else {
+        oi_real t = camera->times_s[camera->n_times - 1];
+        if (!detected(&r, r.rate_s * t, r.rate_b * t, camera->read_noise_e[camera->n_gains - 1])) {
+            flags |= OI_FLAG_TOO_FAINT;
+        }
     }
+    detect_margin(camera, &r, out);
     out->flags = flags;
     out->sun_angle_rad = 0;
+    out->background_w_m2_sr = in->background_w_m2_sr;
+    out->trail_factor = 1; /* at rest: no trail */
     return OI_OK;
 }
 
@@ -306,7 +505,8 @@ int oi_expose(const oi_camera *camera, const oi_expose_in *in,
  * Returned (function value):
  *             const char *  "sun_exclusion", "earth_in_fov", "eclipsed",
  *                           "too_faint", "saturated", "penumbra",
- *                           "occulted", "resolved", "moon_shadow"; NULL for 0, a
+ *                           "occulted", "resolved", "moon_shadow", "moon_in_fov",
+ *                           "trailed"; NULL for 0, a
  *                           combination of bits
  *                           or an unknown bit.
  */
@@ -322,6 +522,8 @@ const char *oi_flag_name(unsigned flag_bit)
     case OI_FLAG_OCCULTED: return "occulted";
     case OI_FLAG_RESOLVED: return "resolved";
     case OI_FLAG_MOON_SHADOW: return "moon_shadow";
+    case OI_FLAG_MOON_IN_FOV: return "moon_in_fov";
+    case OI_FLAG_TRAILED: return "trailed";
     default: return NULL;
     }
 }

@@ -15,6 +15,7 @@
  * the boresight. */
 typedef struct {
     oi_real re, au, tsi; /* Earth radius (km), AU (km), TSI (W/m^2) */
+    oi_real rm, moon_albedo; /* Moon radius (km) and Lambert albedo */
     oi_real r_obs;       /* |observer| (km) */
     oi_real range;       /* |target - observer| (km) */
     oi_real b[3];        /* boresight target - observer (km) */
@@ -24,37 +25,71 @@ typedef struct {
 /* The model constants oi_expose_scene needs (oi__model_resolve's status);
  * out of line (OI_NOINLINE) so that its copy of the model is not in the frame
  * of oi_expose_scene, which is live during the choice as well. */
-static OI_NOINLINE int scene_model(const oi_model *model, oi_real *re, oi_real *au, oi_real *tsi)
+static OI_NOINLINE int scene_model(const oi_model *model, oi_real *re, oi_real *au, oi_real *tsi,
+                                   oi_real moon[2])
 {
     oi_model m;
     int st = oi__model_resolve(model, &m);
     *re = m.earth_radius_km;
     *au = m.au_km;
     *tsi = m.tsi_w_m2;
+    moon[0] = m.moon_radius_km;
+    moon[1] = m.moon_albedo;
     return st;
+}
+
+/* Largest accepted velocity component (km/s): the speed of light, far above
+ * any orbit's (and a bound that keeps differences finite in single
+ * precision). */
+#define SPEED_MAX_KM_S OI_R(299792.458)
+
+static int speed_ok(const oi_real v[3])
+{
+    return OI_FABS(v[0]) <= SPEED_MAX_KM_S && OI_FABS(v[1]) <= SPEED_MAX_KM_S &&
+           OI_FABS(v[2]) <= SPEED_MAX_KM_S;
+}
+
+/* Largest angular rate handed to oi_expose (rad/s, its limit): a faster
+ * target is smeared over the whole field at any exposure anyway. */
+#define RATE_MAX_RAD_S OI_R(1e3)
+
+/* The target's angular rate seen by the observer (docs/camera.md,
+ * "Motion"): the relative velocity across the line of sight over the
+ * range, |(v_t - v_o) x bh| / range; 0 at rest. */
+static OI_NOINLINE oi_real angular_rate(const oi_scene *scene, const scene_geom *g)
+{
+    oi_real v[3], c[3], w;
+    oi__sub(scene->target_vel_km_s, scene->observer_vel_km_s, v);
+    oi__cross(v, g->bh, c);
+    w = oi__norm(c) / g->range;
+    return w < RATE_MAX_RAD_S ? w : RATE_MAX_RAD_S;
 }
 
 /* The inputs checked in the order of the statuses of the contract, and the
  * boresight formed. */
-static int check_scene(const oi_camera *camera, const oi_scene *scene, const oi_illum *illum,
-                       const oi_model *model, scene_geom *g)
+static OI_NOINLINE int check_scene(const oi_camera *camera, const oi_scene *scene, const oi_illum *illum,
+                       const oi_model *model, int use_moon, scene_geom *g)
 {
-    oi_real r_tgt, re, au, tsi; /* locals: g's address does not leave this file */
+    oi_real r_tgt, re, au, tsi, moon[2]; /* locals: g's address does not leave this file */
     int st;
     if (!scene->has_observer) return OI_ERR_NULL;
     if (model == NULL) { /* the default model (src/model.c), without a copy */
         re = (oi_real)OI_EARTH_RADIUS_KM;
         au = (oi_real)OI_AU_KM;
         tsi = (oi_real)OI_TSI_W_M2;
+        moon[0] = (oi_real)OI_MOON_RADIUS_KM;
+        moon[1] = (oi_real)OI_MOON_ALBEDO_DEFAULT;
     } else {
-        st = scene_model(model, &re, &au, &tsi);
+        st = scene_model(model, &re, &au, &tsi, moon);
         if (st != OI_OK) return st;
     }
     g->re = re;
     g->au = au;
     g->tsi = tsi;
+    g->rm = moon[0];
+    g->moon_albedo = moon[1];
     if (!oi__finite3(scene->sun_km) || !oi__finite3(scene->target_km) ||
-        !oi__finite3(scene->observer_km)) {
+        !oi__finite3(scene->observer_km) || (use_moon && !oi__finite3(scene->moon_km))) {
         return OI_ERR_NONFINITE;
     }
     if (!(scene->earth_albedo >= 0 && scene->earth_albedo <= OI_R(1.0)) ||
@@ -75,6 +110,12 @@ static int check_scene(const oi_camera *camera, const oi_scene *scene, const oi_
         (scene->sun_km[0] == 0 && scene->sun_km[1] == 0 && scene->sun_km[2] == 0)) {
         return OI_ERR_ZERO_VECTOR;
     }
+    if (!oi__finite3(scene->target_vel_km_s) || !oi__finite3(scene->observer_vel_km_s)) {
+        return OI_ERR_NONFINITE;
+    }
+    if (!speed_ok(scene->target_vel_km_s) || !speed_ok(scene->observer_vel_km_s)) {
+        return OI_ERR_INPUT;
+    }
     if (!(g->r_obs > g->re) || !(r_tgt > g->re)) return OI_ERR_BELOW_SURFACE;
     oi__sub(scene->target_km, scene->observer_km, g->b);
     g->range = oi__unit(g->b, g->bh);
@@ -86,7 +127,7 @@ static int check_scene(const oi_camera *camera, const oi_scene *scene, const oi_
  * form, by the same operations as oi_angle(sun - observer, b) (bh is its
  * unit vector of b); 0, as there, when a difference overflows or the
  * observer is at the Sun. */
-static oi_real sun_angle_of(const oi_scene *scene, const scene_geom *g)
+static OI_NOINLINE oi_real sun_angle_of(const oi_scene *scene, const scene_geom *g)
 {
     oi_real u[3], d; /* sun - observer, its unit vector, then u x bh */
     oi__sub(scene->sun_km, scene->observer_km, u);
@@ -107,7 +148,7 @@ static oi_real sun_angle_of(const oi_scene *scene, const scene_geom *g)
  * "Cost of the search"): gamma < rho (sine negative) is on the disc,
  * whatever h; gamma - rho >= pi/2 (cosine not positive) is at least
  * pi/2 >= h away; only in between is the angle computed and compared with h. */
-static int earth_in_fov(const oi_scene *scene, const scene_geom *g, oi_real fov_rad)
+static OI_NOINLINE int earth_in_fov(const oi_scene *scene, const scene_geom *g, oi_real fov_rad)
 {
     const oi_real one = OI_R(1.0);
     oi_real sin_rho, cos_rho, cos_g, sin_g, sin_gr, cos_gr;
@@ -134,14 +175,14 @@ static int earth_in_fov(const oi_scene *scene, const scene_geom *g, oi_real fov_
  * s^2 + 2 ob s + c = 0 hits when ob < 0 and ob^2 >= c; the near root
  * c / (-ob + sqrt(ob^2 - c)) avoids cancellation, and
  * ob^2 - c = (-ob - sc)(-ob + sc). */
-static void ground_background(const oi_scene *scene, const scene_geom *g, oi_expose_in *in)
+static OI_NOINLINE oi_real ground_background(const oi_scene *scene, const scene_geom *g, oi_expose_in *in)
 {
     oi_real c, sc, ob, s_hit, cos_i, au_d, e0;
     oi_real hit[3], sun_hit[3]; /* then their unit vectors, in place */
     c = (g->r_obs - g->re) * (g->r_obs + g->re); /* |o|^2 - R^2 > 0 */
     sc = OI_SQRT(c);
     ob = oi__dot(scene->observer_km, g->bh);
-    if (!(ob < 0 && -ob >= sc)) return;
+    if (!(ob < 0 && -ob >= sc)) return -1; /* the ray misses the Earth */
     s_hit = c / (-ob + OI_SQRT((-ob - sc) * (-ob + sc)));
     hit[0] = scene->observer_km[0] + s_hit * g->bh[0];
     hit[1] = scene->observer_km[1] + s_hit * g->bh[1];
@@ -156,11 +197,86 @@ static void ground_background(const oi_scene *scene, const scene_geom *g, oi_exp
         e0 = g->tsi * au_d * au_d;
         in->background_w_m2_sr = scene->earth_albedo * e0 * cos_i / OI_PI_R;
     }
+    return s_hit;
 }
+
+/* The Moon (OI_SKY_MOON, docs/camera.md "Sky background"): the flag when
+ * its disc, of angular radius atan2(Rm, sqrt(d^2 - Rm^2)) at distance d,
+ * comes within fov/2 of the boresight (an observer inside the Moon's sphere
+ * sees it everywhere); where the boresight ray meets it, OI_FLAG_OCCULTED
+ * when that is before the target, and the radiance of a Lambertian Moon of
+ * the model's moon_albedo lit by the fraction of the Sun it sees, as the
+ * background when no nearer Earth is in the way (s_earth: the distance to
+ * the Earth along the ray, < 0 when missed). Returns 1 when the ray meets
+ * the Moon (the zodiacal light is then behind it), else 0. */
+static OI_NOINLINE int moon_view(const oi_scene *scene, const oi_illum *illum, const scene_geom *g,
+                     oi_real fov_rad, oi_real s_earth, oi_expose_in *in)
+{
+    oi_real m[3], c[3], d, p, q2, rm2, s_hit, cos_i, e_moon_sun, au_d;
+    oi_real hit[3], sun_hit[3]; /* hit: outward normal at the hit point */
+    int i;
+    oi__sub(scene->moon_km, scene->observer_km, m);
+    if (!oi__finite3(m)) return 0;
+    d = oi__norm(m);
+    p = oi__dot(m, g->bh);
+    oi__cross(m, g->bh, c);
+    q2 = oi__dot(c, c); /* squared distance of the Moon's centre from the ray */
+    rm2 = g->rm * g->rm;
+    if (!(d > g->rm) ||
+        OI_ATAN2(OI_SQRT(q2), p) - OI_ATAN2(g->rm, OI_SQRT((d - g->rm) * (d + g->rm))) <
+            OI_R(0.5) * fov_rad) {
+        in->flags |= OI_FLAG_MOON_IN_FOV;
+    }
+    if (!(q2 <= rm2) || !(p > 0 || d <= g->rm)) return 0;
+    s_hit = p - OI_SQRT(rm2 - q2);
+    if (s_hit < 0) s_hit = 0; /* observer inside the sphere */
+    if (s_hit < g->range) in->flags |= OI_FLAG_OCCULTED;
+    if (s_earth >= 0 && s_earth <= s_hit) return 1; /* the Earth in front of it */
+    for (i = 0; i < 3; i++) {
+        hit[i] = (s_hit * g->bh[i] - m[i]) / g->rm;
+        sun_hit[i] = scene->sun_km[i] - (scene->observer_km[i] + s_hit * g->bh[i]);
+    }
+    in->background_w_m2_sr = 0;
+    if (oi__unit(sun_hit, sun_hit) > 0 && (cos_i = oi__dot(hit, sun_hit)) > 0) {
+        oi__sub(scene->sun_km, scene->moon_km, sun_hit);
+        au_d = g->au / oi__norm(sun_hit);
+        e_moon_sun = g->tsi * au_d * au_d * illum->moon_sun_fraction;
+        in->background_w_m2_sr = g->moon_albedo * e_moon_sun * cos_i / OI_PI_R;
+    }
+    return 1;
+}
+
+#ifndef OI_NO_SKY
+/* Mean obliquity of the ecliptic at J2000 (IAU 2006: 84381.406 arcsec):
+ * positions are taken as ICRF/GCRS-aligned (equator and equinox of J2000
+ * to within the frame bias, 0.02 arcsec), so the ecliptic is that of J2000;
+ * its precession (0.013 deg per year in longitude) is far below the
+ * zodiacal table's 5-15 deg grid. */
+#define ECL_COS OI_R(0.9174821430652419)
+#define ECL_SIN OI_R(0.39777696911260596)
+
+/* Zodiacal light behind the target (OI_SKY_ZODIACAL): the boresight and
+ * the Sun seen from the observer in ecliptic coordinates, their longitude
+ * difference and the boresight's latitude, into oi_zodiacal_radiance. */
+static OI_NOINLINE oi_real zodiacal_background(const oi_scene *scene, const scene_geom *g)
+{
+    oi_real u[3], bx, by, bz, sx, sy, dl, beta;
+    oi__sub(scene->sun_km, scene->observer_km, u);
+    if (!oi__finite3(u) || !(oi__unit(u, u) > 0)) return 0;
+    bx = g->bh[0];
+    by = ECL_COS * g->bh[1] + ECL_SIN * g->bh[2];
+    bz = -ECL_SIN * g->bh[1] + ECL_COS * g->bh[2];
+    sx = u[0];
+    sy = ECL_COS * u[1] + ECL_SIN * u[2];
+    dl = OI_ATAN2(OI_FABS(bx * sy - by * sx), bx * sx + by * sy);
+    beta = OI_ATAN2(bz, OI_SQRT(bx * bx + by * by));
+    return oi_zodiacal_radiance(dl, beta);
+}
+#endif
 
 /* Resolved target (Note 5): the brightest pixel sees at most the radiance
  * albedo * sum(E) / pi over its solid angle. */
-static void limit_resolved(const oi_camera *camera, const oi_scene *scene, const oi_illum *illum,
+static OI_NOINLINE void limit_resolved(const oi_camera *camera, const oi_scene *scene, const oi_illum *illum,
                            oi_expose_in *in)
 {
     oi_real ifov = camera->pixel_pitch_m / camera->focal_length_m;
@@ -187,22 +303,38 @@ int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
 {
     oi_expose_in in;
     scene_geom g;
-    oi_real sun_angle;
-    int st;
+    oi_real sun_angle, s_earth;
+    int st, use_moon, moon_hit = 0;
+    const unsigned sky = goal != NULL ? goal->sky : 0u;
 
     if (out == NULL) return OI_ERR_NULL;
     memset(out, 0, sizeof *out);
     if (camera == NULL || scene == NULL || illum == NULL) return OI_ERR_NULL;
-    st = check_scene(camera, scene, illum, model, &g);
+    /* the Moon's position is read only with OI_TERM_MOON (as oi_illuminate) */
+#ifndef OI_NO_MOON
+    use_moon = (sky & OI_SKY_MOON) != 0u && (scene->terms & OI_TERM_MOON) != 0u;
+#else
+    use_moon = 0; /* no Moon in this build: goal->sky cannot ask for it (OI_ERR_FLAGS) */
+#endif
+    st = check_scene(camera, scene, illum, model, use_moon, &g);
     if (st != OI_OK) return st;
 
     in.flux_w_m2 = illum->flux_obs;
     in.background_w_m2_sr = 0;
     in.flags = 0;
+    in.rate_rad_s = angular_rate(scene, &g);
     sun_angle = sun_angle_of(scene, &g);
     if (sun_angle < camera->sun_exclusion_rad) in.flags |= OI_FLAG_SUN_EXCLUSION;
     if (earth_in_fov(scene, &g, camera->fov_rad)) in.flags |= OI_FLAG_EARTH_IN_FOV;
-    ground_background(scene, &g, &in);
+    s_earth = ground_background(scene, &g, &in);
+    if (use_moon) moon_hit = moon_view(scene, illum, &g, camera->fov_rad, s_earth, &in);
+#ifndef OI_NO_SKY
+    if ((sky & OI_SKY_ZODIACAL) != 0u && s_earth < 0 && !moon_hit) {
+        in.background_w_m2_sr = zodiacal_background(scene, &g);
+    }
+#else
+    (void)moon_hit;
+#endif
     if (in.flags & OI_FLAG_OCCULTED) in.flux_w_m2 = 0;
     limit_resolved(camera, scene, illum, &in);
     in.flags |= region_flags(illum->shadow.region);

@@ -373,6 +373,16 @@ int oi__camera_valid(const oi_camera *c);
  * (src/expose.c); same statuses as oi_expose after its camera check. */
 int oi__expose_valid(const oi_camera *camera, const oi_expose_in *in,
                      const oi_expose_goal *goal, oi_exposure *out);
+
+/* The Gaussian PSF's sigma (pixels) for a central-pixel fraction p in (0, 1]
+ * and the trailed peak's factor for a trail of L pixels (src/trail.c). */
+oi_real oi__psf_sigma_px(oi_real p);
+oi_real oi__trail_factor(oi_real sigma, oi_real q, oi_real trail);
+
+/* The standard normal quantile of an upper tail in (0, 0.5], and the
+ * smallest signal a detection rule accepts (src/detect.c). */
+oi_real oi__normal_quantile_upper(oi_real tail);
+oi_real oi__signal_min_e(oi_real thr, oi_real z, oi_real c);
 #endif
 
 #ifndef OI_NO_ATMOSPHERE

@@ -76,6 +76,12 @@ oi_real oi__atan2(oi_real y, oi_real x);
 #ifndef OI_POW
 #define OI_POW OI_FN(pow)
 #endif
+#ifndef OI_ERF
+#define OI_ERF OI_FN(erf)
+#endif
+#ifndef OI_ERFC
+#define OI_ERFC OI_FN(erfc)
+#endif
 #ifndef OI_FABS
 #define OI_FABS OI_FN(fabs)
 #endif

@@ -412,6 +412,7 @@ static void test_exposure(void)
     check_true("camera_find(builtin 0 name)", oi_camera_find(cam->name) == cam);
     check_true("camera_find(unknown) = NULL", oi_camera_find("no such camera") == NULL);
     check_true("flag_name(sun_exclusion)", str_eq(oi_flag_name(OI_FLAG_SUN_EXCLUSION), "sun_exclusion"));
+    in.rate_rad_s = 0; /* at rest */
     in.flux_w_m2 = OI_R(1e-12);
     in.background_w_m2_sr = (oi_real)0;
     in.flags = 0u;

@@ -58,6 +58,7 @@ int main(void)
             in.flux_w_m2 = vin[1];
             in.background_w_m2_sr = vin[2];
             in.flags = 0u;
+            in.rate_rad_s = 0;
             st += oi_expose(cam, &in, NULL, &ex);
         }
         vout = (int)(oi_flag_name(ex.flags) != NULL);

@@ -25,6 +25,9 @@ enum column {
     C_MOON_X, C_MOON_Y, C_MOON_Z,
     C_OBSERVER_X, C_OBSERVER_Y, C_OBSERVER_Z,
     C_TERMS, C_EARTH_ALBEDO, C_TARGET_ALBEDO, C_TARGET_RADIUS, C_CAMERA, C_ATMOSPHERE,
+    C_SKY,
+    C_TARGET_VX, C_TARGET_VY, C_TARGET_VZ,
+    C_OBSERVER_VX, C_OBSERVER_VY, C_OBSERVER_VZ,
     C_COUNT
 };
 
@@ -34,7 +37,10 @@ static const char *const column_name[C_COUNT] = {
     "target_x", "target_y", "target_z",
     "moon_x", "moon_y", "moon_z",
     "observer_x", "observer_y", "observer_z",
-    "terms", "earth_albedo", "target_albedo", "target_radius_m", "camera", "atmosphere"
+    "terms", "earth_albedo", "target_albedo", "target_radius_m", "camera", "atmosphere",
+    "sky",
+    "target_vx", "target_vy", "target_vz",
+    "observer_vx", "observer_vy", "observer_vz"
 };
 
 typedef struct batch {
@@ -85,7 +91,9 @@ static int read_header(batch *b, csv_reader *r)
     int k, st, missing = 0;
     static const int required[] = {C_SUN_X, C_SUN_Y, C_SUN_Z, C_TARGET_X, C_TARGET_Y, C_TARGET_Z};
     static const int groups[][3] = {{C_MOON_X, C_MOON_Y, C_MOON_Z},
-                                    {C_OBSERVER_X, C_OBSERVER_Y, C_OBSERVER_Z}};
+                                    {C_OBSERVER_X, C_OBSERVER_Y, C_OBSERVER_Z},
+                                    {C_TARGET_VX, C_TARGET_VY, C_TARGET_VZ},
+                                    {C_OBSERVER_VX, C_OBSERVER_VY, C_OBSERVER_VZ}};
 
     for (k = 0; k < C_COUNT; k++) b->col[k] = -1;
     st = csv_next(r);
@@ -128,7 +136,7 @@ static int read_header(batch *b, csv_reader *r)
             missing = 1;
         }
     }
-    for (k = 0; k < 2; k++) {
+    for (k = 0; k < (int)(sizeof groups / sizeof groups[0]); k++) {
         int n = (b->col[groups[k][0]] >= 0) + (b->col[groups[k][1]] >= 0) +
                 (b->col[groups[k][2]] >= 0);
         if (n != 0 && n != 3) {
@@ -206,6 +214,36 @@ static int parse_terms(const char *s, unsigned *terms)
     }
 }
 
+/* Parse a sky list ("zodiacal+moon", "all", "none"; empty: none) into
+ * oi_expose_goal.sky; 0 or -1. */
+static int parse_sky(const char *s, unsigned *sky)
+{
+    char tok[16];
+    const char *p = s;
+    *sky = 0;
+    while (*p == ' ' || *p == '\t') p++;
+    if (*p == '\0') return 0;
+    for (;;) {
+        size_t n = 0;
+        while (*p == ' ' || *p == '\t') p++;
+        while (*p && *p != '+' && *p != ' ' && *p != '\t') {
+            if (n + 1 >= sizeof tok) return -1;
+            tok[n++] = *p++;
+        }
+        tok[n] = '\0';
+        while (*p == ' ' || *p == '\t') p++;
+        if (same_nocase(tok, "none")) {
+            /* nothing added */
+        } else if (same_nocase(tok, "zodiacal")) *sky |= OI_SKY_ZODIACAL;
+        else if (same_nocase(tok, "moon")) *sky |= OI_SKY_MOON;
+        else if (same_nocase(tok, "all")) *sky |= OI_SKY_ZODIACAL | OI_SKY_MOON;
+        else return -1;
+        if (*p == '\0') return 0;
+        if (*p != '+') return -1;
+        p++;
+    }
+}
+
 /* Read a group of three coordinates; returns 1 given, 0 all empty or the
  * columns absent, -1 after reporting a parse error. */
 static int parse_vec(batch *b, const csv_reader *r, int k0, oi_real v[3], int required)
@@ -263,6 +301,7 @@ static int run_row(batch *b, const csv_reader *r, plan_row *row)
 {
     oi_scene sc;
     oi_model model;
+    oi_expose_goal goal;
     const oi_camera *cam = b->default_camera;
     int has_moon, st, short_row = 0;
     double x;
@@ -300,6 +339,9 @@ static int run_row(batch *b, const csv_reader *r, plan_row *row)
     st = parse_vec(b, r, C_OBSERVER_X, sc.observer_km, 0);
     if (st < 0) return 0;
     sc.has_observer = st;
+    /* velocities (km/s): absent or empty, at rest (oi_scene_defaults) */
+    if (parse_vec(b, r, C_TARGET_VX, sc.target_vel_km_s, 0) < 0) return 0;
+    if (parse_vec(b, r, C_OBSERVER_VX, sc.observer_vel_km_s, 0) < 0) return 0;
 
     terms = OI_TERM_SUN | OI_TERM_EARTH | (has_moon ? OI_TERM_MOON : 0u);
     s = field_of(b, r, C_TERMS, &short_row);
@@ -341,6 +383,14 @@ static int run_row(batch *b, const csv_reader *r, plan_row *row)
     }
     model.no_atmosphere = x == 0;
 
+    memset(&goal, 0, sizeof goal);
+    s = field_of(b, r, C_SKY, &short_row);
+    if (s != NULL && parse_sky(s, &goal.sky) < 0) {
+        row_error(b, r->rec_line, b->col[C_SKY],
+                  "sky must be none, zodiacal, moon or all, joined by +; got", s);
+        return 0;
+    }
+
     s = field_of(b, r, C_CAMERA, &short_row);
     if (s != NULL && s[0] != '\0') {
         cam = oi_camera_find(s);
@@ -373,7 +423,7 @@ static int run_row(batch *b, const csv_reader *r, plan_row *row)
     }
     if (row->illum.sun_moon_hidden > (oi_real)0) row->flags |= OI_FLAG_MOON_SHADOW;
     if (sc.has_observer) {
-        int st2 = oi_expose_scene(cam, &sc, &row->illum, &model, NULL, &row->expo);
+        int st2 = oi_expose_scene(cam, &sc, &row->illum, &model, &goal, &row->expo);
         if (st2 < 0) {
             row->status = st2;
             row->status_name = oi_status_name(st2);

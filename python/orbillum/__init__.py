@@ -205,7 +205,7 @@ def _scenes(sun, moon, target, observer, terms, earth_albedo, target_albedo,
     n = _n_rows(sun, target, moon, observer)
     d = L.oi_scene()
     _lib.oi_scene_defaults(ctypes.addressof(d))
-    sc = np.empty(n, dtype=SCENE_DTYPE)  # every field is set below (padding is not read)
+    sc = np.zeros(n, dtype=SCENE_DTYPE)  # fields not set below (velocities) stay 0: at rest
     sc["sun_km"] = sun
     sc["target_km"] = target
     sc["moon_km"] = 0.0 if moon is None else moon
@@ -356,12 +356,13 @@ def _camera_ptr(cam):
                     "orbillum._lib.oi_camera")
 
 
-def _goal(fill, snr_min):
-    if fill is None and snr_min is None:
+def _goal(fill, snr_min, sky=None):
+    if fill is None and snr_min is None and sky is None:
         return None
     g = L.oi_expose_goal()
     g.fill = 0.0 if fill is None else fill
     g.snr_min = 0.0 if snr_min is None else snr_min
+    g.sky = 0 if sky is None else int(sky)
     return g
 
 
@@ -374,7 +375,8 @@ def _exposure_dict(ex, st):
 
 
 def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None,
-           target_albedo=None, target_radius_m=None, model=None, fill=None, snr_min=None):
+           target_albedo=None, target_radius_m=None, model=None, fill=None, snr_min=None,
+           sky=None):
     """oi_illuminate then oi_expose_scene for each row: the suggested exposure.
 
     camera: a built-in camera name (see cameras()), a dict as camera() returns
@@ -382,9 +384,11 @@ def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None
     observer: required (the exposure is what the observer's camera sees):
     None raises ValueError.
     fill, snr_min: the oi_expose_goal (None: the C defaults).
+    sky: oi_expose_goal.sky, OI_SKY_* bits (orbillum._lib; None or 0: no sky
+    background but the sunlit Earth, as before).
     Returns the dict of illuminate() plus the oi_exposure fields (exposure_s,
     gain, time_index, gain_index, signal_e, background_e, peak_e, saturation_e,
-    fill, snr, sun_angle_rad, flags), flag_names, expose_status and
+    fill, snr, sun_angle_rad, flags, background_w_m2_sr), flag_names, expose_status and
     expose_status_name. Rows whose illumination failed are not exposed
     (expose_status equals their illumination status, exposure fields 0).
     row_status / row_status_name: the status build/oi-plan prints for the row.
@@ -395,7 +399,7 @@ def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None
                          "alone call illuminate()")
     cp, _ = _camera_ptr(camera)
     m = _model(model)
-    g = _goal(fill, snr_min)
+    g = _goal(fill, snr_min, sky)
     sc = _scenes(sun, moon, target, observer, terms, earth_albedo, target_albedo,
                  target_radius_m)
     res, status = _illuminate_raw(sc, m)

@@ -87,6 +87,11 @@ OI_BATCH_FRACTION_LD = 1
 OI_BATCH_ATMOSPHERE = 2
 OI_BATCH_GEOMETRY = 4
 OI_BATCH_ALL = OI_BATCH_FRACTION_LD | OI_BATCH_ATMOSPHERE | OI_BATCH_GEOMETRY
+OI_FLAG_MOON_IN_FOV = 512
+OI_FLAG_TRAILED = 1024
+OI_DETECT_MARGIN_NONE = -100.0
+OI_SKY_ZODIACAL = 1
+OI_SKY_MOON = 2
 
 # ---- include/oi_table.h
 OI_TABLE_FORMAT = 4
@@ -169,6 +174,7 @@ class oi_scene(ctypes.Structure):
         ("observer_km", real * 3), ("has_observer", c_int), ("terms", c_uint),
         ("earth_albedo", real), ("target_albedo", real), ("target_radius_m", real),
         ("has_moon", c_int),
+        ("target_vel_km_s", real * 3), ("observer_vel_km_s", real * 3),
     ]
 
 
@@ -196,15 +202,17 @@ class oi_camera(ctypes.Structure):
         ("n_times", c_int), ("times_s", real * OI_CAMERA_MAX_TIMES),
         ("n_gains", c_int), ("gains", real * OI_CAMERA_MAX_GAINS),
         ("read_noise_e", real * OI_CAMERA_MAX_GAINS),
+        ("max_trail_px", real), ("detect_false_alarm", real), ("detect_probability", real),
     ]
 
 
 class oi_expose_goal(ctypes.Structure):
-    _fields_ = [("fill", real), ("snr_min", real)]
+    _fields_ = [("fill", real), ("snr_min", real), ("sky", c_uint)]
 
 
 class oi_expose_in(ctypes.Structure):
-    _fields_ = [("flux_w_m2", real), ("background_w_m2_sr", real), ("flags", c_uint)]
+    _fields_ = [("flux_w_m2", real), ("background_w_m2_sr", real), ("flags", c_uint),
+                ("rate_rad_s", real)]
 
 
 class oi_exposure(ctypes.Structure):
@@ -212,6 +220,8 @@ class oi_exposure(ctypes.Structure):
         ("exposure_s", real), ("gain", real), ("time_index", c_int), ("gain_index", c_int),
         ("signal_e", real), ("background_e", real), ("peak_e", real), ("saturation_e", real),
         ("fill", real), ("snr", real), ("sun_angle_rad", real), ("flags", c_uint),
+        ("background_w_m2_sr", real), ("rate_rad_s", real), ("trail_px", real),
+        ("trail_factor", real), ("signal_min_e", real), ("detect_margin_mag", real),
     ]
 
 
@@ -232,6 +242,7 @@ _PROTOS = {
     "oi_earth_table_default": (POINTER(oi_earth_table), []),
     "oi_atm_table_default": (POINTER(oi_atm_table), []),
     "oi_moon_phase_law": (real, [real]),
+    "oi_zodiacal_radiance": (real, [real, real]),
     "oi_scene_defaults": (None, [c_void_p]),
     "oi_illuminate": (c_int, [c_void_p, c_void_p, c_void_p]),
     "oi_magnitude_v": (real, [real, c_void_p]),

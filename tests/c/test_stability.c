@@ -603,6 +603,7 @@ static void test_hostile_expose(void **state)
                 in.flux_w_m2 = (oi_real)fluxes[i];
                 in.background_w_m2_sr = (oi_real)fluxes[j];
                 in.flags = 0;
+                in.rate_rad_s = 0;
                 st = oi_expose(cam, &in, NULL, &e);
                 if (st < 0) {
                     CHECK(e.exposure_s == 0 && e.signal_e == 0 && e.snr == 0 && e.flags == 0,

@@ -25,7 +25,7 @@ HEADER = ("id,status,sun_fraction,sun_fraction_atm,e_sun,e_earth,e_moon,earth_th
           "earth_h_km,flux_obs,mag_v,exposure_s,gain,snr,flags")
 NUMERIC = HEADER.split(",")[2:14]
 FLAG_NAMES = {"sun_exclusion", "earth_in_fov", "eclipsed", "too_faint", "saturated",
-              "penumbra", "occulted", "resolved"}
+              "penumbra", "occulted", "resolved", "moon_in_fov", "trailed"}
 AU = 149597870.7
 TSI = 1361.0
 
@@ -193,6 +193,53 @@ def test_ids_default_to_row_numbers():
     assert [r["id"] for r in parse(out)] == ["1", "2", "3"]
 
 
+def test_sky_column():
+    """sky: absent, empty and none are today's dark sky, to the byte; the
+    zodiacal light (observer under the target, looking away from the Earth)
+    lowers the telescope's SNR; the Moon's flag needs its position."""
+    up = dict(LIT, observer_x=0, observer_y=6990, observer_z=0, camera="telescope-15cm")
+    rows = [dict(up), dict(up, sky=""), dict(up, sky="none"), dict(up, sky="zodiacal"),
+            dict(up, sky="all"), dict(up, sky="Zodiacal + moon")]
+    code, out, err = run_csv(table(rows))
+    assert code == 0, err
+    absent, empty, none, zodi, alls, both = parse(out)
+    for r in (empty, none):
+        assert r == dict(absent, id=r["id"])
+    assert float(zodi["snr"]) < float(absent["snr"])
+    assert alls["snr"] == zodi["snr"] == both["snr"]
+    # the Moon straight above the target: in the field, and the target is
+    # seen against it
+    moon = dict(up, moon_x=0, moon_y=384400, moon_z=0)
+    code, out, err = run_csv(table([dict(moon, sky="moon"), dict(moon)]))
+    assert code == 0, err
+    with_moon, without = parse(out)
+    assert "moon_in_fov" in with_moon["flags"].split("+")
+    assert "moon_in_fov" not in without["flags"].split("+")
+
+
+def test_velocity_columns():
+    """Velocities: absent and zero are at rest, to the byte; a target
+    crossing the telescope's field at 1 km/s, 1000 km away (1e-3 rad/s,
+    67 pixels/s) trails and loses SNR or shortens the exposure; only the
+    motion across the line of sight counts; a partial group is an error."""
+    up = dict(LIT, observer_x=0, observer_y=6000 + 990, observer_z=0, camera="telescope-15cm")
+    up["target_y"] = 6990 + 1000
+    rows = [dict(up), dict(up, target_vx=0, target_vy=0, target_vz=0),
+            dict(up, target_vx=1.0, target_vy=0, target_vz=0),
+            dict(up, target_vx=0, target_vy=1.0, target_vz=0),
+            dict(up, observer_vx=-1.0, observer_vy=0, observer_vz=0)]
+    code, out, err = run_csv(table(rows))
+    assert code == 0, err
+    rest, zero, across, along, obs = parse(out)
+    assert zero == dict(rest, id=zero["id"])
+    assert along == dict(rest, id=along["id"])
+    assert float(across["snr"]) < float(rest["snr"])
+    assert "trailed" not in rest["flags"]
+    assert obs == dict(across, id=obs["id"])
+    code, out, err = run_csv(table([dict(up, target_vx=1.0, target_vy="", target_vz=0)]))
+    assert code == 1 and parse(out)[0]["status"] == "ERR_PARSE"
+
+
 def test_camera_column_and_option():
     rows = [dict(LIT_OBS), dict(LIT_OBS, camera="telescope-15cm"), dict(LIT_OBS, camera="nope")]
     code, out, err = run_csv(table(rows))
@@ -290,6 +337,8 @@ def test_nonfinite_values(value):
     ("terms", "sunlight", "ERR_PARSE"),
     ("terms", "moon", "ERR_PARSE"),       # moon asked for without a position
     ("atmosphere", "2", "ERR_PARSE"),
+    ("sky", "stars", "ERR_PARSE"),
+    ("sky", "zodiacal+", "ERR_PARSE"),
     ("observer_y", "", "ERR_PARSE"),      # two of three observer coordinates
 ])
 def test_bad_fields(field, value, status):

@@ -162,6 +162,7 @@ static int ev_camera(const double *in, double *got, int *region)
     x.flux_w_m2 = (oi_real)in[0];
     x.background_w_m2_sr = (oi_real)in[1];
     x.flags = 0;
+    x.rate_rad_s = 0;
     st = oi_expose(test_camera(), &x, NULL, &e);
     got[0] = (double)e.signal_e;
     got[1] = (double)e.background_e;
