@@ -15,6 +15,9 @@
  *   all            oi_illuminate, Sun (shadow) + Earth + Moon
  *   sun            oi_illuminate, Sun only
  *   sun_earth      oi_illuminate, Sun + Earth
+ *   sun_earth_mean oi_illuminate, Sun + Earth, earthshine reflected from its
+ *                  mean direction (OI_EARTH_REFLECT_MEAN): the difference
+ *                  with sun_earth is the cost of the angular moments
  *   all_expose     oi_illuminate (all terms) + oi_expose_scene (built-in camera 0)
  *   sun_fraction   oi_sun_fraction alone
  *   earthshine     oi_earthshine alone (the baked table), theta and h of each scene
@@ -48,10 +51,11 @@ static oi_real es_theta[BENCH_NSCENES], es_h[BENCH_NSCENES];
 static bench_scene_d raw[BENCH_NSCENES];
 static volatile double sink;
 
-enum { C_ALL, C_SUN, C_SUN_EARTH, C_ALL_EXPOSE, C_SUN_FRACTION, C_EARTHSHINE, C_EARTHSHINE_LAMBERT, C_N };
+enum { C_ALL, C_SUN, C_SUN_EARTH, C_ALL_EXPOSE, C_SUN_FRACTION, C_EARTHSHINE, C_EARTHSHINE_LAMBERT,
+       C_SUN_EARTH_MEAN, C_N };
 static const char *const config_name[C_N] = {"all",          "sun",        "sun_earth",
                                              "all_expose",   "sun_fraction", "earthshine",
-                                             "earthshine_lambert"};
+                                             "earthshine_lambert", "sun_earth_mean"};
 
 static void setup(void)
 {
@@ -89,7 +93,7 @@ static double run_config(int cfg)
 {
     static oi_illum il;
     static oi_exposure ex;
-    oi_model lambert;
+    oi_model lambert, mean;
     oi_real phi, psi;
     double acc = 0.0;
     int i;
@@ -99,6 +103,8 @@ static double run_config(int cfg)
 #endif
     memset(&lambert, 0, sizeof lambert);
     lambert.earth_model = OI_EARTH_LAMBERT;
+    memset(&mean, 0, sizeof mean);
+    mean.earth_reflection = OI_EARTH_REFLECT_MEAN;
     for (i = 0; i < BENCH_NSCENES; i++) {
         oi_scene *s = &scenes[i];
         if (only_light >= 0 && raw[i].light != only_light) continue;
@@ -116,6 +122,11 @@ static double run_config(int cfg)
         case C_SUN_EARTH:
             s->terms = OI_TERM_SUN | OI_TERM_EARTH;
             (void)oi_illuminate(s, NULL, &il);
+            acc += (double)il.flux_obs;
+            break;
+        case C_SUN_EARTH_MEAN:
+            s->terms = OI_TERM_SUN | OI_TERM_EARTH;
+            (void)oi_illuminate(s, &mean, &il);
             acc += (double)il.flux_obs;
             break;
         case C_ALL_EXPOSE:

@@ -178,7 +178,8 @@ typedef struct oi_atm_table {
  * in tan(theta) there, exactly) and n_term terminator columns theta =
  * pi/2 + w t, t uniform on [-1, 1]. Catmull-Rom in w and in the terminator
  * columns (linear-extrapolated ghosts), linear in tan(theta) in the lit
- * segment. Payload row-major: coef[(j (n_lit + n_term) + i) (n_coef + 1) + k].
+ * segment. Payload: 16-bit codes, value k = offset[k] + scale[k] code, row-major
+ * code[(j (n_lit + n_term) + i) (n_coef + 1) + k] (j the row, i the column).
  */
 typedef struct oi_earth_angular_table {
     int format;            /* OI_ANGULAR_FORMAT */
@@ -191,7 +192,9 @@ typedef struct oi_earth_angular_table {
     int n_term;            /* terminator columns, >= 2 */
     double w_min;          /* first row (rad) */
     double w_max;          /* last row (rad), pi/2: infinity */
-    const float *coef;     /* n_alt (n_lit + n_term) (n_coef + 1) values */
+    const float *offset;   /* n_coef + 1 values */
+    const float *scale;    /* n_coef + 1 values */
+    const unsigned short *code; /* n_alt (n_lit + n_term) (n_coef + 1) codes */
 } oi_earth_angular_table;
 
 #endif /* OI_TABLE_H */

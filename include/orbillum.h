@@ -439,7 +439,11 @@ typedef struct oi_illum {
  *          e_moon from the lunar phase law (or a Lambert Moon), times the
  *          fraction of the Sun the Moon sees. The target is a Lambertian
  *          sphere; the flux at the observer is the sum over sources of
- *          e albedo (a / range)^2 p(phase). src/illuminate.c.
+ *          e albedo (a / range)^2 p(phase), the Earth's with its angular
+ *          distribution instead (model earth_reflection,
+ *          oi_earthshine_sphere: e_earth albedo (a / range)^2 S, S = F / phi);
+ *          phase_earth stays the angle from the mean direction.
+ *          src/illuminate.c.
  */
 int oi_illuminate(const oi_scene *scene, const oi_model *model, oi_illum *out);
 

@@ -124,10 +124,12 @@ int oi__earth_sphere_shape(const oi_earth_angular_table *t, oi_real theta, oi_re
     for (k = 0; k <= nc; k++) c[k] = (oi_real)0;
     for (a = 0; a < nr; a++)
         for (b = 0; b < nk; b++) {
-            const float *node = t->coef + ((long)ir[a] * nt + ic[b]) * (nc + 1);
+            const unsigned short *node = t->code + ((long)ir[a] * nt + ic[b]) * (nc + 1);
             const oi_real wt = wr[a] * wc[b];
             for (k = 0; k <= nc; k++) c[k] += wt * (oi_real)node[k];
         }
+    /* the weights sum to 1: the linear decoding commutes with them */
+    for (k = 0; k <= nc; k++) c[k] = (oi_real)t->offset[k] + (oi_real)t->scale[k] * c[k];
     sum = series(c, t->l_max, o);
     beta = c[nc];
     if (beta != (oi_real)0) {

@@ -244,6 +244,13 @@ static OI_NOINLINE int earth_flux_moments(const oi_scene *scene, const oi_model 
     sin_theta = oi__norm_bounded(c);
     cos_theta = along;
     for (i = 0; i < 3; i++) x[i] = s_hat[i] - along * r_hat[i];
+    /* near the Sun-Earth axis x is rounding noise that need not be normal to
+     * r_hat: orthogonalised once more after scaling (the distribution is then
+     * symmetric about the zenith to within sin(theta), so any normal x does) */
+    if (oi__unit_bounded(x, x) > (oi_real)0) {
+        const oi_real dr = oi__dot(x, r_hat);
+        for (i = 0; i < 3; i++) x[i] -= dr * r_hat[i];
+    }
     if (oi__unit_bounded(x, x) == (oi_real)0) {
         /* on the Sun-Earth axis the distribution is symmetric about the
          * zenith: any x normal to it */

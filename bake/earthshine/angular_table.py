@@ -40,10 +40,8 @@ FORMAT = 1  # OI_ANGULAR_FORMAT in include/oi_table.h
 GENERATOR = "bake.earthshine.angular"
 NAME = "oi_earth_angular"
 R_KM = 6378.137
-LAYOUT = ("format", "kind", "info", "l_max", "n_coef", "n_alt", "n_theta", "w_min", "w_max",
-          "coef")
 
-DEFAULT = {"l_max": 8, "n_alt": 16, "n_lit": 2, "n_term": 13, "h_min_km": 100.0,
+DEFAULT = {"l_max": 8, "n_alt": 12, "n_lit": 2, "n_term": 13, "h_min_km": 100.0,
            "betas": 11, "n_dirs": 500, "n_measure": 300, "seed": 20261202}
 
 
@@ -320,7 +318,8 @@ def provenance_lines(cfg, m):
         "irradiance phi (docs/earthshine-angular.md; layout include/oi_table.h):",
         "  the real spherical-harmonic moments of the incoming radiance times the",
         "  sphere's kernel, degrees 0, 1 and even up to %d, and the weight beta of" % cfg["l_max"],
-        "  the mean direction's correction; float32.",
+        "  the mean direction's correction; 16-bit codes, offset + scale code per",
+        "  coefficient (offset and scale float32).",
         "Moments: quadrature over the visible sunlit Earth (bake/earthshine/angular.py).",
         "Grid: n_alt = %d rows uniform in w = acos(R/r) from h = %g km to infinity;" % (
             cfg["n_alt"], cfg["h_min_km"]),
@@ -334,11 +333,48 @@ def provenance_lines(cfg, m):
     ]
 
 
+def quantise(vals):
+    """16-bit codes per coefficient over its own range: value = offset[k] +
+    scale[k] code, offset and scale float32, scale a power of two and offset
+    an integer multiple of it, so that 0 decodes to exactly 0 (the m >= 1
+    moments vanish on the Sun-Earth axis: a sphere there stays symmetric about
+    the zenith). Returns (offset, scale, codes, decoded values as the runtime
+    reads them)."""
+    flat = vals.reshape(-1, vals.shape[-1])
+    lo = np.minimum(flat.min(axis=0), 0.0)
+    hi = np.maximum(flat.max(axis=0), 0.0)
+    span = hi - lo
+    exps = np.where(span > 0, np.ceil(np.log2(np.where(span > 0, span, 1.0) / 65534.0)), 0.0)
+    s64 = np.where(span > 0, np.exp2(exps), 0.0)
+    z0 = np.where(span > 0, np.ceil(-lo / np.where(s64 > 0, s64, 1.0)), 0.0)
+    o64 = -z0 * s64
+    off = cemit.f32(o64)
+    scale = cemit.f32(s64)
+    assert np.array_equal(off.astype(np.float64), o64) and np.array_equal(scale.astype(np.float64), s64)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        code = np.where(s64 > 0, np.rint((flat - o64) / np.where(s64 > 0, s64, 1.0)), 0.0)
+    if np.any(code < 0) or np.any(code > 65535):
+        raise ValueError("angular table: code out of range")
+    code = code.astype(np.uint16)
+    dec = (o64 + s64 * code).reshape(vals.shape)
+    return off, scale, code.reshape(vals.shape), dec
+
+
+def bake(cfg=None, log=None):
+    """(cfg, offset, scale, codes, decoded values, measured) of a configuration."""
+    cfg = dict(DEFAULT if cfg is None else cfg)
+    vals = bake_values(cfg, log=log or (lambda s: None))
+    off, scale, code, dec = quantise(vals)
+    return cfg, off, scale, code, dec, measure(dec, cfg, log=log)
+
+
+def payload_bytes(code, off):
+    return code.size * 2 + off.size * 4 * 2
+
+
 def run(outdir, cfg=None, log=print, progress=False):
     """Bake, measure and write tables/oi_earth_angular.{c,h,json}."""
-    cfg = dict(DEFAULT if cfg is None else cfg)
-    vals = bake_values(cfg, log=log if progress else (lambda s: None))
-    m = measure(vals, cfg, log=log if progress else None)
+    cfg, off, scale, code, vals, m = bake(cfg, log=log if progress else None)
     nc = n_coef(cfg["l_max"])
     w_min = math.acos(R_KM / (R_KM + cfg["h_min_km"]))
     t = cemit.Table(
@@ -349,9 +385,10 @@ def run(outdir, cfg=None, log=print, progress=False):
                 ("n_alt", cfg["n_alt"], "int"), ("n_lit", cfg["n_lit"], "int"),
                 ("n_term", cfg["n_term"], "int"), ("w_min", w_min, "double"),
                 ("w_max", 0.5 * math.pi, "double")],
-        arrays=[("coef", cemit.f32(vals.ravel()), "float")],
+        arrays=[("offset", off, "float"), ("scale", scale, "float"),
+                ("code", code.ravel(), "u16")],
         layout=("format", "kind", "info", "l_max", "n_coef", "n_alt", "n_lit", "n_term",
-                "w_min", "w_max", "coef"),
+                "w_min", "w_max", "offset", "scale", "code"),
         generator=GENERATOR, version=__version__, parameters=cfg, seed=cfg["seed"],
         goal=1.0, max_error=m["max_score"], measured=m,
         grid={"w_min": w_min, "w_max": 0.5 * math.pi, "n_alt": cfg["n_alt"],
@@ -360,5 +397,5 @@ def run(outdir, cfg=None, log=print, progress=False):
         provenance=provenance_lines(cfg, m))
     paths = cemit.write(outdir, t)
     log("oi_earth_angular: %d bytes, max error %.3f of the goal (p95 %.3f, median %.3f)" % (
-        vals.size * 4, m["max_score"], m["p95_score"], m["median_score"]))
+        payload_bytes(code, off), m["max_score"], m["p95_score"], m["median_score"]))
     return paths

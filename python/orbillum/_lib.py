@@ -148,7 +148,8 @@ class oi_earth_angular_table(ctypes.Structure):
         ("format", c_int), ("kind", c_int), ("info", POINTER(oi_table_info)),
         ("l_max", c_int), ("n_coef", c_int), ("n_alt", c_int), ("n_lit", c_int),
         ("n_term", c_int), ("w_min", c_double), ("w_max", c_double),
-        ("coef", POINTER(ctypes.c_float)),
+        ("offset", POINTER(ctypes.c_float)), ("scale", POINTER(ctypes.c_float)),
+        ("code", POINTER(ctypes.c_ushort)),
     ]
 
 
