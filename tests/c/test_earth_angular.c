@@ -27,6 +27,13 @@ static const double R = 6378.137;
 #define REL_TOL 1e-12
 #endif
 
+/* without the earthshine table phi is the Lambert far field, with its warning */
+#ifdef OI_NO_EARTH_TABLE
+#define ST_EARTH OI_WARN_TABLE_RANGE
+#else
+#define ST_EARTH OI_OK
+#endif
+
 #if defined(OI_NO_EARTH_ANGULAR) || defined(OI_NO_EARTH_TABLE)
 #define HAVE_MOMENTS 0
 #else
@@ -63,7 +70,7 @@ static void test_far_field_closed_form(void **state)
             const double a = angles[j];
             const double f = sphere(thetas[i], h, sin(a), 0.0, cos(a), OI_EARTH_REFLECT_MOMENTS, &st);
             const double want = x * x * phase_ref(thetas[i]) * phase_ref(PI - a);
-            check_int(OI_OK, st, "status");
+            check_int(ST_EARTH, st, "status");
             check_close(want, f, 1e-4 * x * x * phase_ref(thetas[i]) * (2.0 / 3.0), 1e-2,
                         "far-field sphere flux");
         }
@@ -76,9 +83,9 @@ static void test_mean_direction_option(void **state)
     int st;
     double f, dx, dz, xi;
     (void)state;
-    assert_int_equal(oi_earthshine((oi_real)theta, (oi_real)h, NULL, &phi, &psi), OI_OK);
+    assert_int_equal(oi_earthshine((oi_real)theta, (oi_real)h, NULL, &phi, &psi), ST_EARTH);
     f = sphere(theta, h, 0.6, 0.0, 0.8, OI_EARTH_REFLECT_MEAN, &st);
-    check_int(OI_OK, st, "status");
+    check_int(ST_EARTH, st, "status");
     dx = sin((double)psi);
     dz = -cos((double)psi);
     xi = acos(0.6 * dx + 0.8 * dz);
@@ -93,9 +100,9 @@ static void test_subsolar_zenith_observer(void **state)
     double mean, moments;
     (void)state;
     mean = sphere(0.0, 500.0, 0.0, 0.0, 1.0, OI_EARTH_REFLECT_MEAN, &st);
-    check_int(OI_OK, st, "status");
+    check_int(ST_EARTH, st, "status");
     moments = sphere(0.0, 500.0, 0.0, 0.0, 1.0, OI_EARTH_REFLECT_MOMENTS, &st);
-    check_int(OI_OK, st, "status");
+    check_int(ST_EARTH, st, "status");
     assert_true(mean <= 1e-6);
     if (HAVE_MOMENTS)
         assert_true(moments > 0.01);
@@ -124,7 +131,7 @@ static void test_illuminate_matches(void **state)
     set3(s.observer_km, R + 1000.0, 0, 0);
     s.has_observer = 1;
     s.terms = OI_TERM_EARTH;
-    assert_int_equal(oi_illuminate(&s, NULL, &out), OI_OK);
+    assert_int_equal(oi_illuminate(&s, NULL, &out), ST_EARTH);
     f = sphere(0.0, 500.0, 0.0, 0.0, 1.0, 0, &st);
     scale = (double)s.earth_albedo * 1361.0 * (149597870.7 / 1.496e8) * (149597870.7 / 1.496e8) *
             (double)s.target_albedo * pow((double)s.target_radius_m / 500e3, 2);
