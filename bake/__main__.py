@@ -2,8 +2,9 @@
 """python -m bake: bake the committed tables (generated C + JSON sidecars).
 
   python -m bake all                   every table below
-  python -m bake earthshine            oi_earth_diffuse (bake/config/default.json) and every
-                                       mission scene bake/config/scene_*.json
+  python -m bake earthshine            oi_earth_diffuse (bake/config/default.json), every
+                                       mission scene bake/config/scene_*.json and the angular
+                                       table oi_earth_angular (bake/earthshine/angular_table.py)
   python -m bake atmosphere            oi_atm_vband (bake/config/atmosphere.json)
   python -m bake --scene FILE          only this mission scene (repeatable): its altitude band
                                        and goal, the smallest grid that meets it (docs/tables.md)
@@ -43,6 +44,9 @@ def outputs(target, scenes=()):
     if target in ("earthshine", "all") or scenes:
         for _, cfg in _earthshine_configs(scenes):
             out += ["%s/%s.%s" % (TABLES, cfg["name"], e) for e in ("c", "h", "json")]
+        if not scenes:
+            from .earthshine import angular_table as ang
+            out += ["%s/%s.%s" % (TABLES, ang.NAME, e) for e in ("c", "h", "json")]
     if target in ("atmosphere", "all") and not scenes:
         from .atmosphere import table as at
         out += ["%s/%s.%s" % (TABLES, at.NAME, e) for e in ("c", "h", "json")]
@@ -65,6 +69,10 @@ def bake_earthshine(outdir, scenes, method, log, progress, photon_args):
             log("  %s: %d bytes instead of %d for the default table: %d bytes saved (%.0f %%)" % (
                 cfg["name"], meta["payload_bytes"], ref_bytes, ref_bytes - meta["payload_bytes"],
                 100.0 * (ref_bytes - meta["payload_bytes"]) / ref_bytes))
+    if not scenes:
+        from .earthshine import angular_table as ang
+        ang.run(outdir, log=log, progress=progress)
+        return len(jobs) + 1
     return len(jobs)
 
 

@@ -19,6 +19,9 @@
  *   sun_moon       oi_illuminate, Sun only with the Moon's position given
  *                  (has_moon: the Moon as an occulter of the Sun)
  *   sun_earth      oi_illuminate, Sun + Earth
+ *   sun_earth_mean oi_illuminate, Sun + Earth, earthshine reflected from its
+ *                  mean direction (OI_EARTH_REFLECT_MEAN): the difference
+ *                  with sun_earth is the cost of the angular moments
  *   all_expose     oi_illuminate (all terms) + oi_expose_scene (built-in camera 0)
  *   sun_fraction   oi_sun_fraction alone
  *   earthshine     oi_earthshine alone (the baked table), theta and h of each scene
@@ -61,11 +64,12 @@ static bench_scene_d raw[BENCH_NSCENES];
 static volatile double sink;
 
 enum { C_ALL, C_SUN, C_SUN_EARTH, C_ALL_EXPOSE, C_SUN_FRACTION, C_EARTHSHINE, C_EARTHSHINE_LAMBERT,
-       C_SUN_MOON, C_SUN_FRACTION_BATCH, C_SUN_FRACTION_BATCH_ALL, C_ALL_BATCH, C_EARTHSHINE_BATCH,
+       C_SUN_MOON, C_SUN_EARTH_MEAN, C_SUN_FRACTION_BATCH, C_SUN_FRACTION_BATCH_ALL, C_ALL_BATCH, C_EARTHSHINE_BATCH,
        C_N };
 static const char *const config_name[C_N] = {"all",          "sun",        "sun_earth",
                                              "all_expose",   "sun_fraction", "earthshine",
-                                             "earthshine_lambert", "sun_fraction_batch",
+                                             "earthshine_lambert", "sun_moon", "sun_earth_mean",
+                                             "sun_fraction_batch",
                                              "sun_fraction_batch_all", "all_batch",
                                              "earthshine_batch"};
 
@@ -159,7 +163,7 @@ static double run_config(int cfg)
 {
     static oi_illum il;
     static oi_exposure ex;
-    oi_model lambert;
+    oi_model lambert, mean;
     oi_real phi, psi;
     double acc = 0.0;
     int i;
@@ -170,6 +174,8 @@ static double run_config(int cfg)
     if (cfg >= C_SUN_FRACTION_BATCH) return run_batch(cfg);
     memset(&lambert, 0, sizeof lambert);
     lambert.earth_model = OI_EARTH_LAMBERT;
+    memset(&mean, 0, sizeof mean);
+    mean.earth_reflection = OI_EARTH_REFLECT_MEAN;
     for (i = 0; i < BENCH_NSCENES; i++) {
         oi_scene *s = &scenes[i];
         if (only_light >= 0 && raw[i].light != only_light) continue;
@@ -194,6 +200,11 @@ static double run_config(int cfg)
         case C_SUN_EARTH:
             s->terms = OI_TERM_SUN | OI_TERM_EARTH;
             (void)oi_illuminate(s, NULL, &il);
+            acc += (double)il.flux_obs;
+            break;
+        case C_SUN_EARTH_MEAN:
+            s->terms = OI_TERM_SUN | OI_TERM_EARTH;
+            (void)oi_illuminate(s, &mean, &il);
             acc += (double)il.flux_obs;
             break;
         case C_ALL_EXPOSE:

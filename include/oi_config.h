@@ -9,6 +9,11 @@
  *                        oi_model.earth_table, earthshine is the Lambert far
  *                        field with OI_WARN_TABLE_RANGE; a caller's table
  *                        still works.
+ *   OI_NO_EARTH_ANGULAR  no earthshine angular table (oi_earth_angular_default()
+ *                        returns NULL; implied by OI_NO_EARTH_TABLE): a sphere
+ *                        reflects earthshine from its mean direction, as with
+ *                        oi_model.earth_reflection = OI_EARTH_REFLECT_MEAN;
+ *                        the moments' code is removed too.
  *   OI_NO_MOON           no moonlight: removes oi_moon_* and the Moon term, and
  *                        OI_SKY_MOON (a goal with that bit gets OI_ERR_FLAGS).
  *   OI_NO_EXPOSURE       no camera model: removes oi_camera*, oi_expose*.
@@ -60,6 +65,8 @@ typedef double oi_real;
 #define oi_sun_fraction oi_sun_fraction_sp
 #define oi_earthshine oi_earthshine_sp
 #define oi_earth_table_default oi_earth_table_default_sp
+#define oi_earth_angular_default oi_earth_angular_default_sp
+#define oi_earthshine_sphere oi_earthshine_sphere_sp
 #define oi_atm_table_default oi_atm_table_default_sp
 #define oi_moon_phase_law oi_moon_phase_law_sp
 #define oi_scene_defaults oi_scene_defaults_sp

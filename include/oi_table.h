@@ -35,6 +35,13 @@
  * family existed: read as the kind its type says). */
 #define OI_TABLE_KIND_EARTHSHINE (1)
 #define OI_TABLE_KIND_ATMOSPHERE (2)
+#define OI_TABLE_KIND_EARTH_ANGULAR (3)
+
+/* Version of the earthshine angular layout (oi_earth_angular_table.format). */
+#define OI_ANGULAR_FORMAT 1
+/* Highest degree of the angular moments a runtime evaluates (the stack of
+ * the evaluation is sized by it). */
+#define OI_ANGULAR_L_MAX 8
 
 /* Provenance of one baked table: what made it and how well it was measured.
  * Strings are NUL-terminated; parameters is the bake configuration as
@@ -149,5 +156,45 @@ typedef struct oi_atm_table {
     const unsigned short *q;   /* nz * nt codes */
     const unsigned short *psi; /* nz * nt codes */
 } oi_atm_table;
+
+/*
+ * Earthshine's angular distribution, for the flux a Lambertian sphere sends
+ * to any observer direction (docs/earthshine-angular.md). In the local frame
+ * at the target (z the zenith, x towards the Sun's side in the
+ * Sun-Earth-target plane, y normal to it) the incoming radiance is even in
+ * y, so its real spherical harmonics are the cosine ones. Per node, per unit
+ * scalar irradiance phi (the earthshine table gives phi):
+ *   coef[k], k < n_coef: c_lm = s_l K_lm (-1)^m L_lm / phi for the degrees
+ *       l = 0, 1, 2, 4, ..., l_max (the sphere's kernel s_l vanishes for odd
+ *       l >= 3) and 0 <= m <= l in that order, Y_lm = K_lm P_l^m cos(m phi);
+ *       the runtime forms sum c_lm Re((o_x + i o_y)^m) d^m P_l / dz^m (o_z)
+ *   coef[n_coef]: beta in [0, 1], the weight of the correction
+ *       beta (p(xi_d) - p_L(cos xi_d)) that restores the part of the light
+ *       coming from the mean direction d (from the l = 1 moments) that the
+ *       truncated series misses (p_L: p's Legendre series over the same
+ *       degrees; sphere_kernel[] of the runtime).
+ * Grid: w = acos(R/r) uniform on [w_min, w_max] (w_max = pi/2: infinity);
+ * per row n_lit = 2 lit columns (theta = 0 and pi/2 - w; the shape is linear
+ * in tan(theta) there, exactly) and n_term terminator columns theta =
+ * pi/2 + w t, t uniform on [-1, 1]. Catmull-Rom in w and in the terminator
+ * columns (linear-extrapolated ghosts), linear in tan(theta) in the lit
+ * segment. Payload: 16-bit codes, value k = offset[k] + scale[k] code, row-major
+ * code[(j (n_lit + n_term) + i) (n_coef + 1) + k] (j the row, i the column).
+ */
+typedef struct oi_earth_angular_table {
+    int format;            /* OI_ANGULAR_FORMAT */
+    int kind;              /* OI_TABLE_KIND_EARTH_ANGULAR */
+    const oi_table_info *info; /* provenance; may be NULL */
+    int l_max;             /* highest degree, even, 2 .. OI_ANGULAR_L_MAX */
+    int n_coef;            /* coefficients per node before beta */
+    int n_alt;             /* rows, >= 2 */
+    int n_lit;             /* 2 */
+    int n_term;            /* terminator columns, >= 2 */
+    double w_min;          /* first row (rad) */
+    double w_max;          /* last row (rad), pi/2: infinity */
+    const float *offset;   /* n_coef + 1 values */
+    const float *scale;    /* n_coef + 1 values */
+    const unsigned short *code; /* n_alt (n_lit + n_term) (n_coef + 1) codes */
+} oi_earth_angular_table;
 
 #endif /* OI_TABLE_H */

@@ -116,6 +116,12 @@ const char *oi_status_name(int status);
 #define OI_MOON_PHASE_LAW (0) /* empirical lunar phase law (default) */
 #define OI_MOON_LAMBERT   (1) /* Lambert sphere of albedo moon_albedo (seed) */
 
+/* oi_model.earth_reflection: how a sphere reflects earthshine */
+#define OI_EARTH_REFLECT_MOMENTS (0) /* from its angular distribution, the
+                                        angular table's moments (default) */
+#define OI_EARTH_REFLECT_MEAN    (1) /* as if all of it came from its mean
+                                        direction (exact in the far field) */
+
 /* oi_model.limb_darkening */
 #define OI_LIMB_UNIFORM (0)   /* uniform solar disc (default) */
 #define OI_LIMB_DARKENED (1)  /* irradiance uses a limb-darkened disc */
@@ -142,6 +148,7 @@ typedef struct oi_model {
     int no_atmosphere;        /* nonzero: as if the Earth had no atmosphere */
     const oi_earth_table *earth_table; /* earthshine table; NULL: oi_earth_table_default() */
     const oi_atm_table *atm_table;     /* atmosphere table; NULL: oi_atm_table_default() */
+    int earth_reflection;     /* OI_EARTH_REFLECT_MOMENTS or OI_EARTH_REFLECT_MEAN */
 } oi_model;
 
 /*
@@ -186,6 +193,11 @@ typedef struct oi_model {
  */
 const oi_earth_table *oi_earth_table_default(void);
 const oi_atm_table *oi_atm_table_default(void);
+/* oi_earth_angular_default: the earthshine angular table (oi_earth_angular,
+ * include/oi_table.h) a sphere's reflection of earthshine uses with
+ * earth_reflection = OI_EARTH_REFLECT_MOMENTS; NULL with OI_NO_EARTH_ANGULAR
+ * or OI_NO_EARTH_TABLE. Its own translation unit, as the others; trusted. */
+const oi_earth_angular_table *oi_earth_angular_default(void);
 
 /* Highest top of a caller's atmosphere table (km): oi_illuminate's test
  * for certain full sunlight assumes that no grazing ray climbs above
@@ -308,6 +320,31 @@ int oi_sun_fraction(const oi_real sun_km[3], const oi_real point_km[3],
  */
 int oi_earthshine(oi_real theta, oi_real h_km, const oi_model *model,
                   oi_real *phi, oi_real *psi);
+
+/*
+ * oi_earthshine_sphere: the flux a Lambertian sphere sends towards a
+ * direction under earthshine alone, per unit Earth albedo, unit solar
+ * irradiance at the Earth, unit target albedo and unit (a / d)^2 (a the
+ * sphere's radius, d the observer's range): F such that the flux at the
+ * observer is earth_albedo TSI (1 AU / |sun|)^2 target_albedo (a/d)^2 F.
+ * Given:   theta, h_km, model  as oi_earthshine (earth_reflection chooses
+ *                 the moments or the mean direction)
+ *          obs    direction from the target towards the observer in the
+ *                 local frame (z the zenith, x towards the Sun's side in the
+ *                 Sun-Earth-target plane, y normal to it); any length > 0
+ * Returned: flux  F (>= 0 up to the series' ringing, see Notes)
+ * Returns: oi_earthshine's statuses; OI_ERR_NULL (obs or flux NULL),
+ *          OI_ERR_NONFINITE (a component of obs), OI_ERR_ZERO_VECTOR (obs
+ *          zero). On error *flux is 0.
+ * Notes:   With the moments (default) F = phi S(o), S from the angular
+ *          table (docs/earthshine-angular.md, with its measured error
+ *          against a quadrature over the visible sunlit Earth); below the
+ *          table's lowest altitude (100 km), without the table, with the
+ *          Lambert far field or with OI_EARTH_REFLECT_MEAN: phi p(xi), xi
+ *          the angle between obs and the mean direction psi.
+ */
+int oi_earthshine_sphere(oi_real theta, oi_real h_km, const oi_real obs[3],
+                         const oi_model *model, oi_real *flux);
 
 /* ---------------------------------------------------------------- moonlight */
 #ifndef OI_NO_MOON
@@ -441,7 +478,11 @@ typedef struct oi_illum {
  *          fraction_atm and e_sun count it (shadow.region stays the Earth's;
  *          sun_moon_hidden; docs/shadow.md section 9). The target is a Lambertian
  *          sphere; the flux at the observer is the sum over sources of
- *          e albedo (a / range)^2 p(phase). src/illuminate.c.
+ *          e albedo (a / range)^2 p(phase), the Earth's with its angular
+ *          distribution instead (model earth_reflection,
+ *          oi_earthshine_sphere: e_earth albedo (a / range)^2 S, S = F / phi);
+ *          phase_earth stays the angle from the mean direction.
+ *          src/illuminate.c.
  */
 int oi_illuminate(const oi_scene *scene, const oi_model *model, oi_illum *out);
 

@@ -14,7 +14,7 @@ SIZE_KINDS := sun_noatm sun_atm own_earth full_default
 SIZE_KIND_DIR := $(BUILDDIR)/size
 SIZE_KIND_CROSS := m4f-Os m7-Os
 SIZE_KIND_SRC_DEPS := examples/size/scene.h
-SIZE_TABLE_SYMS := oi_earth_diffuse|oi_earth_leo|oi_earth_geo|oi_atm_vband
+SIZE_TABLE_SYMS := oi_earth_diffuse|oi_earth_leo|oi_earth_geo|oi_earth_angular|oi_atm_vband
 SIZE_HOST_ELFS := $(foreach k,$(SIZE_KINDS),$(SIZE_KIND_DIR)/host/$(k))
 SIZE_CROSS_ELFS := $(foreach c,$(SIZE_KIND_CROSS),$(foreach k,$(SIZE_KINDS),$(SIZE_KIND_DIR)/$(c)/$(k).elf))
 

@@ -38,7 +38,7 @@ SIZEPROG_sun_uniform := sun
 # Public functions: one stub each in libstubs.a (target/stubs.c), linked after the
 # library so a function the library does not define yet is reported, not a link error.
 OI_PUBLIC := oi_status_name oi_lambert_phase oi_angle oi_cap_overlap oi_sun_fraction \
-  oi_earthshine oi_moon_phase_law oi_scene_defaults oi_illuminate oi_magnitude_v \
+  oi_earthshine oi_earthshine_sphere oi_moon_phase_law oi_scene_defaults oi_illuminate oi_magnitude_v \
   oi_flux_from_magnitude oi_camera_builtin oi_camera_find oi_flag_name oi_expose oi_expose_scene
 
 cfg_core = $(word 1,$(subst -, ,$(1)))

@@ -256,6 +256,51 @@ static OI_NOINLINE int earth_term(const oi_scene *scene, const oi_model *m, oi_i
     return st;
 }
 
+#if !defined(OI_NO_EARTH_ANGULAR) && !defined(OI_NO_EARTH_TABLE)
+/* The earthshine a Lambertian sphere sends towards obs_hat from the angular
+ * table's moments (src/earthshine_angular.c); 0 when the table does not
+ * serve this altitude (then the caller keeps the mean direction's flux). */
+static OI_NOINLINE int earth_flux_moments(const oi_scene *scene, const oi_model *m,
+                                          const oi_earth_angular_table *t,
+                                          const oi_real obs_hat[3], oi_real ratio,
+                                          oi_illum *out)
+{
+    oi_real r_hat[3], s_hat[3], x[3], y[3], o[3], c[3], along, cos_theta, sin_theta, shape;
+    int i;
+    (void)oi__unit_bounded(scene->target_km, r_hat);
+    (void)oi__unit_bounded(scene->sun_km, s_hat);
+    along = oi__dot(s_hat, r_hat);
+    oi__cross(s_hat, r_hat, c);
+    sin_theta = oi__norm_bounded(c);
+    cos_theta = along;
+    for (i = 0; i < 3; i++) x[i] = s_hat[i] - along * r_hat[i];
+    /* near the Sun-Earth axis x is rounding noise that need not be normal to
+     * r_hat: orthogonalised once more after scaling (the distribution is then
+     * symmetric about the zenith to within sin(theta), so any normal x does) */
+    if (oi__unit_bounded(x, x) > (oi_real)0) {
+        const oi_real dr = oi__dot(x, r_hat);
+        for (i = 0; i < 3; i++) x[i] -= dr * r_hat[i];
+    }
+    if (oi__unit_bounded(x, x) == (oi_real)0) {
+        /* on the Sun-Earth axis the distribution is symmetric about the
+         * zenith: any x normal to it */
+        const oi_real e[3] = {(oi_real)1, (oi_real)0, (oi_real)0};
+        const oi_real f[3] = {(oi_real)0, (oi_real)1, (oi_real)0};
+        oi__cross(r_hat, (r_hat[0] * r_hat[0] < OI_R(0.5)) ? e : f, x);
+        (void)oi__unit_bounded(x, x);
+    }
+    oi__cross(r_hat, x, y);
+    o[0] = oi__dot(obs_hat, x);
+    o[1] = oi__dot(obs_hat, y);
+    o[2] = oi__dot(obs_hat, r_hat);
+    if (!oi__earth_sphere_shape(t, out->earth_theta, cos_theta, sin_theta, out->earth_h_km,
+                                m->earth_radius_km, o, &shape))
+        return 0;
+    out->flux_earth = out->e_earth * scene->target_albedo * ratio * ratio * shape;
+    return 1;
+}
+#endif
+
 /* What the observer receives: range, phase angles, fluxes, magnitude. */
 static OI_NOINLINE int observer_term(const oi_scene *scene, const oi_model *m, oi_illum *out)
 {
@@ -269,6 +314,15 @@ static OI_NOINLINE int observer_term(const oi_scene *scene, const oi_model *m, o
                                    scene->target_albedo, &out->phase_sun);
     out->flux_earth = reflected_flux(out->e_earth, out->dir_earth, obs_hat, ratio,
                                      scene->target_albedo, &out->phase_earth);
+#if !defined(OI_NO_EARTH_ANGULAR) && !defined(OI_NO_EARTH_TABLE)
+    {
+        /* the angular distribution where the table serves (phase_earth stays
+         * the mean direction's) */
+        const oi_earth_angular_table *t = oi__earth_angular_of(m);
+        if (t != NULL && out->e_earth > (oi_real)0)
+            (void)earth_flux_moments(scene, m, t, obs_hat, ratio, out);
+    }
+#endif
     out->flux_moon = reflected_flux(out->e_moon, out->dir_moon, obs_hat, ratio,
                                     scene->target_albedo, &out->phase_moon);
     out->flux_obs = out->flux_sun + out->flux_earth + out->flux_moon;
@@ -293,8 +347,11 @@ static OI_NOINLINE int observer_term(const oi_scene *scene, const oi_model *m, o
  *     sun_moon_hidden). The Moon's shadow test is skipped when the Moon is
  *     certainly in full sunlight (certainly_lit), its occultation when its
  *     disc is certainly apart from the Sun's.
- *  4. The target is a Lambertian sphere; earthshine is reflected as if it came
- *     from its mean incidence direction (exact in the far field).
+ *  4. The target is a Lambertian sphere; earthshine is reflected from its
+ *     angular distribution (the angular table's moments, from 100 km up;
+ *     docs/earthshine-angular.md), or, with OI_EARTH_REFLECT_MEAN, below
+ *     the table or without it, as if it came from its mean incidence
+ *     direction (exact in the far field).
  *  5. Cost: the model is resolved and the scene validated once; after that
  *     every position is bounded (OI_POSITION_MAX_KM), so norms skip the
  *     overflow scaling and angles between unit vectors are formed directly

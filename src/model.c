@@ -38,7 +38,8 @@ static const oi_real bound_hi[N_FIELDS - N_RADII + 1] = {
  * 0 and 1 (a negative array size stops the build otherwise). */
 typedef char model_options_are_0_or_1[(OI_EARTH_TABLE == 0 && OI_EARTH_LAMBERT == 1 &&
                                        OI_MOON_PHASE_LAW == 0 && OI_MOON_LAMBERT == 1 &&
-                                       OI_LIMB_UNIFORM == 0 && OI_LIMB_DARKENED == 1)
+                                       OI_LIMB_UNIFORM == 0 && OI_LIMB_DARKENED == 1 &&
+                                       OI_EARTH_REFLECT_MOMENTS == 0 && OI_EARTH_REFLECT_MEAN == 1)
                                           ? 1
                                           : -1];
 
@@ -64,7 +65,8 @@ int oi__model_resolve(const oi_model *in, oi_model *out)
         }
     }
     /* each option 0 or 1 (see model_options_are_0_or_1) */
-    if ((in->earth_model | in->moon_model | in->limb_darkening) & ~1) return OI_ERR_MODEL;
+    if ((in->earth_model | in->moon_model | in->limb_darkening | in->earth_reflection) & ~1)
+        return OI_ERR_MODEL;
 #ifdef OI_NO_LIMB_DARKENING
     /* the limb-darkened disc is compiled out (include/oi_config.h) */
     if (in->limb_darkening == OI_LIMB_DARKENED) return OI_ERR_MODEL;
@@ -79,6 +81,7 @@ int oi__model_resolve(const oi_model *in, oi_model *out)
     out->earth_model = in->earth_model;
     out->moon_model = in->moon_model;
     out->limb_darkening = in->limb_darkening;
+    out->earth_reflection = in->earth_reflection;
     out->no_atmosphere = in->no_atmosphere != 0;
     out->earth_table = in->earth_table;
     out->atm_table = in->atm_table;

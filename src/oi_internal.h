@@ -362,6 +362,23 @@ int oi__earthshine(oi_real theta, oi_real cos_theta, oi_real sin_theta, oi_real 
  * (pi - xi >= 1), so no cosine or sine is evaluated. cos_xi > 1: not given. */
 oi_real oi__lambert_phase_cs(oi_real xi, oi_real cos_xi, oi_real sin_xi);
 
+/* The earthshine angular table a resolved model uses for a sphere's
+ * reflection (src/earthshine_angular.c): NULL for the mean direction
+ * (earth_reflection = OI_EARTH_REFLECT_MEAN, the Lambert far field, or the
+ * table compiled out). */
+const oi_earth_angular_table *oi__earth_angular_of(const oi_model *resolved);
+
+#if !defined(OI_NO_EARTH_ANGULAR) && !defined(OI_NO_EARTH_TABLE)
+/* S(o) = F / phi, the shape of a Lambertian sphere's flux under earthshine
+ * towards the unit direction o of the local frame (z zenith, x towards the
+ * Sun's side), from table t at theta (with its cosine and sine) and h_km
+ * above an Earth of radius R: returns 1 with *shape >= 0, or 0 (shape 0)
+ * below the table's first row (src/earthshine_angular.c). */
+int oi__earth_sphere_shape(const oi_earth_angular_table *t, oi_real theta, oi_real cos_theta,
+                           oi_real sin_theta, oi_real h_km, oi_real R, const oi_real o[3],
+                           oi_real *shape);
+#endif
+
 /* oi_magnitude_v (src/magnitude.c) with the model's TSI already resolved. */
 oi_real oi__magnitude_v(oi_real flux_w_m2, oi_real tsi_w_m2);
 

@@ -62,6 +62,19 @@ int oi_sun_fraction(const oi_real sun_km[3], const oi_real point_km[3], const oi
     return STUB_ERR;
 }
 #endif
+#ifdef STUB_oi_earthshine_sphere
+int oi_earthshine_sphere(oi_real theta, oi_real h_km, const oi_real obs[3], const oi_model *model,
+                         oi_real *flux)
+{
+    (void)theta;
+    (void)h_km;
+    (void)obs;
+    (void)model;
+    oi_target_missing("oi_earthshine_sphere");
+    if (flux) *flux = (oi_real)0;
+    return STUB_ERR;
+}
+#endif
 #ifdef STUB_oi_earthshine
 int oi_earthshine(oi_real theta, oi_real h_km, const oi_model *model, oi_real *phi, oi_real *psi)
 {

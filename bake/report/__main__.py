@@ -24,6 +24,7 @@ from pathlib import Path
 # (module, title) in report order.
 SECTIONS = [
     ("bake.report.earthshine", "Earthshine table"),
+    ("bake.report.earth_angular", "Earthshine angular distribution"),
     ("bake.report.photon", "Photon mapping"),
     ("bake.report.atmosphere", "Atmosphere"),
     ("bake.report.perf", "Performance"),

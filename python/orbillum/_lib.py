@@ -64,6 +64,8 @@ OI_MOON_PHASE_LAW = 0  # oi_model.moon_model
 OI_MOON_LAMBERT = 1
 OI_LIMB_UNIFORM = 0   # oi_model.limb_darkening
 OI_LIMB_DARKENED = 1
+OI_EARTH_REFLECT_MOMENTS = 0  # oi_model.earth_reflection
+OI_EARTH_REFLECT_MEAN = 1
 
 OI_SHADOW_LIT = 0     # oi_shadow.region
 OI_SHADOW_PENUMBRA = 1
@@ -98,6 +100,9 @@ OI_TABLE_FORMAT = 4
 OI_ATM_FORMAT = 3
 OI_TABLE_KIND_EARTHSHINE = 1
 OI_TABLE_KIND_ATMOSPHERE = 2
+OI_TABLE_KIND_EARTH_ANGULAR = 3
+OI_ANGULAR_FORMAT = 1
+OI_ANGULAR_L_MAX = 8
 
 # ---- include/oi_constants.h (defaults; oi_model overrides each)
 OI_AU_KM = 149597870.7
@@ -149,6 +154,16 @@ class oi_atm_table(ctypes.Structure):
     ]
 
 
+class oi_earth_angular_table(ctypes.Structure):
+    _fields_ = [
+        ("format", c_int), ("kind", c_int), ("info", POINTER(oi_table_info)),
+        ("l_max", c_int), ("n_coef", c_int), ("n_alt", c_int), ("n_lit", c_int),
+        ("n_term", c_int), ("w_min", c_double), ("w_max", c_double),
+        ("offset", POINTER(ctypes.c_float)), ("scale", POINTER(ctypes.c_float)),
+        ("code", POINTER(ctypes.c_ushort)),
+    ]
+
+
 # ---- include/orbillum.h structures
 class oi_model(ctypes.Structure):
     _fields_ = [
@@ -156,7 +171,7 @@ class oi_model(ctypes.Structure):
         ("earth_radius_km", real), ("moon_radius_km", real), ("moon_albedo", real),
         ("earth_model", c_int), ("moon_model", c_int), ("limb_darkening", c_int),
         ("no_atmosphere", c_int), ("earth_table", POINTER(oi_earth_table)),
-        ("atm_table", POINTER(oi_atm_table)),
+        ("atm_table", POINTER(oi_atm_table)), ("earth_reflection", c_int),
     ]
 
 
@@ -225,8 +240,8 @@ class oi_exposure(ctypes.Structure):
     ]
 
 
-STRUCTS = (oi_table_info, oi_earth_table, oi_atm_table, oi_model, oi_shadow, oi_scene,
-           oi_illum, oi_camera, oi_expose_goal, oi_expose_in, oi_exposure)
+STRUCTS = (oi_table_info, oi_earth_table, oi_atm_table, oi_earth_angular_table, oi_model,
+           oi_shadow, oi_scene, oi_illum, oi_camera, oi_expose_goal, oi_expose_in, oi_exposure)
 
 _R3 = POINTER(real)
 # name: (restype, argtypes). Pointers to arrays of structures are passed as
@@ -241,6 +256,8 @@ _PROTOS = {
     "oi_earthshine": (c_int, [real, real, c_void_p, POINTER(real), POINTER(real)]),
     "oi_earth_table_default": (POINTER(oi_earth_table), []),
     "oi_atm_table_default": (POINTER(oi_atm_table), []),
+    "oi_earth_angular_default": (POINTER(oi_earth_angular_table), []),
+    "oi_earthshine_sphere": (c_int, [real, real, _R3, c_void_p, POINTER(real)]),
     "oi_moon_phase_law": (real, [real]),
     "oi_zodiacal_radiance": (real, [real, real]),
     "oi_scene_defaults": (None, [c_void_p]),
