@@ -189,13 +189,15 @@ def main():
         memo, memo_b = {}, {}
         runtime_problems = []
         for fn in public:
-            if fn not in frames:
+            # a single-precision build names every public symbol with _sp (include/oi_config.h)
+            sym = fn if fn in frames else fn + "_sp"
+            if sym not in frames:
                 print("stack.%s.%s missing  # not defined in the runtime" % (cfg, fn))
                 continue
-            w, path = worst(fn, g_frames, g_edges, memo, [], runtime_problems, fn)
+            w, path = worst(sym, g_frames, g_edges, memo, [], runtime_problems, sym)
             print("stack.%s.%s %d bytes  # %s" % (cfg, fn, w, " > ".join(
                 "%s(%d)" % (plain(p), g_frames.get(p, 0)) for p in path)))
-            wb, pathb = worst(fn, g_frames, g_edges, memo_b, [], [], fn, HUGE_ARG)
+            wb, pathb = worst(sym, g_frames, g_edges, memo_b, [], [], sym, HUGE_ARG)
             summary[(cfg, fn)] = (w, wb)
             print("stack.%s.%s.bounded_args %d bytes  # %s" % (cfg, fn, wb, " > ".join(
                 "%s(%d)" % (plain(p), g_frames.get(p, 0)) for p in pathb)))
