@@ -182,17 +182,15 @@ int oi_sun_fraction_batch(long n, const oi_real *sun_km, const oi_real *point_km
     int st;
     if (n == 0) return 0;
     if (check_n(n) != OI_OK) return OI_ERR_INPUT; /* nothing written: n is not the arrays' */
-    st = OI_OK;
-    if (st == OI_OK && (sun_km == NULL || point_km == NULL || out == NULL || status == NULL))
-        st = OI_ERR_NULL;
-    if (st != OI_OK) return batch_fail(st, n, status, NULL, 0, 0);
+    if (sun_km == NULL || point_km == NULL || out == NULL || status == NULL)
+        return batch_fail(OI_ERR_NULL, n, status, NULL, 0, 0);
     if (!span_of(sun_km, n, 3 * sizeof *sun_km, ALIGN_OF(oi_real), &in[0]) ||
         !span_of(point_km, n, 3 * sizeof *point_km, ALIGN_OF(oi_real), &in[1]) ||
         !span_of(out, n, sizeof *out, ALIGN_OF(oi_shadow), &o[0]) ||
         !span_of(status, n, sizeof *status, ALIGN_OF(int), &o[1]) ||
         check_overlap(in, 2, o, 2) != OI_OK)
         return batch_fail(OI_ERR_INPUT, n, status, NULL, 0, 0);
-    st = outputs & ~(unsigned)OI_BATCH_ALL ? OI_ERR_FLAGS : oi__model_resolve(model, &m);
+    st = (outputs & ~(unsigned)OI_BATCH_ALL) != 0u ? OI_ERR_FLAGS : oi__model_resolve(model, &m);
     if (st < 0) return batch_fail(st, n, status, out, sizeof *out, 1);
     for (i = 0; i < n; i++) {
         status[i] = sun_row(sun_km + 3 * i, point_km + 3 * i, &m, outputs, &out[i]);
@@ -213,10 +211,8 @@ int oi_earthshine_batch(long n, const oi_real *theta, const oi_real *h_km,
     int st;
     if (n == 0) return 0;
     if (check_n(n) != OI_OK) return OI_ERR_INPUT; /* nothing written: n is not the arrays' */
-    st = OI_OK;
-    if (st == OI_OK && (theta == NULL || h_km == NULL || phi == NULL || status == NULL))
-        st = OI_ERR_NULL;
-    if (st != OI_OK) return batch_fail(st, n, status, NULL, 0, 0);
+    if (theta == NULL || h_km == NULL || phi == NULL || status == NULL)
+        return batch_fail(OI_ERR_NULL, n, status, NULL, 0, 0);
     if (!span_of(theta, n, sizeof *theta, ALIGN_OF(oi_real), &in[0]) ||
         !span_of(h_km, n, sizeof *h_km, ALIGN_OF(oi_real), &in[1]) ||
         !span_of(phi, n, sizeof *phi, ALIGN_OF(oi_real), &o[0]) ||
@@ -250,9 +246,8 @@ int oi_illuminate_batch(long n, const oi_scene *scenes, const oi_model *model, o
     int st;
     if (n == 0) return 0;
     if (check_n(n) != OI_OK) return OI_ERR_INPUT; /* nothing written: n is not the arrays' */
-    st = OI_OK;
-    if (st == OI_OK && (scenes == NULL || out == NULL || status == NULL)) st = OI_ERR_NULL;
-    if (st != OI_OK) return batch_fail(st, n, status, NULL, 0, 0);
+    if (scenes == NULL || out == NULL || status == NULL)
+        return batch_fail(OI_ERR_NULL, n, status, NULL, 0, 0);
     if (!span_of(scenes, n, sizeof *scenes, ALIGN_OF(oi_scene), &in[0]) ||
         !span_of(out, n, sizeof *out, ALIGN_OF(oi_illum), &o[0]) ||
         !span_of(status, n, sizeof *status, ALIGN_OF(int), &o[1]) ||
@@ -275,13 +270,10 @@ int oi_expose_batch(long n, const oi_camera *camera, const oi_expose_in *in,
 {
     span si[1], o[2];
     long i, bad = 0;
-    int st;
     if (n == 0) return 0;
     if (check_n(n) != OI_OK) return OI_ERR_INPUT; /* nothing written: n is not the arrays' */
-    st = OI_OK;
-    if (st == OI_OK && (camera == NULL || in == NULL || out == NULL || status == NULL))
-        st = OI_ERR_NULL;
-    if (st != OI_OK) return batch_fail(st, n, status, NULL, 0, 0);
+    if (camera == NULL || in == NULL || out == NULL || status == NULL)
+        return batch_fail(OI_ERR_NULL, n, status, NULL, 0, 0);
     if (!span_of(in, n, sizeof *in, ALIGN_OF(oi_expose_in), &si[0]) ||
         !span_of(out, n, sizeof *out, ALIGN_OF(oi_exposure), &o[0]) ||
         !span_of(status, n, sizeof *status, ALIGN_OF(int), &o[1]) ||
@@ -307,11 +299,8 @@ int oi_expose_scene_batch(long n, const oi_camera *camera, const oi_scene *scene
     int st;
     if (n == 0) return 0;
     if (check_n(n) != OI_OK) return OI_ERR_INPUT; /* nothing written: n is not the arrays' */
-    st = OI_OK;
-    if (st == OI_OK &&
-        (camera == NULL || scenes == NULL || illum == NULL || out == NULL || status == NULL))
-        st = OI_ERR_NULL;
-    if (st != OI_OK) return batch_fail(st, n, status, NULL, 0, 0);
+    if (camera == NULL || scenes == NULL || illum == NULL || out == NULL || status == NULL)
+        return batch_fail(OI_ERR_NULL, n, status, NULL, 0, 0);
     if (!span_of(scenes, n, sizeof *scenes, ALIGN_OF(oi_scene), &in[0]) ||
         !span_of(illum, n, sizeof *illum, ALIGN_OF(oi_illum), &in[1]) ||
         !span_of(out, n, sizeof *out, ALIGN_OF(oi_exposure), &o[0]) ||

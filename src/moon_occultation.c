@@ -108,7 +108,7 @@ int oi__moon_shadow(const oi_real sun_km[3], const oi_real moon_km[3],
     if (discs_certainly_apart(u_sun, u_moon, ds, dm, m->sun_radius_km, m->moon_radius_km))
         return OI_OK;
     dm = oi__unit_bounded(u_moon, u_moon);
-    ds = oi__unit_bounded(u_sun, u_sun);
+    (void)oi__unit_bounded(u_sun, u_sun);
     rm = apparent_radius(m->moon_radius_km, dm);
     sep = oi__angle_unit(u_sun, u_moon);
     region = oi__disc_fractions(sh->sun_radius_rad, rm, sep, &fm, &fm_ld);

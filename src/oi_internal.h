@@ -344,7 +344,7 @@ int oi__sun_shadow_want(const oi_real sun_km[3], const oi_real point_km[3],
 
 /* oi_illuminate (src/illuminate.c) with a resolved model and non-NULL
  * scene and out: the model is not validated again. */
-int oi__illuminate_resolved(const oi_scene *scene, const oi_model *resolved, oi_illum *out);
+int oi__illuminate_resolved(const oi_scene *scene, const oi_model *m, oi_illum *out);
 
 /*
  * oi_earthshine (src/earthshine.c) for callers that already hold a resolved
@@ -366,7 +366,7 @@ oi_real oi__lambert_phase_cs(oi_real xi, oi_real cos_xi, oi_real sin_xi);
  * reflection (src/earthshine_angular.c): NULL for the mean direction
  * (earth_reflection = OI_EARTH_REFLECT_MEAN, the Lambert far field, or the
  * table compiled out). */
-const oi_earth_angular_table *oi__earth_angular_of(const oi_model *resolved);
+const oi_earth_angular_table *oi__earth_angular_of(const oi_model *m);
 
 #if !defined(OI_NO_EARTH_ANGULAR) && !defined(OI_NO_EARTH_TABLE)
 /* S(o) = F / phi, the shape of a Lambertian sphere's flux under earthshine
