@@ -121,7 +121,9 @@ int oi__earth_sphere_shape(const oi_earth_angular_table *t, oi_real theta, oi_re
         nk = stencil(f * (oi_real)(t->n_term - 1), t->n_term, ic, wc);
         for (k = 0; k < nk; k++) ic[k] += t->n_lit;
     }
-    for (k = 0; k <= nc; k++) c[k] = (oi_real)0;
+    /* every slot zeroed, not only the table's: the series reads the slots of
+     * the degrees it sums, which a table with fewer coefficients leaves 0 */
+    for (k = 0; k <= NC_MAX; k++) c[k] = (oi_real)0;
     for (a = 0; a < nr; a++)
         for (b = 0; b < nk; b++) {
             const unsigned short *node = t->code + ((long)ir[a] * nt + ic[b]) * (nc + 1);
