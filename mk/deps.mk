@@ -71,7 +71,7 @@ $(VENV)/.deps: requirements.lock requirements.txt
 	$(call apt_need,[ -x $(PY) ] || python3 -m venv $(VENV),$(APT_VENV))
 	@$(PY) -m pip --version >/dev/null 2>&1 || python3 -m venv --clear $(VENV)
 	@for p in $$(sed 's/#.*//' requirements.txt); do \
-	  grep -qi "^$$p==" requirements.lock || { echo "deps-py: $$p (requirements.txt) is not in requirements.lock: run make lock"; exit 1; }; \
+	  grep -qix "$$p" requirements.lock || { echo "deps-py: $$p (requirements.txt) is not in requirements.lock: run make lock"; exit 1; }; \
 	done
 	$(PY) -m pip install -q --disable-pip-version-check -r requirements.lock
 	@touch $@
