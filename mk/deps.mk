@@ -77,7 +77,7 @@ $(VENV)/.deps: requirements.lock requirements.txt
 	@touch $@
 
 LOCK_VENV := $(BUILDDIR)/lock-venv
-lock: ## re-resolve requirements.txt (newest versions) into requirements.lock; check the wheels, review the diff
+lock: ## re-resolve requirements.txt (its top-level pins; raise one there to upgrade) into requirements.lock; check the wheels, review the diff
 	rm -rf $(LOCK_VENV) && python3 -m venv $(LOCK_VENV)
 	$(LOCK_VENV)/bin/python -m pip install -q --disable-pip-version-check --upgrade pip
 	$(LOCK_VENV)/bin/python -m pip install -q --disable-pip-version-check -r requirements.txt
