@@ -5,7 +5,8 @@
 #   make binding       install the binding (python/) into the venv (pip install ./python)
 #   make pass-example  a shipped TLE case -> planner CSV -> pass plan -> plot + rendered view,
 #                      in build/pass-example/ (PASS_CASE=geo-inspector-eclipse by default)
-#   make gallery       regenerate docs/gallery/ from the three shipped cases
+#   make gallery       pass plots and views of the three shipped cases in build/gallery/out/
+#   make gallery-docs  the same, refreshing the committed docs/gallery/
 
 SHARED_LIB := $(BUILDDIR)/liborbillum.so
 RT_HDR := $(wildcard include/*.h src/*.h tables/*.h)
@@ -13,7 +14,7 @@ PY_BINDING_SRC := python/pyproject.toml python/setup.py $(wildcard python/orbill
 PASS_CASE ?= geo-inspector-eclipse
 PASS_DIR := $(BUILDDIR)/pass-example
 
-.PHONY: shared binding pass-example gallery
+.PHONY: shared binding pass-example gallery gallery-docs
 
 shared: $(SHARED_LIB) ## build build/liborbillum.so (double precision, for the Python binding)
 
@@ -41,8 +42,11 @@ pass-example: all binding ## shipped TLE case -> pass plan CSV + plot + rendered
 	@echo "plot:      $(PASS_DIR)/$(PASS_CASE)-pass.png"
 	@echo "view:      $(PASS_DIR)/$(PASS_CASE)-view.png"
 
-gallery: all binding ## regenerate docs/gallery/ (pass plots and views of the shipped cases)
-	$(PY) -m examples.render.gallery --plan $(PLAN) --out docs/gallery
+gallery: all binding ## pass plots and views of the shipped cases in build/gallery/out/ (the tree stays clean)
+	$(PY) -m examples.render.gallery --plan $(PLAN) --out $(BUILDDIR)/gallery/out --work $(BUILDDIR)/gallery
+
+gallery-docs: all binding ## the gallery, refreshing the committed docs/gallery/
+	$(PY) -m examples.render.gallery --plan $(PLAN) --out docs/gallery --work $(BUILDDIR)/gallery
 
 # ---- the thin test binding's shared library (tests/python/_oi_ctypes.py):
 # the double-precision runtime plus a struct-size probe. Not the public

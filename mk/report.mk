@@ -1,17 +1,23 @@
 # SPDX-License-Identifier: MIT
 # mk/report.mk: measurements and reports (writing to build/ unless a target says it refreshes docs/).
-#   make report            docs/report.md and its plots in docs/report/ (sections: bake/report.py;
-#                          REPORT_ARGS: e.g. REPORT_ARGS="--only report_photon" or "--strict")
+#   make report            build/report/report.md and its plots in build/report/report/ (sections:
+#                          bake/report/; REPORT_ARGS: e.g. REPORT_ARGS="--only report_photon" or
+#                          "--strict"); the committed docs/report.md stays as it is
+#   make report-docs       the same run, written over the committed docs/report.md and docs/report/
 #   make perf-doc          cross, size, stack, target-test, target-bench, bench; docs/performance.md
 #   make bench             host benchmark: ns and instructions per scene, against quadrature
 #   make shadow-report     planar (Montenbruck & Gill) vs exact spherical Sun fraction
 #   make stability-report  the worst-error table of docs/stability.md
 #   make golden            re-record the planner's golden outputs (tests/golden/)
 
-.PHONY: report perf-doc bench shadow-report stability-report golden
+.PHONY: report report-docs perf-doc bench shadow-report stability-report golden
 REPORT_ARGS ?=
+REPORT_OUT := $(BUILDDIR)/report/report.md
 
-report: deps-py ## write docs/report.md + docs/report/*.png (every number computed by this run)
+report: deps-py ## write build/report/report.md + its plots (every number computed by this run); the tree stays clean
+	MPLBACKEND=Agg $(PY) -m bake.report --out $(REPORT_OUT) $(REPORT_ARGS)
+
+report-docs: deps-py ## the report's run, refreshing the committed docs/report.md + docs/report/*.png
 	MPLBACKEND=Agg $(PY) -m bake.report --out docs/report.md $(REPORT_ARGS)
 
 golden: $(PLAN) ## re-record tests/golden/*.plan.csv and demo.txt (only for a change meant to move them)
