@@ -43,6 +43,7 @@ class Summary:
     propagate_cpu_s: float = 0.0
     illuminate_cpu_s: float = 0.0
     setup_s: float = 0.0
+    run_s: float = 0.0         # wall time of the blocks (from the first submitted to the last written)
     wall_s: float = 0.0
     workers: int = 1
     statuses: dict = field(default_factory=dict)
@@ -210,8 +211,10 @@ def plan(sets, observers, start, stop, step_s, *, camera="telescope-15cm",
 
     try:
         if scheduler is None and not workers:
+            r0 = time.perf_counter()
             for a, b in parts:
                 take(block.run(sets[a:b], a, ctx))
+            summary.run_s = time.perf_counter() - r0
         else:
             _run_dask(parts, sets, ctx, take, workers, scheduler, summary)
     finally:
@@ -233,7 +236,9 @@ def _run_dask(parts, sets, ctx, take, workers, scheduler, summary):
         client = Client(scheduler)
     try:
         summary.workers = max(1, len(client.scheduler_info().get("workers", {})))
+        client.wait_for_workers(summary.workers)
         shared = client.scatter(ctx, broadcast=True)
+        r0 = time.perf_counter()
         token = uuid.uuid4().hex
         window = max(2, 3 * summary.workers)  # blocks in flight: keeps workers busy, bounds memory
         queue = collections.deque()
@@ -253,6 +258,7 @@ def _run_dask(parts, sets, ctx, take, workers, scheduler, summary):
             fut.release()
             submit_next()
             take(res)
+        summary.run_s = time.perf_counter() - r0
     finally:
         client.close()
         if cluster is not None:
