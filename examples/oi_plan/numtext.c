@@ -83,30 +83,38 @@ static dd dd_div(dd a, dd b)
     return quick_two_sum(q1, r / b.hi);
 }
 
-/* 10^k, 0 <= k <= 600, by binary powering of 10^(2^i) (each squared from the
- * last: 10^1 .. 10^16 exact, 10^32 exact in double-double). */
-static dd pow10_dd(int k)
+/* The scalings the formatter and parser use: 10^k and 10^-k for
+ * 0 <= k <= POW_MAX, as double-double, built on first use: 10^k by binary
+ * powering of 10^(2^i) (each squared from the last: 10^1 .. 10^16 exact in
+ * double, 10^32 exact in double-double), at most 9 products; 10^-k as the
+ * quotient 1 / 10^k. */
+#define POW_MAX 600
+static dd pow_pos[POW_MAX + 1], pow_neg[POW_MAX + 1];
+static int pow_ready = 0;
+
+static void pow_init(void)
 {
-    static dd sq[10];
-    static int ready = 0;
-    dd r = {1.0, 0.0};
-    int i;
-    if (!ready) {
-        sq[0].hi = 10.0;
-        sq[0].lo = 0.0;
-        for (i = 1; i < 10; i++) sq[i] = dd_mul(sq[i - 1], sq[i - 1]);
-        ready = 1;
+    dd sq[10];
+    int i, k;
+    sq[0].hi = 10.0;
+    sq[0].lo = 0.0;
+    for (i = 1; i < 10; i++) sq[i] = dd_mul(sq[i - 1], sq[i - 1]);
+    for (k = 0; k <= POW_MAX; k++) {
+        dd r = {1.0, 0.0};
+        int j = k;
+        for (i = 0; j != 0; i++, j >>= 1)
+            if (j & 1) r = dd_mul(r, sq[i]);
+        pow_pos[k] = r;
+        pow_neg[k] = dd_div((dd){1.0, 0.0}, r);
     }
-    for (i = 0; k != 0; i++, k >>= 1)
-        if (k & 1) r = dd_mul(r, sq[i]);
-    return r;
+    pow_ready = 1;
 }
 
-/* a * 10^k in double-double. */
+/* a * 10^k in double-double, |k| <= POW_MAX. */
 static dd scale10(dd a, int k)
 {
-    if (k >= 0) return dd_mul(a, pow10_dd(k));
-    return dd_div(a, pow10_dd(-k));
+    if (!pow_ready) pow_init();
+    return dd_mul(a, k >= 0 ? pow_pos[k] : pow_neg[-k]);
 }
 
 static size_t fallback_format(double x, char *buf)
@@ -120,12 +128,16 @@ static size_t fallback_format(double x, char *buf)
  * cannot decide the rounding. */
 static int digits17(double a, uint64_t *digits, int *e10)
 {
-    int e = (int)floor(log10(a)), tries;
+    int b, e, tries;
+    /* a = f 2^b, f in [0.5, 1): log10(a) in [(b - 1) log10(2), b log10(2)); the
+     * estimate is the true exponent or one below */
+    (void)frexp(a, &b);
+    e = (int)floor((double)(b - 1) * 0.30102999566398120);
     for (tries = 0; tries < 3; tries++) {
         dd y = scale10((dd){a, 0.0}, 16 - e);
         double fl, frac;
         int64_t n;
-        if (!(y.hi >= 9.0e15 && y.hi < 1.1e17)) return 0;
+        if (!(y.hi >= 9.0e15 && y.hi < 1.1e18)) return 0;
         /* the unrounded value decides the exponent: y in [1e16, 1e17) */
         if (y.hi < 1.0e16 || (y.hi == 1.0e16 && y.lo < 0.0)) {
             e--;
