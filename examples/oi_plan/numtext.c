@@ -30,6 +30,20 @@ typedef struct {
     double hi, lo;
 } dd;
 
+static uint64_t bits_of(double x)
+{
+    uint64_t u;
+    memcpy(&u, &x, sizeof u);
+    return u;
+}
+
+static double of_bits(uint64_t u)
+{
+    double x;
+    memcpy(&x, &u, sizeof x);
+    return x;
+}
+
 /* Error bound of the double-double scaling, relative: 2^-90 (the
  * arithmetic's is below 2^-98; the margin costs one fallback in ~10^10). */
 #define DD_REL_ERR (8.077935669463161e-28)
@@ -128,11 +142,11 @@ static size_t fallback_format(double x, char *buf)
  * cannot decide the rounding. */
 static int digits17(double a, uint64_t *digits, int *e10)
 {
-    int b, e, tries;
-    /* a = f 2^b, f in [0.5, 1): log10(a) in [(b - 1) log10(2), b log10(2)); the
-     * estimate is the true exponent or one below */
-    (void)frexp(a, &b);
-    e = (int)floor((double)(b - 1) * 0.30102999566398120);
+    /* a = f 2^b, f in [1, 2) (a normal number: the caller's range):
+     * log10(a) in [b log10(2), (b + 1) log10(2)); the estimate is the true
+     * exponent or one below */
+    const int b = (int)((bits_of(a) >> 52) & 0x7FF) - 1023;
+    int e = (int)floor((double)b * 0.30102999566398120), tries;
     for (tries = 0; tries < 3; tries++) {
         dd y = scale10((dd){a, 0.0}, 16 - e);
         double fl, frac;
@@ -148,7 +162,9 @@ static int digits17(double a, uint64_t *digits, int *e10)
             continue;
         }
         /* y.hi >= 2^53 is an integer; the fraction is in lo */
-        fl = floor(y.lo);
+        /* floor of |lo| <= 8 without a libm call */
+        fl = (double)(int64_t)y.lo;
+        if (fl > y.lo) fl -= 1.0;
         frac = y.lo - fl;
         if (fabs(frac - 0.5) <= y.hi * DD_REL_ERR) return 0;
         n = (int64_t)y.hi + (int64_t)fl + (frac > 0.5 ? 1 : 0);
@@ -164,6 +180,11 @@ static int digits17(double a, uint64_t *digits, int *e10)
     return 0;
 }
 
+static const char DIGIT_PAIRS[201] =
+    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+    "8081828384858687888990919293949596979899";
+
 size_t num_format17(double x, char *buf)
 {
     char d[17];
@@ -173,9 +194,18 @@ size_t num_format17(double x, char *buf)
     double a = fabs(x);
     if (!(a >= 1e-280 && a <= 1e280) || !digits17(a, &digits, &e10))
         return fallback_format(x, buf);
-    for (i = 16; i >= 0; i--) {
-        d[i] = (char)('0' + (int)(digits % 10u));
-        digits /= 10u;
+    {
+        /* two digits at a time from 32-bit halves: 9 high digits, 8 low */
+        uint32_t hi = (uint32_t)(digits / 100000000u), lo = (uint32_t)(digits % 100000000u);
+        for (i = 16; i > 8; i -= 2) {
+            memcpy(d + i - 1, DIGIT_PAIRS + 2 * (lo % 100u), 2);
+            lo /= 100u;
+        }
+        for (i = 8; i > 0; i -= 2) {
+            memcpy(d + i - 1, DIGIT_PAIRS + 2 * (hi % 100u), 2);
+            hi /= 100u;
+        }
+        d[0] = (char)('0' + (int)hi);
     }
     for (last = 16; last > 0 && d[last] == '0'; last--) {
     }
@@ -224,7 +254,8 @@ static int round_dd(dd v, double *out)
         *out = c;
         return 1;
     }
-    next = nextafter(c, v.lo > 0 ? HUGE_VAL : -HUGE_VAL);
+    /* c > 0 and normal (the caller's range): its neighbour by the bits */
+    next = of_bits(bits_of(c) + (v.lo > 0 ? 1u : (uint64_t)-1));
     half = 0.5 * fabs(next - c);
     if (!(fabs(v.lo) < half) || half - fabs(v.lo) <= fabs(c) * DD_REL_ERR) return 0;
     *out = c;
@@ -240,21 +271,26 @@ double num_parse(const char *s, char **end)
     if (*p == '+' || *p == '-') neg = *p++ == '-';
     if (!is_digit(*p) && !(*p == '.' && is_digit(p[1]))) return strtod(s, end);
     if (p[0] == '0' && (p[1] == 'x' || p[1] == 'X')) return strtod(s, end);
-    for (; is_digit(*p); p++) {
+    /* leading zeros, then at most 19 significant digits (more: strtod) */
+    while (*p == '0') {
+        p++;
         any = 1;
-        if (m == 0 && *p == '0') continue;
-        if (++nd > 19) return strtod(s, end);
-        m = 10u * m + (uint64_t)(*p - '0');
     }
+    for (; is_digit(*p); p++, nd++) m = 10u * m + (uint64_t)(*p - '0');
+    if (nd > 0) any = 1;
     if (*p == '.') {
-        for (p++; is_digit(*p); p++) {
-            any = 1;
-            exp_frac--;
-            if (m == 0 && *p == '0') continue;
-            if (++nd > 19) return strtod(s, end);
-            m = 10u * m + (uint64_t)(*p - '0');
+        p++;
+        if (nd == 0) {
+            while (*p == '0') {
+                p++;
+                exp_frac--;
+                any = 1;
+            }
         }
+        for (; is_digit(*p); p++, nd++, exp_frac--) m = 10u * m + (uint64_t)(*p - '0');
+        if (nd > 0) any = 1;
     }
+    if (nd > 19) return strtod(s, end);
     if (!any) return strtod(s, end);
     if (*p == 'e' || *p == 'E') {
         const char *q = p + 1;
