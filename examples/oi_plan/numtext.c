@@ -192,6 +192,12 @@ size_t num_format17(double x, char *buf)
     int e10, i, last;
     size_t n = 0;
     double a = fabs(x);
+    if (a == 0.0) { /* "0" or "-0" */
+        if (bits_of(x) >> 63) buf[n++] = '-';
+        buf[n++] = '0';
+        buf[n] = '\0';
+        return n;
+    }
     if (!(a >= 1e-280 && a <= 1e280) || !digits17(a, &digits, &e10))
         return fallback_format(x, buf);
     {
