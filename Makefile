@@ -73,6 +73,8 @@ demo: $(PLAN) ## run the exposure planner on its built-in scenario
 	$(PLAN)
 
 # ---- tests
+# test_numtext compiles the planner's number text into itself
+$(BUILDDIR)/tests/double/test_numtext $(BUILDDIR)/tests/float/test_numtext: examples/oi_plan/numtext.c examples/oi_plan/numtext.h
 $(BUILDDIR)/tests/double/%: tests/c/%.c $(LIB_double) | deps-c
 	@mkdir -p $(dir $@)
 	$(CC) $(TEST_CFLAGS) $(DEF_double) $< $(LIB_double) -lcmocka -lm -o $@

@@ -54,3 +54,17 @@ $(foreach p,double float,$(eval $(call BENCH_RULES,$(p))))
 
 bench: $(BENCH_DIR)/bench-double $(BENCH_DIR)/bench-float deps-py deps-bench ## ns and instructions per scene; table vs quadrature
 	@nice -n 5 $(PY) bench/run_bench.py --bindir $(BENCH_DIR) --out $(BENCH_DIR)/bench.txt
+
+# ---- the catalogue planner's throughput (bench/catalog_bench.py): scenes per CPU-second per
+# core (propagation, illumination apart) and the scaling from 1 to 2 local Dask workers
+.PHONY: catalog-bench
+catalog-bench: binding ## catalogue planner: scenes per CPU-second per core, 1 -> 2 Dask workers (build/bench/catalog.txt)
+	@mkdir -p $(BENCH_DIR)
+	nice -n 5 $(PY) bench/catalog_bench.py --out $(BENCH_DIR)/catalog.txt
+
+# ---- the planner's speed (bench/plan_speed.py): oi-plan --csv rows per CPU-second on the golden
+# cases repeated, output checked against the golden files; instructions per row with valgrind
+.PHONY: plan-bench
+plan-bench: $(PLAN) deps-py ## oi-plan --csv rows per CPU-second and instructions per row (build/bench/plan.txt)
+	@mkdir -p $(BENCH_DIR)
+	nice -n 5 $(PY) bench/plan_speed.py --plan $(PLAN) --out $(BENCH_DIR)/plan.txt

@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include "csv_read.h"
+#include "numtext.h"
 #include "output.h"
 #include "windows.h"
 
@@ -179,7 +180,7 @@ static int parse_real(const char *s, double *out)
     while (*p == ' ' || *p == '\t') p++;
     if (*p == '\0') return 1;
     errno = 0;
-    *out = strtod(p, &end);
+    *out = num_parse(p, &end); /* strtod's double and end, faster (numtext.c) */
     if (end == p) return -1;
     while (*end == ' ' || *end == '\t') end++;
     return *end == '\0' ? 0 : -1;

@@ -20,19 +20,58 @@ void csv_free(csv_reader *r)
 {
     free(r->buf);
     free(r->start);
+    free(r->in);
     r->buf = NULL;
     r->start = NULL;
+    r->in = NULL;
+    r->in_pos = r->in_len = 0;
     r->cap = r->fcap = 0;
+}
+
+/* The next block of input; 0 at its end, on a read error (ferror tells)
+ * or when the block cannot be allocated (then read as a read error). */
+static int refill(csv_reader *r)
+{
+    if (r->in == NULL) {
+        r->in = (unsigned char *)malloc(CSV_READ_BLOCK);
+        if (r->in == NULL) {
+            r->in_nomem = 1;
+            return 0;
+        }
+    }
+    r->in_pos = 0;
+    r->in_len = fread(r->in, 1, CSV_READ_BLOCK, r->fp);
+    return r->in_len > 0;
+}
+
+/* The next byte of input as getc gives it, from the block (one fread per
+ * CSV_READ_BLOCK bytes instead of a locked getc per byte). */
+static int next_byte(csv_reader *r)
+{
+    if (r->in_pos == r->in_len && !refill(r)) return EOF;
+    return r->in[r->in_pos++];
+}
+
+/* Give back the byte next_byte just returned (it is still in the block). */
+static void unget_byte(csv_reader *r)
+{
+    r->in_pos--;
+}
+
+/* A read error, or no memory for the block. */
+static int read_failed(const csv_reader *r)
+{
+    return ferror(r->fp) || r->in_nomem;
 }
 
 /* Next byte with line ends normalised: LF, CRLF and CR all read as '\n'. */
 static int get(csv_reader *r)
 {
-    int c = getc(r->fp);
+    int c = next_byte(r);
     if (c == EOF) return END_OF_INPUT;
     if (c == '\r') {
-        int d = getc(r->fp);
-        if (d != '\n' && d != EOF) ungetc(d, r->fp);
+        int d = next_byte(r);
+        if (d != '\n' && d != EOF) unget_byte(r);
         c = '\n';
     }
     if (c == '\n') {
@@ -46,6 +85,10 @@ static int get(csv_reader *r)
 
 static int put(csv_reader *r, char c)
 {
+    if (r->len < r->cap) { /* the common case: room in the record buffer */
+        r->buf[r->len++] = c;
+        return CSV_RECORD;
+    }
     if (r->len + 1 > r->cap) {
         size_t cap = r->cap ? 2 * r->cap : 256;
         char *p;
@@ -58,6 +101,24 @@ static int put(csv_reader *r, char c)
     }
     r->buf[r->len++] = c;
     return CSV_RECORD;
+}
+
+/* The run of plain bytes (none of , LF CR NUL) that follows in the block,
+ * appended to the record when the record buffer holds it without growing:
+ * what put would do byte by byte, in one copy. Returns 1 if copied. */
+static int plain_run(csv_reader *r)
+{
+    const unsigned char *p = r->in;
+    size_t i = r->in_pos, k;
+    if (p == NULL) return 0;
+    while (i < r->in_len && p[i] != ',' && p[i] != '\n' && p[i] != '\r' && p[i] != 0) i++;
+    k = i - r->in_pos;
+    if (k == 0 || r->len + k > r->cap) return 0;
+    memcpy(r->buf + r->len, p + r->in_pos, k);
+    r->len += k;
+    r->col += k;
+    r->in_pos = i;
+    return 1;
 }
 
 /* Close the current field: trim trailing blanks of unquoted text, add NUL. */
@@ -107,7 +168,7 @@ static int read_record(csv_reader *r, int *blank)
     *blank = 0;
     c = get(r);
     if (c == END_OF_INPUT) {
-        if (ferror(r->fp)) return CSV_IO;
+        if (read_failed(r)) return CSV_IO;
         return CSV_END;
     }
     for (;;) {
@@ -121,7 +182,7 @@ static int read_record(csv_reader *r, int *blank)
                 c = get(r);
                 if (c == END_OF_INPUT) {
                     mark(r);
-                    return ferror(r->fp) ? CSV_IO : CSV_BAD_QUOTE;
+                    return read_failed(r) ? CSV_IO : CSV_BAD_QUOTE;
                 }
                 if (c == '"') {
                     c = get(r);
@@ -156,6 +217,7 @@ static int read_record(csv_reader *r, int *blank)
                     if (st == CSV_TOO_LONG) skip_line(r);
                     return st;
                 }
+                (void)plain_run(r);
                 c = get(r);
             }
         }
@@ -171,7 +233,7 @@ static int read_record(csv_reader *r, int *blank)
         }
         break; /* '\n' or end of input */
     }
-    if (c == END_OF_INPUT && ferror(r->fp)) return CSV_IO;
+    if (c == END_OF_INPUT && read_failed(r)) return CSV_IO;
     if (bad_byte) return CSV_BAD_BYTE;
     *blank = !content;
     return CSV_RECORD;
@@ -182,11 +244,11 @@ int csv_next(csv_reader *r)
     int st, blank;
     if (!r->started) {
         /* UTF-8 byte-order mark (spreadsheet exports) */
-        int c0 = getc(r->fp);
+        int c0 = next_byte(r);
         r->started = 1;
         if (c0 == 0xEF) {
-            int c1 = getc(r->fp);
-            int c2 = c1 == 0xBB ? getc(r->fp) : EOF;
+            int c1 = next_byte(r);
+            int c2 = c1 == 0xBB ? next_byte(r) : EOF;
             if (!(c1 == 0xBB && c2 == 0xBF)) {
                 /* not a BOM: only one byte can be pushed back; reject */
                 r->err_line = 1;
@@ -194,7 +256,7 @@ int csv_next(csv_reader *r)
                 return CSV_BAD_BYTE;
             }
         } else if (c0 != EOF) {
-            ungetc(c0, r->fp);
+            unget_byte(r);
         }
     }
     do {

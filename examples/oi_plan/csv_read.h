@@ -15,6 +15,7 @@
 #include <stdio.h>
 
 #define CSV_MAX_RECORD (1u << 20) /* bytes per record */
+#define CSV_READ_BLOCK (1u << 16) /* bytes per fread: the input is read in blocks */
 
 enum csv_result {
     CSV_RECORD = 0,   /* a record was read */
@@ -38,6 +39,9 @@ typedef struct csv_reader {
     size_t *start;            /* offset of each field in buf */
     size_t nfields, fcap;
     int started;              /* BOM check done */
+    unsigned char *in;        /* the block read (malloc'd on first use) */
+    size_t in_pos, in_len;
+    int in_nomem;             /* the block could not be allocated: a read error */
 } csv_reader;
 
 void csv_init(csv_reader *r, FILE *fp);

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* output.c: CSV and table output of the planner (see output.h). */
 #include "output.h"
+#include "numtext.h"
 
 #include <string.h>
 
@@ -42,7 +43,10 @@ static void put_field(FILE *fp, const char *s)
 static void put_num(FILE *fp, int present, double x)
 {
     if (present) {
-        fprintf(fp, ",%.17g", x + 0.0 == 0.0 ? 0.0 : x);
+        char text[NUM_TEXT_MAX + 1];
+        text[0] = ',';
+        (void)num_format17(x + 0.0 == 0.0 ? 0.0 : x, text + 1);
+        fputs(text, fp);
     } else {
         fputc(',', fp);
     }

@@ -197,15 +197,21 @@ def _scalar_rows(v, n, name):
 
 
 def _scenes(sun, moon, target, observer, terms, earth_albedo, target_albedo,
-            target_radius_m):
+            target_radius_m, target_velocity=None, observer_velocity=None):
     sun = _vec(sun, "sun")
     target = _vec(target, "target")
     moon = None if moon is None else _vec(moon, "moon")
     observer = None if observer is None else _vec(observer, "observer")
-    n = _n_rows(sun, target, moon, observer)
+    tv = None if target_velocity is None else _vec(target_velocity, "target_velocity")
+    ov = None if observer_velocity is None else _vec(observer_velocity, "observer_velocity")
+    n = _n_rows(sun, target, moon, observer, tv, ov)
     d = L.oi_scene()
     _lib.oi_scene_defaults(ctypes.addressof(d))
-    sc = np.zeros(n, dtype=SCENE_DTYPE)  # fields not set below (velocities) stay 0: at rest
+    sc = np.zeros(n, dtype=SCENE_DTYPE)  # velocities not given stay 0: at rest
+    if tv is not None:
+        sc["target_vel_km_s"] = tv
+    if ov is not None:
+        sc["observer_vel_km_s"] = ov
     sc["sun_km"] = sun
     sc["target_km"] = target
     sc["moon_km"] = 0.0 if moon is None else moon
@@ -376,7 +382,7 @@ def _exposure_dict(ex, st):
 
 def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None,
            target_albedo=None, target_radius_m=None, model=None, fill=None, snr_min=None,
-           sky=None):
+           sky=None, target_velocity=None, observer_velocity=None):
     """oi_illuminate then oi_expose_scene for each row: the suggested exposure.
 
     camera: a built-in camera name (see cameras()), a dict as camera() returns
@@ -386,6 +392,9 @@ def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None
     fill, snr_min: the oi_expose_goal (None: the C defaults).
     sky: oi_expose_goal.sky, OI_SKY_* bits (orbillum._lib; None or 0: no sky
     background but the sunlit Earth, as before).
+    target_velocity, observer_velocity: (N, 3), (3,) or None (at rest), km/s in
+    the positions' frame: the target's angular rate and trail (the planner's
+    target_v*, observer_v* columns; docs/camera.md, "Motion").
     Returns the dict of illuminate() plus the oi_exposure fields (exposure_s,
     gain, time_index, gain_index, signal_e, background_e, peak_e, saturation_e,
     fill, snr, sun_angle_rad, flags, background_w_m2_sr), flag_names, expose_status and
@@ -401,7 +410,7 @@ def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None
     m = _model(model)
     g = _goal(fill, snr_min, sky)
     sc = _scenes(sun, moon, target, observer, terms, earth_albedo, target_albedo,
-                 target_radius_m)
+                 target_radius_m, target_velocity, observer_velocity)
     res, status = _illuminate_raw(sc, m)
     n = sc.shape[0]
     ex = np.empty(n, dtype=EXPOSURE_DTYPE)  # the batch writes every row

@@ -1,0 +1,87 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+"""catalog_bench.py: the driver of `make catalog-bench`: the catalogue planner's throughput.
+
+A seeded synthetic catalogue (orbillum.catalog.synthetic) planned for two
+observers (a LEO and a GEO inspector) over a span of epochs, no output files
+(I/O apart):
+
+1. one process: scenes (objects x observers x epochs) per CPU-second per core,
+   end to end (propagation + illumination) and each part apart, from the
+   thread CPU time each block measures (orbillum.catalog.block);
+2. a local dask.distributed cluster of 1 then 2 one-thread worker processes:
+   the wall time of the blocks (cluster start and the shared context's
+   scatter excluded) and the speed-up from 1 to 2 workers. On a machine whose
+   cores other jobs share the speed-up says so: the load is printed beside it.
+
+Prints `name value unit` lines, also written to --out.
+"""
+import argparse
+import os
+import sys
+
+from orbillum.catalog import plan, synthetic, tle  # first: it sets astropy's IERS options
+
+import astropy.units as u  # noqa: E402
+from astropy.time import Time  # noqa: E402
+
+OBSERVERS = [
+    {"name": "inspector-leo", "epoch": "2026-12-01T00:00:00", "a_km": 6978.0, "ecc": 0.001,
+     "incl_deg": 53.0, "raan_deg": 10.0, "argp_deg": 0.0, "mo_deg": 0.0},
+    {"name": "inspector-geo", "epoch": "2026-12-01T00:00:00", "a_km": 42164.0, "ecc": 0.0,
+     "incl_deg": 0.05, "raan_deg": 0.0, "argp_deg": 0.0, "mo_deg": 100.0},
+]
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("--objects", type=int, default=2000)
+    p.add_argument("--hours", type=float, default=6.0)
+    p.add_argument("--step", type=float, default=60.0)
+    p.add_argument("--out", default="build/bench/catalog.txt")
+    a = p.parse_args()
+    sets = synthetic.generate(a.objects, seed=1)
+    obs = [tle.from_elements(el, 99000 + i) for i, el in enumerate(OBSERVERS)]
+    stop = (Time("2026-12-01T00:00:00", scale="utc") + a.hours * u.h).isot
+    lines = []
+
+    def put(name, value, unit, comment=""):
+        line = f"{name} {value} {unit}" + (f"  # {comment}" if comment else "")
+        print(line, flush=True)
+        lines.append(line)
+
+    def run(**kw):
+        s, _ = plan.plan(sets, obs, "2026-12-01T00:00:00", stop, a.step, progress=False, **kw)
+        return s
+
+    s = run()
+    r = plan.rate(s)
+    put("catalog.scenes", s.scenes, "scenes", f"{s.objects} objects x {s.observers} observers "
+        f"x {s.epochs} epochs, {s.blocks} blocks")
+    put("catalog.end_to_end", f"{r['end_to_end']:.4g}", "scenes/CPU-s",
+        "propagation + illumination, one core")
+    put("catalog.propagate", f"{r['propagate']:.4g}", "scenes/CPU-s",
+        "vectorised SGP4 + TEME->GCRS rotation")
+    put("catalog.illuminate", f"{r['illuminate']:.4g}", "scenes/CPU-s",
+        "scenes, oi_illuminate_batch + oi_expose_scene_batch, visibility")
+    put("catalog.setup", f"{s.setup_s:.3g}", "s", "epochs, Sun, Moon, rotations, observers")
+    put("catalog.serial_run", f"{s.run_s:.3g}", "s", "blocks in one process (wall)")
+    walls = {}
+    for w in (1, 2):
+        sw = run(workers=w)
+        walls[w] = sw.run_s
+        put(f"catalog.dask{w}_run", f"{sw.run_s:.3g}", "s",
+            f"blocks on a local cluster of {w} worker(s) (wall)")
+        put(f"catalog.dask{w}_end_to_end", f"{plan.rate(sw)['end_to_end']:.4g}", "scenes/CPU-s",
+            "per core inside the workers: the same as one process unless distribution costs")
+    load = os.getloadavg()[0]
+    put("catalog.scaling_1_to_2", f"{walls[1] / walls[2]:.3g}", "x",
+        f"ideal 2; load average {load:.2f} on {os.cpu_count()} cores during the run")
+    os.makedirs(os.path.dirname(os.path.abspath(a.out)), exist_ok=True)
+    with open(a.out, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,114 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+"""plan_speed.py: the driver of `make plan-bench`: build/oi-plan --csv rows per CPU-second.
+
+For each golden case (tests/golden/CASE.in.csv) the input is repeated
+--copies times into one file; the planner runs on it --runs times and the
+best child CPU time (user + system, getrusage) gives rows per CPU-second. Its
+output is checked to be the golden output repeated, byte for byte. With
+valgrind, callgrind counts the instructions per row on --cg-copies copies and
+the part inside the library (oi_illuminate and oi_expose_scene, inclusive).
+--plan points at another build (e.g. one of an earlier commit) to compare.
+
+Prints `name value unit` lines, also written to --out.
+"""
+import argparse
+import os
+import re
+import resource
+import shutil
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+CASES = ["geo-inspector-eclipse", "leo-inspector", "leo-leo-pass"]
+
+
+def repeated(case, copies, tmp):
+    with open(os.path.join(ROOT, "tests", "golden", case + ".in.csv")) as f:
+        head, *rows = f.read().splitlines(keepends=True)
+    path = os.path.join(tmp, f"{case}-{copies}.csv")
+    with open(path, "w") as f:
+        f.write(head)
+        for _ in range(copies):
+            f.writelines(rows)
+    with open(os.path.join(ROOT, "tests", "golden", case + ".plan.csv")) as f:
+        ohead, *orows = f.read().splitlines(keepends=True)
+    return path, len(rows) * copies, ohead + "".join(orows) * copies
+
+
+def cpu_run(plan, path):
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    r = subprocess.run([plan, "--csv", path], capture_output=True, text=True, check=False)
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    return cpu, r.stdout
+
+
+def callgrind(plan, path, tmp):
+    out = os.path.join(tmp, "cg.out")
+    subprocess.run(["valgrind", "--tool=callgrind", f"--callgrind-out-file={out}", plan,
+                    "--csv", path], capture_output=True, check=False)
+    ann = subprocess.run(["callgrind_annotate", "--inclusive=yes", out], capture_output=True,
+                         text=True, check=False).stdout
+    total = 0
+    per_fn = {}  # a function can be listed twice (by object and by source file): its largest
+    for line in ann.splitlines():
+        m = re.match(r"\s*([\d,]+) .*", line)
+        if not m:
+            continue
+        n = int(m.group(1).replace(",", ""))
+        if "PROGRAM TOTALS" in line:
+            total = n
+        else:
+            f = re.search(r":(oi_illuminate|oi_expose_scene) ", line)
+            if f:
+                per_fn[f.group(1)] = max(per_fn.get(f.group(1), 0), n)
+    return total, sum(per_fn.values())
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("--plan", default=os.path.join(ROOT, "build", "oi-plan"))
+    p.add_argument("--copies", type=int, default=200)
+    p.add_argument("--cg-copies", type=int, default=20)
+    p.add_argument("--runs", type=int, default=5)
+    p.add_argument("--out", default=os.path.join(ROOT, "build", "bench", "plan.txt"))
+    a = p.parse_args()
+    lines = []
+
+    def put(name, value, unit, comment=""):
+        line = f"{name} {value} {unit}" + (f"  # {comment}" if comment else "")
+        print(line, flush=True)
+        lines.append(line)
+
+    ok = True
+    with tempfile.TemporaryDirectory() as tmp:
+        for case in CASES:
+            path, rows, want = repeated(case, a.copies, tmp)
+            best = None
+            for _ in range(a.runs):
+                cpu, got = cpu_run(a.plan, path)
+                if got != want:
+                    ok = False
+                    put(f"plan.{case}.output", "DIFFERS", "-", "not the golden output repeated")
+                    break
+                best = cpu if best is None else min(best, cpu)
+            if best:
+                put(f"plan.{case}.rows_per_cpu_s", f"{rows / best:.4g}", "rows/CPU-s",
+                    f"{rows} rows, best of {a.runs}")
+            if shutil.which("valgrind") and shutil.which("callgrind_annotate"):
+                cpath, crows, _ = repeated(case, a.cg_copies, tmp)
+                total, lib = callgrind(a.plan, cpath, tmp)
+                put(f"plan.{case}.instructions_per_row", f"{total / crows:.0f}", "instructions",
+                    f"callgrind, {crows} rows; the library (oi_illuminate + oi_expose_scene) "
+                    f"{lib / crows:.0f} ({100.0 * lib / total:.0f} %)")
+    os.makedirs(os.path.dirname(os.path.abspath(a.out)), exist_ok=True)
+    with open(a.out, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,330 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * numtext.c: exact decimal text of doubles for the planner's CSV: num_format17
+ * is printf's "%.17g", num_parse is strtod, both to the bit and faster.
+ *
+ * Method: the decimal scaling x * 10^k is formed in double-double arithmetic
+ * (Dekker 1971: a value as an unevaluated sum hi + lo, ~106 bits), whose
+ * relative error here is below 2^-98 (a few products of 2^-104 each). The
+ * answer printf or strtod gives is the correctly rounded one; double-double
+ * decides it except when the exact value lies within that error of a rounding
+ * boundary (a midpoint between 17-digit decimals, or between doubles). Those
+ * rare cases, and everything outside the plain decimal forms and magnitudes
+ * 1e-280..1e280 (subnormals, infinities, NaN, hexadecimal text, more than 19
+ * digits), are handed to snprintf and strtod themselves, so the result is
+ * always theirs. Needs IEEE double arithmetic without contraction into fused
+ * multiply-adds and without excess precision (the C99 build: -std=c99 turns
+ * contraction off in GCC; x86-64 and AArch64 have no excess precision).
+ * Tested against printf and strtod on millions of doubles
+ * (tests/c/test_numtext.c).
+ */
+#include "numtext.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct {
+    double hi, lo;
+} dd;
+
+static uint64_t bits_of(double x)
+{
+    uint64_t u;
+    memcpy(&u, &x, sizeof u);
+    return u;
+}
+
+static double of_bits(uint64_t u)
+{
+    double x;
+    memcpy(&x, &u, sizeof x);
+    return x;
+}
+
+/* Error bound of the double-double scaling, relative: 2^-90 (the
+ * arithmetic's is below 2^-98; the margin costs one fallback in ~10^10). */
+#define DD_REL_ERR (8.077935669463161e-28)
+
+/* Exact powers of ten representable in a double. */
+static const double POW10_EXACT[23] = {
+    1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11,
+    1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+
+static dd quick_two_sum(double a, double b)
+{
+    dd r;
+    r.hi = a + b;
+    r.lo = b - (r.hi - a);
+    return r;
+}
+
+/* Veltkamp's split: a = hi + lo, each with at most 26 significant bits. */
+static void split(double a, double *hi, double *lo)
+{
+    const double t = 134217729.0 * a; /* 2^27 + 1 */
+    *hi = t - (t - a);
+    *lo = a - *hi;
+}
+
+/* a * b exactly as hi + lo (Dekker's product). */
+static dd two_prod(double a, double b)
+{
+    double ah, al, bh, bl;
+    dd r;
+    r.hi = a * b;
+    split(a, &ah, &al);
+    split(b, &bh, &bl);
+    r.lo = ((ah * bh - r.hi) + ah * bl + al * bh) + al * bl;
+    return r;
+}
+
+static dd dd_mul(dd a, dd b)
+{
+    dd p = two_prod(a.hi, b.hi);
+    p.lo += a.hi * b.lo + a.lo * b.hi;
+    return quick_two_sum(p.hi, p.lo);
+}
+
+/* a / b (a.hi - q1 b.hi is exact: the two are within a rounding). */
+static dd dd_div(dd a, dd b)
+{
+    const double q1 = a.hi / b.hi;
+    const dd p = two_prod(q1, b.hi);
+    const double r = (((a.hi - p.hi) - p.lo) + a.lo) - q1 * b.lo;
+    return quick_two_sum(q1, r / b.hi);
+}
+
+/* The scalings the formatter and parser use: 10^k and 10^-k for
+ * 0 <= k <= POW_MAX, as double-double, built on first use: 10^k by binary
+ * powering of 10^(2^i) (each squared from the last: 10^1 .. 10^16 exact in
+ * double, 10^32 exact in double-double), at most 9 products; 10^-k as the
+ * quotient 1 / 10^k. */
+#define POW_MAX 600
+static dd pow_pos[POW_MAX + 1], pow_neg[POW_MAX + 1];
+static int pow_ready = 0;
+
+static void pow_init(void)
+{
+    dd sq[10];
+    int i, k;
+    sq[0].hi = 10.0;
+    sq[0].lo = 0.0;
+    for (i = 1; i < 10; i++) sq[i] = dd_mul(sq[i - 1], sq[i - 1]);
+    for (k = 0; k <= POW_MAX; k++) {
+        dd r = {1.0, 0.0};
+        int j = k;
+        for (i = 0; j != 0; i++, j >>= 1)
+            if (j & 1) r = dd_mul(r, sq[i]);
+        pow_pos[k] = r;
+        pow_neg[k] = dd_div((dd){1.0, 0.0}, r);
+    }
+    pow_ready = 1;
+}
+
+/* a * 10^k in double-double, |k| <= POW_MAX. */
+static dd scale10(dd a, int k)
+{
+    if (!pow_ready) pow_init();
+    return dd_mul(a, k >= 0 ? pow_pos[k] : pow_neg[-k]);
+}
+
+static size_t fallback_format(double x, char *buf)
+{
+    int n = snprintf(buf, NUM_TEXT_MAX, "%.17g", x);
+    return n > 0 ? (size_t)n : 0;
+}
+
+/* The 17 significant digits of a (> 0) rounded to nearest as an integer in
+ * [1e16, 1e17) and the decimal exponent of the first; 0 when double-double
+ * cannot decide the rounding. */
+static int digits17(double a, uint64_t *digits, int *e10)
+{
+    /* a = f 2^b, f in [1, 2) (a normal number: the caller's range):
+     * log10(a) in [b log10(2), (b + 1) log10(2)); the estimate is the true
+     * exponent or one below */
+    const int b = (int)((bits_of(a) >> 52) & 0x7FF) - 1023;
+    int e = (int)floor((double)b * 0.30102999566398120), tries;
+    for (tries = 0; tries < 3; tries++) {
+        dd y = scale10((dd){a, 0.0}, 16 - e);
+        double fl, frac;
+        int64_t n;
+        if (!(y.hi >= 9.0e15 && y.hi < 1.1e18)) return 0;
+        /* the unrounded value decides the exponent: y in [1e16, 1e17) */
+        if (y.hi < 1.0e16 || (y.hi == 1.0e16 && y.lo < 0.0)) {
+            e--;
+            continue;
+        }
+        if (y.hi > 1.0e17 || (y.hi == 1.0e17 && y.lo >= 0.0)) {
+            e++;
+            continue;
+        }
+        /* y.hi >= 2^53 is an integer; the fraction is in lo */
+        /* floor of |lo| <= 8 without a libm call */
+        fl = (double)(int64_t)y.lo;
+        if (fl > y.lo) fl -= 1.0;
+        frac = y.lo - fl;
+        if (fabs(frac - 0.5) <= y.hi * DD_REL_ERR) return 0;
+        n = (int64_t)y.hi + (int64_t)fl + (frac > 0.5 ? 1 : 0);
+        if (n == (int64_t)100000000000000000LL) { /* rounded up to 10^17 */
+            *digits = 10000000000000000ULL;
+            *e10 = e + 1;
+            return 1;
+        }
+        *digits = (uint64_t)n;
+        *e10 = e;
+        return 1;
+    }
+    return 0;
+}
+
+static const char DIGIT_PAIRS[201] =
+    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+    "8081828384858687888990919293949596979899";
+
+size_t num_format17(double x, char *buf)
+{
+    char d[17];
+    uint64_t digits;
+    int e10, i, last;
+    size_t n = 0;
+    double a = fabs(x);
+    if (a == 0.0) { /* "0" or "-0" */
+        if (bits_of(x) >> 63) buf[n++] = '-';
+        buf[n++] = '0';
+        buf[n] = '\0';
+        return n;
+    }
+    if (!(a >= 1e-280 && a <= 1e280) || !digits17(a, &digits, &e10))
+        return fallback_format(x, buf);
+    {
+        /* two digits at a time from 32-bit halves: 9 high digits, 8 low */
+        uint32_t hi = (uint32_t)(digits / 100000000u), lo = (uint32_t)(digits % 100000000u);
+        for (i = 16; i > 8; i -= 2) {
+            memcpy(d + i - 1, DIGIT_PAIRS + 2 * (lo % 100u), 2);
+            lo /= 100u;
+        }
+        for (i = 8; i > 0; i -= 2) {
+            memcpy(d + i - 1, DIGIT_PAIRS + 2 * (hi % 100u), 2);
+            hi /= 100u;
+        }
+        d[0] = (char)('0' + (int)hi);
+    }
+    for (last = 16; last > 0 && d[last] == '0'; last--) {
+    }
+    if (x < 0) buf[n++] = '-';
+    if (e10 < -4 || e10 >= 17) {
+        /* d.ddde+XX */
+        int ex = e10 < 0 ? -e10 : e10;
+        buf[n++] = d[0];
+        if (last > 0) {
+            buf[n++] = '.';
+            for (i = 1; i <= last; i++) buf[n++] = d[i];
+        }
+        buf[n++] = 'e';
+        buf[n++] = e10 < 0 ? '-' : '+';
+        if (ex >= 100) buf[n++] = (char)('0' + ex / 100);
+        buf[n++] = (char)('0' + (ex / 10) % 10);
+        buf[n++] = (char)('0' + ex % 10);
+    } else if (e10 >= 0) {
+        for (i = 0; i <= e10; i++) buf[n++] = d[i];
+        if (last > e10) {
+            buf[n++] = '.';
+            for (i = e10 + 1; i <= last; i++) buf[n++] = d[i];
+        }
+    } else {
+        buf[n++] = '0';
+        buf[n++] = '.';
+        for (i = 0; i < -e10 - 1; i++) buf[n++] = '0';
+        for (i = 0; i <= last; i++) buf[n++] = d[i];
+    }
+    buf[n] = '\0';
+    return n;
+}
+
+static int is_digit(char c)
+{
+    return c >= '0' && c <= '9';
+}
+
+/* The nearest double to the double-double v, or 0 when v lies too near a
+ * midpoint between doubles to tell. */
+static int round_dd(dd v, double *out)
+{
+    const double c = v.hi;
+    double next, half;
+    if (v.lo == 0.0) {
+        *out = c;
+        return 1;
+    }
+    /* c > 0 and normal (the caller's range): its neighbour by the bits */
+    next = of_bits(bits_of(c) + (v.lo > 0 ? 1u : (uint64_t)-1));
+    half = 0.5 * fabs(next - c);
+    if (!(fabs(v.lo) < half) || half - fabs(v.lo) <= fabs(c) * DD_REL_ERR) return 0;
+    *out = c;
+    return 1;
+}
+
+double num_parse(const char *s, char **end)
+{
+    const char *p = s;
+    uint64_t m = 0;
+    int neg = 0, nd = 0, any = 0, e = 0, exp_frac = 0;
+    double v;
+    if (*p == '+' || *p == '-') neg = *p++ == '-';
+    if (!is_digit(*p) && !(*p == '.' && is_digit(p[1]))) return strtod(s, end);
+    if (p[0] == '0' && (p[1] == 'x' || p[1] == 'X')) return strtod(s, end);
+    /* leading zeros, then at most 19 significant digits (more: strtod) */
+    while (*p == '0') {
+        p++;
+        any = 1;
+    }
+    for (; is_digit(*p); p++, nd++) m = 10u * m + (uint64_t)(*p - '0');
+    if (nd > 0) any = 1;
+    if (*p == '.') {
+        p++;
+        if (nd == 0) {
+            while (*p == '0') {
+                p++;
+                exp_frac--;
+                any = 1;
+            }
+        }
+        for (; is_digit(*p); p++, nd++, exp_frac--) m = 10u * m + (uint64_t)(*p - '0');
+        if (nd > 0) any = 1;
+    }
+    if (nd > 19) return strtod(s, end);
+    if (!any) return strtod(s, end);
+    if (*p == 'e' || *p == 'E') {
+        const char *q = p + 1;
+        int eneg = 0;
+        if (*q == '+' || *q == '-') eneg = *q++ == '-';
+        if (is_digit(*q)) {
+            for (; is_digit(*q); q++) {
+                if (e > 100000) return strtod(s, end);
+                e = 10 * e + (*q - '0');
+            }
+            if (eneg) e = -e;
+            p = q;
+        }
+    }
+    e += exp_frac;
+    if (m == 0) {
+        v = 0.0;
+    } else if (m < (1ULL << 53) && e >= -22 && e <= 22) {
+        /* Clinger's fast path: two exact operands, one rounding */
+        v = e < 0 ? (double)m / POW10_EXACT[-e] : (double)m * POW10_EXACT[e];
+    } else {
+        dd mm;
+        if (e + nd > 280 || e + nd < -280) return strtod(s, end);
+        mm.hi = (double)m;
+        /* m < 10^19 < 2^64: (double)m converts back, the difference is exact */
+        mm.lo = (double)(int64_t)(m - (uint64_t)mm.hi);
+        if (!round_dd(scale10(mm, e), &v)) return strtod(s, end);
+    }
+    if (end != NULL) *end = (char *)p;
+    return neg ? -v : v;
+}

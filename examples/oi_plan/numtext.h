@@ -1,0 +1,19 @@
+/* SPDX-License-Identifier: MIT */
+/* numtext.h: exact decimal text of doubles, faster than printf and strtod (numtext.c). */
+#ifndef OI_PLAN_NUMTEXT_H
+#define OI_PLAN_NUMTEXT_H
+
+#include <stddef.h>
+
+/* Longest text num_format17 writes, with its NUL. */
+#define NUM_TEXT_MAX 32
+
+/* Writes x as printf's "%.17g" does, byte for byte, into buf (NUM_TEXT_MAX
+ * bytes); returns the length. */
+size_t num_format17(double x, char *buf);
+
+/* Reads a number as strtod does (the same double, the same end), for the
+ * text at s; *end is set as strtod's endptr. */
+double num_parse(const char *s, char **end);
+
+#endif

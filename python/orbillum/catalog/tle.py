@@ -1,0 +1,184 @@
+# SPDX-License-Identifier: MIT
+"""Two-line element sets as text: read a 3LE/2LE catalogue file, write element sets.
+
+The format is NORAD's (Hoots & Roehrich, Spacetrack Report No. 3, 1980;
+CelesTrak's "NORAD Two-Line Element Set Format"): line 1 and line 2 of 69
+columns, column 69 a modulo-10 checksum (digits, '-' counts 1); a 3LE adds a
+name line before line 1 (CelesTrak writes it as "0 NAME").
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+
+class CatalogueError(ValueError):
+    """An input the catalogue planner cannot use; the message says where and what."""
+
+
+@dataclass(frozen=True)
+class ElementSet:
+    name: str
+    line1: str
+    line2: str
+
+    @property
+    def number(self) -> int:
+        """The catalogue number (columns 3-7; Alpha-5 letters read as sgp4 does)."""
+        s = self.line1[2:7].strip()
+        if s and s[0].isalpha():  # Alpha-5: A=10 ... Z=33, skipping I and O
+            head = "ABCDEFGHJKLMNPQRSTUVWXYZ".index(s[0].upper()) + 10
+            return head * 10000 + int(s[1:])
+        return int(s)
+
+
+def checksum(line: str) -> int:
+    """The modulo-10 checksum of a TLE line's first 68 columns."""
+    return sum(int(c) if c.isdigit() else (1 if c == "-" else 0) for c in line[:68]) % 10
+
+
+def parse(text: str, source: str = "<text>") -> list[ElementSet]:
+    """Every element set of a 3LE or 2LE text ('#' lines and blank lines skipped).
+
+    Raises CatalogueError naming source:line for a line 1 without its line 2, a
+    line 2 without line 1, lines shorter than 64 columns, catalogue numbers that
+    differ between the lines or a wrong checksum.
+    """
+    lines = text.splitlines()
+    out: list[ElementSet] = []
+    name = ""
+    i = 0
+    while i < len(lines):
+        line = lines[i].rstrip()
+        i += 1
+        if not line.strip() or line.lstrip().startswith("#"):
+            continue
+        if line.startswith("1 ") and i < len(lines) and lines[i].startswith("2 "):
+            l1, l2 = line[:69], lines[i].rstrip()[:69]
+            i += 1
+            for k, ln in ((i - 1, l1), (i, l2)):
+                if len(ln) < 64:
+                    raise CatalogueError(f"{source}:{k}: TLE line is too short "
+                                         f"({len(ln)} columns, expected 69)")
+                if len(ln) == 69 and ln[68].isdigit() and checksum(ln) != int(ln[68]):
+                    raise CatalogueError(f"{source}:{k}: TLE checksum (column 69) is wrong")
+            if l1[2:7] != l2[2:7]:
+                raise CatalogueError(f"{source}:{i - 1}: catalogue numbers differ between "
+                                     f"line 1 ({l1[2:7]!r}) and line 2 ({l2[2:7]!r})")
+            out.append(ElementSet(name or f"NORAD {l1[2:7].strip()}", l1, l2))
+            name = ""
+        elif line.startswith("1 "):
+            raise CatalogueError(f"{source}:{i}: TLE line 1 without a line 2 after it")
+        elif line.startswith("2 "):
+            raise CatalogueError(f"{source}:{i}: TLE line 2 without a line 1 before it")
+        else:
+            name = line.strip()
+            if name.startswith("0 "):
+                name = name[2:].strip()
+    return out
+
+
+def read(path: str) -> list[ElementSet]:
+    """parse() of a file; CatalogueError when it cannot be read or holds no set."""
+    try:
+        with open(path, encoding="utf-8") as f:
+            text = f.read()
+    except OSError as e:
+        raise CatalogueError(f"{path}: cannot read ({e.strerror})") from e
+    sets = parse(text, path)
+    if not sets:
+        raise CatalogueError(f"{path}: no two-line element set found")
+    return sets
+
+
+def _exp_field(x: float) -> str:
+    """An 8-column TLE 'assumed decimal point' field: ' 12345-3' means 0.12345e-3."""
+    if x == 0.0:
+        return " 00000-0"
+    sign = "-" if x < 0 else " "
+    m = abs(x)
+    e = math.floor(math.log10(m)) + 1
+    mant = round(m / 10.0 ** e * 1e5)
+    if mant >= 100000:  # rounding carried into the next power of ten
+        mant //= 10
+        e += 1
+    if not -9 <= e <= 9:
+        raise CatalogueError(f"{x!r} does not fit a TLE exponent field")
+    return f"{sign}{mant:05d}{'-' if e < 0 else '+'}{abs(e)}"
+
+
+def format_set(name: str, number: int, epoch_year: int, epoch_day: float, incl_deg: float,
+               raan_deg: float, ecc: float, argp_deg: float, mo_deg: float,
+               no_rev_day: float, bstar: float = 0.0) -> ElementSet:
+    """An element set with checksums from mean elements (first derivative of the
+    mean motion and its second derivative written as 0; SGP4 does not use them).
+    epoch_day: day of year with fraction (1.0 is 1 January 0h UTC)."""
+    if not 0 <= number <= 99999:
+        raise CatalogueError(f"catalogue number {number} does not fit 5 digits")
+    if not 0.0 <= ecc < 1.0:
+        raise CatalogueError(f"eccentricity {ecc} is outside [0, 1)")
+    yy = epoch_year % 100
+    l1 = (f"1 {number:05d}U 00000A   {yy:02d}{epoch_day:012.8f}  .00000000  00000-0 "
+          f"{_exp_field(bstar)} 0  999")
+    ecc_digits = min(int(round(ecc * 1e7)), 9999999)
+    l2 = (f"2 {number:05d} {incl_deg % 180.0 if incl_deg != 180.0 else 180.0:8.4f} "
+          f"{raan_deg % 360.0:8.4f} {ecc_digits:07d} {argp_deg % 360.0:8.4f} "
+          f"{mo_deg % 360.0:8.4f} {no_rev_day:11.8f}    1")
+    l1 += str(checksum(l1))
+    l2 += str(checksum(l2))
+    assert len(l1) == 69 and len(l2) == 69, (l1, l2)
+    return ElementSet(name, l1, l2)
+
+
+def write(sets, out) -> None:
+    """Write element sets as a 3LE text ('0 NAME' line, line 1, line 2)."""
+    for s in sets:
+        out.write(f"0 {s.name}\n{s.line1}\n{s.line2}\n")
+
+
+#: Julian date of 1949 December 31 0h UTC, the origin of SGP4's epoch days
+_JD_1950 = 2433281.5
+#: WGS-72 gravitational parameter (km^3/s^2), SGP4's
+_MU_WGS72 = 398600.8
+
+
+def from_elements(el: dict, number: int, label: str = "elements") -> ElementSet:
+    """An element set from SGP4 (Kozai) mean elements, written to the TLE's digits.
+
+    el: ``name`` (optional), ``epoch`` (ISO UTC), ``a_km`` or ``no_rev_day``,
+    ``ecc``, ``incl_deg``, ``raan_deg``, ``argp_deg``, ``mo_deg``, optional
+    ``bstar`` (0). From ``a_km`` the mean motion is the two-body sqrt(mu/a^3)
+    with WGS-72 mu. The TLE keeps 4 decimals of each angle (~10 m in LEO) and 8
+    of the mean motion.
+    """
+    from astropy.time import Time
+    if not isinstance(el, dict):
+        raise CatalogueError(f"{label}: expected an object of elements, got {type(el).__name__}")
+    unknown = set(el) - {"name", "epoch", "a_km", "no_rev_day", "ecc", "incl_deg", "raan_deg",
+                         "argp_deg", "mo_deg", "bstar"}
+    if unknown:
+        raise CatalogueError(f"{label}: unknown key(s) {', '.join(sorted(unknown))}")
+    for k in ("epoch", "ecc", "incl_deg", "raan_deg", "argp_deg", "mo_deg"):
+        if k not in el:
+            raise CatalogueError(f"{label}: missing {k!r}")
+    try:
+        t = Time(el["epoch"], scale="utc")
+    except ValueError as e:
+        raise CatalogueError(f"{label}: bad epoch {el['epoch']!r} (ISO 8601 UTC)") from e
+    try:
+        vals = {k: float(el[k]) for k in el if k not in ("name", "epoch")}
+    except (TypeError, ValueError) as e:
+        raise CatalogueError(f"{label}: elements must be numbers ({e})") from e
+    if "no_rev_day" in vals:
+        no = vals["no_rev_day"]
+    elif "a_km" in vals:
+        if not vals["a_km"] > 6378.135:
+            raise CatalogueError(f"{label}: a_km = {vals['a_km']} is inside the Earth")
+        no = math.sqrt(_MU_WGS72 / vals["a_km"] ** 3) * 86400.0 / (2.0 * math.pi)
+    else:
+        raise CatalogueError(f"{label}: give 'a_km' or 'no_rev_day'")
+    year = int(t.utc.datetime.year)
+    day = t.utc.jd - Time(f"{year}-01-01T00:00:00", scale="utc").jd + 1.0
+    return format_set(str(el.get("name", label)), number, year, day, vals["incl_deg"],
+                      vals["raan_deg"], vals["ecc"], vals["argp_deg"], vals["mo_deg"], no,
+                      vals.get("bstar", 0.0))

@@ -1,0 +1,211 @@
+/* SPDX-License-Identifier: MIT */
+/* test_numtext.c: the planner's number text (examples/oi_plan/numtext.c)
+ * against the C library it replaces: num_format17 byte for byte against
+ * snprintf "%.17g", num_parse bit for bit (and end pointer) against strtod, on
+ * millions of random doubles of every exponent, random decimal strings, texts
+ * within 1e-19 of a midpoint between doubles, and the edge cases. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "orbillum.h"
+#include "oi_test_util.h"
+
+#include "../../examples/oi_plan/numtext.c"
+
+static uint64_t rng_state = 0x9E3779B97F4A7C15ULL;
+
+static uint64_t rand64(void)
+{
+    rng_state = rng_state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return rng_state ^ (rng_state >> 29);
+}
+
+static double from_bits(uint64_t u)
+{
+    double x;
+    memcpy(&x, &u, sizeof x);
+    return x;
+}
+
+static uint64_t to_bits(double x)
+{
+    uint64_t u;
+    memcpy(&u, &x, sizeof u);
+    return u;
+}
+
+static long failures = 0;
+
+/* num_parse(text) against strtod(text): the same bits (NaN: both NaN), the same end. */
+static void check_parse(const char *text)
+{
+    char *e1, *e2;
+    double a = strtod(text, &e1), b = num_parse(text, &e2);
+    int same = (isnan(a) && isnan(b)) || to_bits(a) == to_bits(b);
+    if (!same || e1 != e2) {
+        if (failures++ < 10)
+            print_error("num_parse(\"%s\") = %.17g end +%d, strtod %.17g end +%d\n", text, b,
+                        (int)(e2 - text), a, (int)(e1 - text));
+    }
+}
+
+/* num_format17(x) against snprintf("%.17g"), then both parsers on the text. */
+static void check_format(double x)
+{
+    char want[64], got[NUM_TEXT_MAX];
+    size_t n;
+    (void)snprintf(want, sizeof want, "%.17g", x);
+    n = num_format17(x, got);
+    if (strcmp(want, got) != 0 || n != strlen(want)) {
+        if (failures++ < 10) print_error("num_format17(%a) = \"%s\", printf \"%s\"\n", x, got, want);
+    }
+    check_parse(want);
+}
+
+static void test_random_bit_patterns(void **state)
+{
+    long i;
+    (void)state;
+    failures = 0;
+    for (i = 0; i < 1000000; i++) check_format(from_bits(rand64()));
+    assert_int_equal(failures, 0);
+}
+
+static void test_random_planner_magnitudes(void **state)
+{
+    long i;
+    (void)state;
+    failures = 0;
+    for (i = 0; i < 1000000; i++) {
+        /* log-uniform over 1e-30 .. 1e30, both signs: the planner's numbers */
+        double u = (double)(rand64() >> 11) * (1.0 / 9007199254740992.0);
+        double x = pow(10.0, 60.0 * u - 30.0);
+        check_format((rand64() & 1u) ? -x : x);
+    }
+    assert_int_equal(failures, 0);
+}
+
+static void test_edges(void **state)
+{
+    static const double fixed[] = {
+        0.0, -0.0, 1.0, -1.0, 0.1, 0.2, 0.3, 1.0 / 3.0, 2.0 / 3.0, 5e-324, 1e-323,
+        2.2250738585072014e-308, 2.2250738585072009e-308, 1.7976931348623157e308,
+        9007199254740992.0, 9007199254740993.0, 9007199254740991.0, 1e16, 1e17, 1e-5, 1e-4,
+        9.9999999999999995e-5, 0.0001, 123456789012345678.0, 99999999999999999.0,
+        9999999999999999.0, 1e280, 1e-280, 1.0000000000000002, 0.99999999999999989,
+        1360.9600000000001, 6378.137, 149597870.7};
+    size_t i;
+    int k, j;
+    (void)state;
+    failures = 0;
+    for (i = 0; i < sizeof fixed / sizeof fixed[0]; i++) {
+        check_format(fixed[i]);
+        check_format(-fixed[i]);
+    }
+    check_format(INFINITY);
+    check_format(-INFINITY);
+    check_format(NAN);
+    /* powers of ten and of two and their neighbours, every exponent */
+    for (k = -330; k <= 310; k++) {
+        double p = pow(10.0, (double)k), q = ldexp(1.0, k * 3 + 10), a = p, b = p;
+        for (j = 0; j < 4; j++) {
+            check_format(a);
+            check_format(b);
+            a = nextafter(a, INFINITY);
+            b = nextafter(b, 0.0);
+        }
+        a = b = q;
+        for (j = 0; j < 3; j++) {
+            check_format(a);
+            check_format(b);
+            a = nextafter(a, INFINITY);
+            b = nextafter(b, 0.0);
+        }
+    }
+    assert_int_equal(failures, 0);
+}
+
+static void test_strtod_forms(void **state)
+{
+    static const char *texts[] = {
+        "0", "-0", "+1", "1e", "1e+", "1e-", "1.", ".5", "-.5e-3", "5.e2", "00012", "1.2.3",
+        "12abc", "1,5", "inf", "-Infinity", "nan", "NaN(123)", "0x1p3", "0X1.8P1", "-0x",
+        "1e400", "-1e400", "1e-400", "4.9e-324", "2.4703282292062328e-324",
+        "2.4703282292062327e-324", "1e-320", "9007199254740993", "9007199254740992.5",
+        "123456789012345678901234567890", "0.000000000000000000000000000001",
+        "1.00000000000000000000000000001", "179769313486231580793728971405303415079934132710037826936173778980444968292764750946649017977587207096330286416692887910946555547851940402630657488671505820681908902000708383676273854845817711531764475730270069855571366959622842914819860834936475292719074168444365510704342711559699508093042880177904174497791.9",
+        " 1", "\t2", "e5", ".", "-", "", "1e0001", "1E5", "-7e-22", "7e22", "7e23",
+        "9007199254740991e22", "9007199254740993e-22", "1e99999999", "1e-99999999"};
+    size_t i;
+    (void)state;
+    failures = 0;
+    for (i = 0; i < sizeof texts / sizeof texts[0]; i++) check_parse(texts[i]);
+    assert_int_equal(failures, 0);
+}
+
+static void test_random_decimal_strings(void **state)
+{
+    long i;
+    char text[64];
+    (void)state;
+    failures = 0;
+    for (i = 0; i < 1000000; i++) {
+        /* 1 to 20 digits, a point somewhere or none, an exponent or none */
+        int nd = 1 + (int)(rand64() % 20u), pt = (int)(rand64() % (uint64_t)(nd + 2)), k, n = 0;
+        int ex = (int)(rand64() % 701u) - 350;
+        if (rand64() & 1u) text[n++] = '-';
+        for (k = 0; k < nd; k++) {
+            if (k == pt) text[n++] = '.';
+            text[n++] = (char)('0' + (int)(rand64() % 10u));
+        }
+        if (rand64() % 3u) n += snprintf(text + n, sizeof text - (size_t)n, "e%d", ex);
+        text[n] = '\0';
+        check_parse(text);
+    }
+    assert_int_equal(failures, 0);
+}
+
+static void test_near_midpoints(void **state)
+{
+#if LDBL_MANT_DIG >= 64
+    long i;
+    char text[64];
+    (void)state;
+    failures = 0;
+    for (i = 0; i < 300000; i++) {
+        /* the midpoint between a double and the next, exact in long double,
+         * printed to 19 digits: within 1e-19 of the boundary strtod rounds at */
+        double d = from_bits(rand64() & 0x7FEFFFFFFFFFFFFFULL), up = nextafter(d, INFINITY);
+        long double mid = ((long double)d + (long double)up) / 2.0L;
+        (void)snprintf(text, sizeof text, "%.18Le", mid);
+        check_parse(text);
+        (void)snprintf(text, sizeof text, "%.17Le", mid);
+        check_parse(text);
+    }
+    assert_int_equal(failures, 0);
+#else
+    (void)state;
+    skip();
+#endif
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_edges),
+        cmocka_unit_test(test_strtod_forms),
+        cmocka_unit_test(test_random_bit_patterns),
+        cmocka_unit_test(test_random_planner_magnitudes),
+        cmocka_unit_test(test_random_decimal_strings),
+        cmocka_unit_test(test_near_midpoints),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

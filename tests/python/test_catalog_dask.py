@@ -1,0 +1,38 @@
+# SPDX-License-Identifier: MIT
+"""The catalogue planner on Dask: a small catalogue on a local cluster of two worker
+processes over loopback, and on an existing cluster by its address, gives the same
+rows, bit for bit, as one process."""
+import pyarrow as pa
+import pytest
+
+from orbillum.catalog import plan, synthetic, tle
+
+distributed = pytest.importorskip("distributed")
+
+START, STOP = "2026-12-01T00:00:00", "2026-12-01T02:00:00"
+OBSERVER = {"name": "inspector-leo", "epoch": "2026-12-01T00:00:00", "a_km": 6978.0,
+            "ecc": 0.001, "incl_deg": 53.0, "raan_deg": 10.0, "argp_deg": 0.0, "mo_deg": 0.0}
+
+
+def _plan(**kw):
+    sets = synthetic.generate(60, seed=21)
+    s, tables = plan.plan(sets, [tle.from_elements(OBSERVER, 99000)], START, STOP, 60.0,
+                          all_rows=True, keep=True, progress=False, **kw)
+    return s, pa.concat_tables(tables)
+
+
+def test_local_cluster_of_two_workers_equals_one_process():
+    _, one = _plan(objects_per_block=60)
+    s, two = _plan(objects_per_block=7, workers=2)
+    assert s.workers == 2 and s.blocks == 9
+    assert two.equals(one)
+
+
+def test_existing_cluster_by_address_equals_one_process():
+    _, one = _plan(objects_per_block=60)
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                  host="127.0.0.1", dashboard_address=None) as cluster:
+        assert cluster.scheduler_address.startswith("tcp://127.0.0.1:")
+        s, got = _plan(objects_per_block=11, scheduler=cluster.scheduler_address)
+    assert s.workers == 2
+    assert got.equals(one)
