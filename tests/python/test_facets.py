@@ -81,7 +81,8 @@ def test_plate_in_a_scene_is_the_quadrature():
     s.has_observer = 1
     s.terms = M.OI_TERM_EARTH
     s.earth_albedo, s.target_albedo = 0.3, 0.25
-    s.shape = L.oi_shape_find(b"plate")
+    # the scene's shape field is a plain address in the mirror (numpy dtypes)
+    s.shape = C.cast(L.oi_shape_find(b"plate"), C.c_void_p).value
     # body +z turned 110 deg about the body x axis: the face looks down and sideways
     a = math.radians(110.0)
     s.attitude_q = (M.real * 4)(math.cos(a / 2), math.sin(a / 2), 0.0, 0.0)
