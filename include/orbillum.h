@@ -514,7 +514,8 @@ typedef struct oi_scene {
 } oi_scene;
 
 /* oi_scene_defaults: fill a scene with the defaults: zero positions, no
- * observer, every term compiled in, albedos OI_EARTH_ALBEDO_DEFAULT /
+ * observer, no shape (the sphere), attitude_q zero (the identity), every
+ * term compiled in, albedos OI_EARTH_ALBEDO_DEFAULT /
  * OI_TARGET_ALBEDO_DEFAULT, radius OI_TARGET_RADIUS_M_DEFAULT. A NULL scene
  * is ignored. */
 void oi_scene_defaults(oi_scene *scene);

@@ -6,10 +6,11 @@
 
 #ifndef OI_NO_FACETS
 
-/* Gauss-Legendre of order 8 on [0, 1], its nodes t mapped by
- * a = (1 - cos(pi t)) / 2 (so a piece's endpoint behaviour in sqrt(a - a0),
- * where a circle of the region touches a ring, becomes analytic): the node
- * and the weight times the map's derivative (mpmath, 21 digits). */
+/* The 8-point Gauss rule of the Legendre weight on [0, 1], its nodes t
+ * mapped by a = (1 - cos(pi t)) / 2 (so a piece's endpoint behaviour in
+ * sqrt(a - a0), where a circle of the region touches a ring, becomes
+ * analytic): the mapped node and the weight times the map's derivative
+ * (mpmath, 21 digits; checked in tests/python/test_facets.py). */
 #define N_NODES 8
 static const oi_real node_map[N_NODES][2] = {
     { OI_R(0.000972393074746595051155), OI_R(0.00495601380754328264479) },

@@ -109,6 +109,35 @@ static void test_sunlit_plate_closed_form(void **state)
     }
 }
 
+/* Moonlight on a plate: the same closed form with e_moon and dir_moon (the
+ * Moon a point source), and the Sun's term off. */
+static void test_moonlit_plate_closed_form(void **state)
+{
+#ifndef OI_NO_MOON
+    oi_scene s;
+    oi_illum il;
+    double u_obs[3], d, ci, co, want; /* the plate's normal is +z */
+    int i;
+    (void)state;
+    leo_scene(&s, OI_TERM_MOON);
+    set3(s.moon_km, 100000.0, 250000.0, 280000.0);
+    s.shape = oi_shape_find("plate");
+    check_int(OI_OK, oi_illuminate(&s, NULL, &il), "status");
+    assert_true(il.e_moon > 0);
+    for (i = 0; i < 3; i++) u_obs[i] = (double)s.observer_km[i] - (double)s.target_km[i];
+    d = sqrt(dot3(u_obs, u_obs));
+    ci = (double)il.dir_moon[2];
+    co = u_obs[2] / d;
+    want = (double)il.e_moon * ci * 0.3 / PI * co / (d * 1000.0 * d * 1000.0);
+    assert_true(ci > 0 && co > 0);
+    check_close(want, (double)il.flux_moon, 1e-300, REL_TOL * 10, "plate flux_moon");
+    check_close(0.0, (double)il.flux_sun, 0.0, 0.0, "no Sun term");
+    check_close(want, (double)il.flux_obs, 1e-300, REL_TOL * 10, "plate flux_obs");
+#else
+    (void)state;
+#endif
+}
+
 /* Far field: the Earth a point at the nadir, plate irradiance (R/r)^2
  * p(theta) max(0, -n_z) (the Lambert sphere's phase function p). */
 static void test_plate_far_field(void **state)
@@ -509,6 +538,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_sunlit_plate_closed_form),
+        cmocka_unit_test(test_moonlit_plate_closed_form),
         cmocka_unit_test(test_plate_far_field),
         cmocka_unit_test(test_plate_mean_direction),
         cmocka_unit_test(test_plate_symmetries),

@@ -7,6 +7,10 @@ oi_illuminate against the same quadrature and the Sun's closed form; the
 built-in shapes through the mirror (docs/shapes.md)."""
 import ctypes as C
 import math
+import os
+import re
+
+import mpmath
 
 import numpy as np
 import pytest
@@ -145,3 +149,32 @@ def test_builtin_shapes_through_the_mirror():
     assert not L.oi_shape_find(b"sphere")
     assert L.oi_status_name(M.OI_ERR_SHAPE) == b"ERR_SHAPE"
     assert L.oi_flag_name(M.OI_FLAG_GLINT) == b"glint"
+
+
+def test_cubature_nodes_are_the_mapped_gauss_rule():
+    # node_map of src/facet_earth.c: (1 - cos(pi t)) / 2 and pi sin(pi t) / 2 w
+    # for the 8-point Gauss-Legendre rule (t, w) on [0, 1], to the 21 digits written
+    text = open(os.path.join(T.ROOT, "src", "facet_earth.c")).read()
+    body = re.search(r"node_map\[N_NODES\]\[2\] = \{(.*?)\};", text, re.S).group(1)
+    with mpmath.workdps(40):
+        vals = [mpmath.mpf(v) for v in re.findall(r"OI_R\(([-0-9.e]+)\)", body)]
+        assert len(vals) == 16
+        xs, ws = [], []
+        n = 8
+        for k in range(1, n + 1):
+            x = mpmath.cos(mpmath.pi * (k - mpmath.mpf(1) / 4) / (n + mpmath.mpf(1) / 2))
+            for _ in range(60):  # Newton on P_n from its asymptotic root
+                dx = mpmath.legendre(n, x) / mpmath.diff(lambda s: mpmath.legendre(n, s), x)
+                x -= dx
+                if abs(dx) < mpmath.mpf(10) ** -38:
+                    break
+            dp = mpmath.diff(lambda s: mpmath.legendre(n, s), x)
+            xs.append((1 - x) / 2)
+            ws.append(1 / ((1 - x * x) * dp * dp))
+        rule = sorted(zip(xs, ws))
+        assert abs(sum(ws) - 1) < mpmath.mpf(10) ** -30
+        for i, (t, w) in enumerate(rule):
+            tau = (1 - mpmath.cos(mpmath.pi * t)) / 2
+            om = mpmath.pi * mpmath.sin(mpmath.pi * t) / 2 * w
+            assert abs(vals[2 * i] - tau) <= 1e-20 * tau, i
+            assert abs(vals[2 * i + 1] - om) <= 1e-20 * om, i
