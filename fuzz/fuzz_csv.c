@@ -121,7 +121,7 @@ static void fuzz_batch(const uint8_t *data, size_t size)
         close(fd);
         return;
     }
-    code = batch_run(path, oi_camera_builtin(0), os, NULL);
+    code = batch_run(path, oi_camera_builtin(0), NULL, os, NULL);
     fclose(os);
     close(fd);
     FZ_CHECK(code == PLAN_EXIT_OK || code == PLAN_EXIT_ROWS || code == PLAN_EXIT_INPUT);
