@@ -31,6 +31,11 @@
  *                        declarations stay (the field and the constant
  *                        belong to the model's ABI), refused at run time
  *                        instead. docs/shadow.md.
+ *   OI_NO_FACETS         no targets with shape: removes oi_facet, oi_shape,
+ *                        oi_shape_*, oi_facet_brdf, oi_earthshine_plate and
+ *                        the built-in shapes; oi_scene keeps its shape and
+ *                        attitude_q fields (the layout does not change) and a
+ *                        scene with a shape gets OI_ERR_SHAPE.
  * An option that removes a feature removes its declarations too, so code that
  * still uses the feature fails to compile.
  */
@@ -84,6 +89,11 @@ typedef double oi_real;
 #define oi_expose_batch oi_expose_batch_sp
 #define oi_expose_scene_batch oi_expose_scene_batch_sp
 #define oi_zodiacal_radiance oi_zodiacal_radiance_sp
+#define oi_shape_check oi_shape_check_sp
+#define oi_shape_builtin oi_shape_builtin_sp
+#define oi_shape_find oi_shape_find_sp
+#define oi_facet_brdf oi_facet_brdf_sp
+#define oi_earthshine_plate oi_earthshine_plate_sp
 #endif
 
 #endif /* OI_CONFIG_H */

@@ -75,7 +75,8 @@ enum oi_status {
     OI_ERR_INPUT = -13,           /* an argument out of range that is no camera, model,
                                      magnitude or albedo: an exposure goal, a negative
                                      flux or irradiance, a background radiance */
-    OI_ERR_FLAGS = -14            /* unknown bits in a flags mask (oi_expose_in.flags) */
+    OI_ERR_FLAGS = -14,           /* unknown bits in a flags mask (oi_expose_in.flags) */
+    OI_ERR_SHAPE = -15            /* a bad facet, shape or attitude quaternion (oi_shape_check) */
 };
 
 /* oi_status_name: the name of a status, the enum name without its "OI_"
@@ -379,6 +380,110 @@ oi_real oi_moon_phase_law(oi_real alpha);
 oi_real oi_zodiacal_radiance(oi_real dlambda_rad, oi_real beta_rad);
 #endif
 
+/* ---------------------------------------------------------------- shapes */
+#ifndef OI_NO_FACETS
+/*
+ * Targets with shape (docs/shapes.md): a set of flat facets in the target's
+ * body frame, turned into the positions' frame by the scene's attitude
+ * quaternion. Each facet reflects with a Lambertian part and a specular
+ * part, the normalised modified Phong lobe (Lafortune & Willems 1994,
+ * "Using the modified Phong reflectance model for physically based
+ * rendering", KU Leuven report CW 197), the BRDF
+ *   f = albedo_diffuse / pi + albedo_specular (n + 2) / (2 pi) cos^n(alpha),
+ * alpha the angle between the mirror image of the source's direction and
+ * the observer's, n = shininess, cos(alpha) clamped at 0. Reciprocal; its
+ * directional albedo never exceeds albedo_diffuse + albedo_specular (<= 1),
+ * equal at normal incidence.
+ * A facet lit from behind, or seen from behind, sends nothing (two-sided:
+ * each face reflects alike; light on one face never leaves by the other).
+ * Not modelled: mutual shadowing and mutual reflection between facets (a
+ * facet is lit and seen as if it were alone), the facets' extent (every
+ * facet is at the target's position), the Sun's and the Moon's discs in the
+ * specular lobe (point sources).
+ */
+#define OI_FACETS_MAX (32)          /* facets per shape: bounds the loops */
+#define OI_SHININESS_MAX (1.0e4)    /* largest accepted shininess */
+
+typedef struct oi_facet {
+    oi_real normal[3];       /* outward normal in the body frame; nonzero, finite
+                                (scaled to unit length here) */
+    oi_real area_m2;         /* (0, 1e8] m^2 */
+    int two_sided;           /* nonzero: both faces reflect alike */
+    oi_real albedo_diffuse;  /* Lambertian albedo, [0, 1] */
+    oi_real albedo_specular; /* specular reflectance of the Phong lobe, [0, 1];
+                                albedo_diffuse + albedo_specular <= 1 */
+    oi_real shininess;       /* the lobe's exponent n, [0, OI_SHININESS_MAX]: its
+                                half-width at half maximum is about
+                                sqrt(2 ln 2 / n) rad for large n */
+} oi_facet;
+
+typedef struct oi_shape {
+    const oi_facet *facets;  /* caller-owned array of n_facets facets */
+    unsigned n_facets;       /* 1..OI_FACETS_MAX */
+    int diffuse_from_scene;  /* nonzero: every facet's albedo_diffuse is replaced
+                                by the scene's target_albedo (the built-in "plate") */
+    const char *name;        /* not used by the computation (may be NULL) */
+} oi_shape;
+
+/* oi_shape_check: OI_OK for a shape every call accepts; OI_ERR_NULL (shape
+ * or its facets NULL); OI_ERR_SHAPE: n_facets 0 or above OI_FACETS_MAX, or
+ * a facet with a zero or non-finite normal, area outside (0, 1e8], an
+ * albedo outside [0, 1] (NaN too), albedos summing above 1, shininess
+ * outside [0, OI_SHININESS_MAX]. With diffuse_from_scene the diffuse
+ * albedos are not checked here (oi_illuminate checks target_albedo plus
+ * each specular albedo). */
+int oi_shape_check(const oi_shape *shape);
+
+/* oi_shape_builtin: built-in shape number index (0 "plate", 1 "box-wing",
+ * 2 "cylinder"); NULL for a negative index or past the last. Static storage;
+ * dimensions and reflectances with their sources in src/shape_builtin.c and
+ * docs/shapes.md. The sphere is no shape: scene.shape NULL.
+ *   plate     one one-sided Lambertian facet of 1 m^2, normal +z, diffuse
+ *             albedo target_albedo (diffuse_from_scene), no specular part
+ *   box-wing  a bus and two solar arrays (see docs/shapes.md)
+ *   cylinder  a rocket body as a 12-sided prism with its two end caps */
+const oi_shape *oi_shape_builtin(int index);
+/* oi_shape_find: built-in shape by name (exact, case-sensitive); NULL for
+ * NULL, "sphere" and unknown names (a sphere is scene.shape NULL). */
+const oi_shape *oi_shape_find(const char *name);
+
+/* oi_facet_brdf: the BRDF (1/sr) of a facet (body frame, as given: its
+ * normal need not be unit) for light arriving from the unit-or-not
+ * direction to_source and leaving towards to_observer (both from the facet,
+ * body frame); 0 when either is behind the face that reflects (for a
+ * two-sided facet, the face on the source's side), or for NULL, zero or
+ * non-finite input. diffuse_from_scene does not apply here. */
+oi_real oi_facet_brdf(const oi_facet *facet, const oi_real to_source[3],
+                      const oi_real to_observer[3]);
+
+/*
+ * oi_earthshine_plate: the earthshine irradiance on one face of a flat
+ * plate, per unit Earth albedo and unit solar irradiance at the Earth: E
+ * such that the plate receives earth_albedo TSI (1 AU / |sun|)^2 E (W/m^2).
+ * Given:   theta, h_km, model  as oi_earthshine (earth_reflection chooses
+ *                 the cubature or the mean direction)
+ *          normal the face's outward normal in the local frame (as
+ *                 oi_earthshine_sphere's obs: z the zenith, x towards the
+ *                 Sun's side); any length > 0
+ * Returned: irradiance  E (>= 0)
+ * Returns: oi_earthshine's statuses; OI_ERR_NULL (normal or irradiance
+ *          NULL), OI_ERR_NONFINITE (a component of normal), OI_ERR_ZERO_VECTOR
+ *          (normal zero). On error *irradiance is 0.
+ * Notes:   Default: a fixed cubature over the visible sunlit cap clipped by
+ *          the plate's horizon, exact in azimuth (closed form) and
+ *          Gauss-Legendre in the polar angle between the region's
+ *          break points (docs/shapes.md, with its measured error against
+ *          an independent quadrature). It does not use the tables: a
+ *          Lambertian Earth of uniform albedo without atmosphere (the
+ *          earthshine table's model), any altitude. With
+ *          OI_EARTH_REFLECT_MEAN or the Lambert far field (earth_model
+ *          OI_EARTH_LAMBERT): phi max(0, normal . d), d the mean direction
+ *          psi (exact in the far field).
+ */
+int oi_earthshine_plate(oi_real theta, oi_real h_km, const oi_real normal[3],
+                        const oi_model *model, oi_real *irradiance);
+#endif /* OI_NO_FACETS */
+
 /* ---------------------------------------------------------------- scene */
 
 typedef struct oi_scene {
@@ -397,6 +502,15 @@ typedef struct oi_scene {
     oi_real target_vel_km_s[3];   /* target velocity (km/s, the positions' frame); read by
                                      oi_expose_scene only; zero: at rest */
     oi_real observer_vel_km_s[3]; /* observer velocity (km/s), as target_vel_km_s */
+    /* The target's shape (oi_shape, docs/shapes.md). The fields stay in a
+     * build with OI_NO_FACETS (the struct's layout does not change), where a
+     * non-NULL shape gives OI_ERR_SHAPE. */
+    const struct oi_shape *shape; /* NULL: the Lambertian sphere of target_radius_m and
+                                     target_albedo; else its facets (caller-owned) */
+    oi_real attitude_q[4];   /* body frame -> positions' frame, unit quaternion
+                                (w, x, y, z), read with a shape only; all zero: the
+                                identity; a norm off 1 by more than 1e-6 or a
+                                non-finite component: OI_ERR_SHAPE; else normalised */
 } oi_scene;
 
 /* oi_scene_defaults: fill a scene with the defaults: zero positions, no
@@ -432,6 +546,8 @@ typedef struct oi_illum {
                                 seen from the target (0: no Moon position, or apart) */
     oi_real moon_disc_visible; /* fraction of the Moon's disc the Earth does not hide,
                                   seen from the target (with OI_TERM_MOON; else 0) */
+    oi_real flux_specular;   /* part of flux_obs from the facets' specular lobes (W/m^2;
+                                0 for a sphere) */
 } oi_illum;
 
 /*
@@ -457,6 +573,12 @@ typedef struct oi_illum {
  *          OI_ERR_ZERO_VECTOR  a position read is the zero vector
  *          OI_ERR_GEOMETRY   a position read farther than OI_POSITION_MAX_KM
  *          OI_ERR_BELOW_SURFACE  |target| or |observer| <= earth_radius_km
+ *          OI_ERR_SHAPE      scene->shape fails oi_shape_check (its
+ *                            OI_ERR_NULL for NULL facets included), the
+ *                            scene's target_albedo plus a facet's
+ *                            albedo_specular above 1 (diffuse_from_scene),
+ *                            or a bad attitude_q (see oi_scene); any shape
+ *                            in a build with OI_NO_FACETS
  *          then the Sun seen from the target (oi_sun_fraction's statuses:
  *          OI_ERR_GEOMETRY for a Sun touching the Earth or the target inside
  *          the Sun), the Sun seen from the Moon (the same; the Moon below the
@@ -482,7 +604,17 @@ typedef struct oi_illum {
  *          distribution instead (model earth_reflection,
  *          oi_earthshine_sphere: e_earth albedo (a / range)^2 S, S = F / phi);
  *          phase_earth stays the angle from the mean direction.
- *          src/illuminate.c.
+ *          With a shape (scene->shape, docs/shapes.md) the sphere is
+ *          replaced by the facets, turned by attitude_q: each facet's flux
+ *          from a point source (Sun, Moon) is e cos(i) f cos(o) A / range^2
+ *          (f oi_facet_brdf, i and o the angles of source and observer from
+ *          its normal); from the Earth the diffuse part uses the facet's
+ *          earthshine irradiance (oi_earthshine_plate, the Earth's angular
+ *          distribution), the specular part that irradiance as if it came
+ *          from the mean direction dir_earth. flux_sun, flux_earth and
+ *          flux_moon are the facets' sums per source, flux_specular their
+ *          specular part; target_radius_m is then used for the
+ *          observer-at-target check only. src/illuminate.c, src/facet.c.
  */
 int oi_illuminate(const oi_scene *scene, const oi_model *model, oi_illum *out);
 
@@ -551,10 +683,11 @@ const oi_camera *oi_camera_find(const char *name);
 #define OI_FLAG_MOON_SHADOW   (256u) /* the Moon hides part of the Sun from the target */
 #define OI_FLAG_MOON_IN_FOV   (512u) /* the Moon's disc in the field (oi_expose_goal.sky OI_SKY_MOON) */
 #define OI_FLAG_TRAILED       (1024u) /* even the chosen exposure trails beyond max_trail_px */
+#define OI_FLAG_GLINT         (2048u) /* a shape's specular part is more than half of flux_obs */
 
 /* oi_flag_name: name of one flag bit ("sun_exclusion", "earth_in_fov",
  * "eclipsed", "too_faint", "saturated", "penumbra", "occulted", "resolved",
- * "moon_shadow");
+ * "moon_shadow", "moon_in_fov", "trailed", "glint");
  * NULL for 0, several bits or an unknown bit. */
 const char *oi_flag_name(unsigned flag_bit);
 
@@ -769,6 +902,12 @@ int oi_expose(const oi_camera *camera, const oi_expose_in *in,
  *      docs/camera.md, "Sky background".
  *   9. Motion: rate_rad_s = |(target_vel - observer_vel) x b^| / range
  *      (clamped at 1e3 rad/s), then oi_expose's Note 7.
+ *  10. Shape (scene->shape not NULL): OI_FLAG_GLINT when illum->flux_specular
+ *      exceeds half of illum->flux_obs (the exposure uses the total). Note
+ *      5's radiance bound is then the largest over the facets of
+ *      (albedo_diffuse + albedo_specular (n + 2) / 2) (e_sun + e_earth +
+ *      e_moon) / pi, the peak of its BRDF times pi (target_albedo for a
+ *      diffuse_from_scene facet's diffuse part).
  */
 int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
                     const oi_illum *illum, const oi_model *model,

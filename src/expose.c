@@ -22,7 +22,7 @@
  * computed here. */
 #define FLAGS_GEOMETRIC (OI_FLAG_SUN_EXCLUSION | OI_FLAG_EARTH_IN_FOV | OI_FLAG_ECLIPSED | \
                          OI_FLAG_PENUMBRA | OI_FLAG_OCCULTED | OI_FLAG_RESOLVED | \
-                         OI_FLAG_MOON_SHADOW | OI_FLAG_MOON_IN_FOV)
+                         OI_FLAG_MOON_SHADOW | OI_FLAG_MOON_IN_FOV | OI_FLAG_GLINT)
 #define FLAGS_ALL (FLAGS_GEOMETRIC | OI_FLAG_TOO_FAINT | OI_FLAG_SATURATED | OI_FLAG_TRAILED)
 
 /* Largest accepted angular rate (rad/s): far above any orbit's, small
@@ -506,7 +506,7 @@ int oi_expose(const oi_camera *camera, const oi_expose_in *in,
  *             const char *  "sun_exclusion", "earth_in_fov", "eclipsed",
  *                           "too_faint", "saturated", "penumbra",
  *                           "occulted", "resolved", "moon_shadow", "moon_in_fov",
- *                           "trailed"; NULL for 0, a
+ *                           "trailed", "glint"; NULL for 0, a
  *                           combination of bits
  *                           or an unknown bit.
  */
@@ -524,6 +524,7 @@ const char *oi_flag_name(unsigned flag_bit)
     case OI_FLAG_MOON_SHADOW: return "moon_shadow";
     case OI_FLAG_MOON_IN_FOV: return "moon_in_fov";
     case OI_FLAG_TRAILED: return "trailed";
+    case OI_FLAG_GLINT: return "glint";
     default: return NULL;
     }
 }

@@ -39,6 +39,7 @@ const char *oi_status_name(int status)
     case OI_ERR_GEOMETRY: return "ERR_GEOMETRY";
     case OI_ERR_INPUT: return "ERR_INPUT";
     case OI_ERR_FLAGS: return "ERR_FLAGS";
+    case OI_ERR_SHAPE: return "ERR_SHAPE";
     default: return "UNKNOWN";
     }
 }

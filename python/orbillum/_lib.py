@@ -33,6 +33,7 @@ OI_ERR_TERMS = -11
 OI_ERR_GEOMETRY = -12
 OI_ERR_INPUT = -13
 OI_ERR_FLAGS = -14
+OI_ERR_SHAPE = -15
 
 # ---- include/orbillum.h
 OI_VERSION_MAJOR = 0
@@ -91,6 +92,9 @@ OI_BATCH_GEOMETRY = 4
 OI_BATCH_ALL = OI_BATCH_FRACTION_LD | OI_BATCH_ATMOSPHERE | OI_BATCH_GEOMETRY
 OI_FLAG_MOON_IN_FOV = 512
 OI_FLAG_TRAILED = 1024
+OI_FLAG_GLINT = 2048
+OI_FACETS_MAX = 32
+OI_SHININESS_MAX = 1.0e4
 OI_DETECT_MARGIN_NONE = -100.0
 OI_SKY_ZODIACAL = 1
 OI_SKY_MOON = 2
@@ -183,6 +187,20 @@ class oi_shadow(ctypes.Structure):
     ]
 
 
+class oi_facet(ctypes.Structure):
+    _fields_ = [
+        ("normal", real * 3), ("area_m2", real), ("two_sided", c_int),
+        ("albedo_diffuse", real), ("albedo_specular", real), ("shininess", real),
+    ]
+
+
+class oi_shape(ctypes.Structure):
+    _fields_ = [
+        ("facets", POINTER(oi_facet)), ("n_facets", c_uint), ("diffuse_from_scene", c_int),
+        ("name", c_char_p),
+    ]
+
+
 class oi_scene(ctypes.Structure):
     _fields_ = [
         ("sun_km", real * 3), ("moon_km", real * 3), ("target_km", real * 3),
@@ -190,6 +208,7 @@ class oi_scene(ctypes.Structure):
         ("earth_albedo", real), ("target_albedo", real), ("target_radius_m", real),
         ("has_moon", c_int),
         ("target_vel_km_s", real * 3), ("observer_vel_km_s", real * 3),
+        ("shape", POINTER(oi_shape)), ("attitude_q", real * 4),
     ]
 
 
@@ -204,6 +223,7 @@ class oi_illum(ctypes.Structure):
         ("flux_sun", real), ("flux_earth", real), ("flux_moon", real),
         ("flux_obs", real), ("mag_v", real), ("range_km", real),
         ("sun_moon_hidden", real), ("moon_disc_visible", real),
+        ("flux_specular", real),
     ]
 
 
@@ -241,7 +261,7 @@ class oi_exposure(ctypes.Structure):
 
 
 STRUCTS = (oi_table_info, oi_earth_table, oi_atm_table, oi_earth_angular_table, oi_model,
-           oi_shadow, oi_scene, oi_illum, oi_camera, oi_expose_goal, oi_expose_in, oi_exposure)
+           oi_shadow, oi_facet, oi_shape, oi_scene, oi_illum, oi_camera, oi_expose_goal, oi_expose_in, oi_exposure)
 
 _R3 = POINTER(real)
 # name: (restype, argtypes). Pointers to arrays of structures are passed as
@@ -260,6 +280,11 @@ _PROTOS = {
     "oi_earthshine_sphere": (c_int, [real, real, _R3, c_void_p, POINTER(real)]),
     "oi_moon_phase_law": (real, [real]),
     "oi_zodiacal_radiance": (real, [real, real]),
+    "oi_shape_check": (c_int, [POINTER(oi_shape)]),
+    "oi_shape_builtin": (POINTER(oi_shape), [c_int]),
+    "oi_shape_find": (POINTER(oi_shape), [c_char_p]),
+    "oi_facet_brdf": (real, [POINTER(oi_facet), _R3, _R3]),
+    "oi_earthshine_plate": (c_int, [real, real, _R3, c_void_p, POINTER(real)]),
     "oi_scene_defaults": (None, [c_void_p]),
     "oi_illuminate": (c_int, [c_void_p, c_void_p, c_void_p]),
     "oi_magnitude_v": (real, [real, c_void_p]),
