@@ -9,9 +9,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* The library's built-in names, in the order messages list them. */
-static const char *const builtin_names[] = {"sphere", "plate", "box-wing", "cylinder"};
-#define N_BUILTIN (sizeof builtin_names / sizeof builtin_names[0])
 
 #define FACET_FIELDS 8 /* nx ny nz area_m2 sided albedo_diffuse albedo_specular shininess */
 
@@ -28,13 +25,10 @@ static int fail(const reader *r, const char *what, const char *detail)
     return -1;
 }
 
+/* "sphere" or a name of oi_shape_builtin. */
 static int is_builtin(const char *name)
 {
-    size_t i;
-    for (i = 0; i < N_BUILTIN; i++) {
-        if (strcmp(name, builtin_names[i]) == 0) return 1;
-    }
-    return 0;
+    return strcmp(name, "sphere") == 0 || oi_shape_find(name) != NULL;
 }
 
 /* Letters, digits, '-', '_', '.'; 1 to PLAN_SHAPE_NAME_MAX - 1 bytes. */
@@ -85,24 +79,16 @@ static int number(const reader *r, const char *field, const char *text, double *
     return 0;
 }
 
-/* What the library says of one facet alone: its status on a plain sunlit
- * scene, so the file is held to exactly the library's rules (OI_ERR_SHAPE),
- * including those this reader does not spell out. */
+/* What the library says of one facet alone (oi_shape_check), so that the
+ * file is held to exactly the library's rules, those this reader does not
+ * spell out included. */
 static int library_status(const oi_facet *f)
 {
-    oi_scene sc;
-    oi_illum il;
     oi_shape one;
+    memset(&one, 0, sizeof one);
     one.facets = f;
     one.n_facets = 1u;
-    oi_scene_defaults(&sc);
-    sc.sun_km[0] = (oi_real)1.496e8;
-    sc.target_km[1] = (oi_real)7000.0;
-    sc.observer_km[1] = (oi_real)7010.0;
-    sc.has_observer = 1;
-    sc.terms = OI_TERM_SUN;
-    sc.shape = &one;
-    return oi_illuminate(&sc, NULL, &il);
+    return oi_shape_check(&one);
 }
 
 /* Parse one facet record into f; 0 or -1 after the message. */
@@ -236,8 +222,7 @@ static int load(plan_shapes *s, FILE *fp, reader *r)
                 return fail(r, "bad shape name", detail);
             }
             if (is_builtin(tok[1])) {
-                return fail(r, "the name is a built-in shape's (sphere, plate, box-wing, "
-                               "cylinder): choose another:", tok[1]);
+                return fail(r, "the name is a built-in shape's: choose another:", tok[1]);
             }
             for (i = 0; i < s->n_shapes; i++) {
                 if (strcmp(s->shapes[i].name, tok[1]) == 0) {
@@ -255,6 +240,7 @@ static int load(plan_shapes *s, FILE *fp, reader *r)
             memcpy(p->name, tok[1], strlen(tok[1]) + 1);
             p->line = r->line;
             p->shape.facets = &s->facets[s->n_facets];
+            p->shape.name = p->name;
             p->shape.n_facets = 0u;
             continue;
         }
@@ -326,18 +312,27 @@ int shapes_lookup(const plan_shapes *s, const char *name, const oi_shape **out)
     return *out != NULL ? 0 : -1;
 }
 
+/* Append " name" (no blank first) to buf if it fits. */
+static void add_name(char *buf, size_t size, size_t *len, const char *name)
+{
+    size_t n = strlen(name);
+    if (*len + n + 2 > size) return;
+    if (*len > 0) buf[(*len)++] = ' ';
+    memcpy(buf + *len, name, n + 1);
+    *len += n;
+}
+
 void shapes_names(const plan_shapes *s, char *buf, size_t size)
 {
-    size_t len = 0, i;
+    size_t len = 0;
+    unsigned i;
+    int k;
     if (size == 0) return;
     buf[0] = '\0';
-    for (i = 0; i < N_BUILTIN + (s != NULL ? s->n_shapes : 0u); i++) {
-        const char *name = i < N_BUILTIN ? builtin_names[i] : s->shapes[i - N_BUILTIN].name;
-        size_t n = strlen(name);
-        if (i < N_BUILTIN && i > 0 && oi_shape_find(name) == NULL) continue;
-        if (len + n + 2 > size) break;
-        if (len > 0) buf[len++] = ' ';
-        memcpy(buf + len, name, n + 1);
-        len += n;
+    add_name(buf, size, &len, "sphere");
+    for (k = 0; oi_shape_builtin(k) != NULL; k++) {
+        const char *name = oi_shape_builtin(k)->name;
+        if (name != NULL) add_name(buf, size, &len, name);
     }
+    for (i = 0; s != NULL && i < s->n_shapes; i++) add_name(buf, size, &len, s->shapes[i].name);
 }
