@@ -853,6 +853,10 @@ int oi_expose(const oi_camera *camera, const oi_expose_in *in,
  *   OI_ERR_ALBEDO     earth_albedo or target_albedo outside [0, 1] (NaN too)
  *   OI_ERR_NONFINITE  illum's e_sun, e_earth, e_moon or flux_obs
  *   OI_ERR_INPUT      one of those four negative
+ *   OI_ERR_SHAPE      scene->shape or attitude_q invalid (as oi_illuminate;
+ *                     any shape with OI_NO_FACETS)
+ *   OI_ERR_NONFINITE, OI_ERR_INPUT  with a shape, illum->flux_specular
+ *                     non-finite or negative
  *   OI_ERR_CAMERA     the camera is invalid (oi_expose Note 4)
  *   OI_ERR_ZERO_VECTOR  observer or Sun at the Earth's centre
  *   OI_ERR_NONFINITE  a velocity component NaN or infinite
@@ -903,7 +907,8 @@ int oi_expose(const oi_camera *camera, const oi_expose_in *in,
  *   9. Motion: rate_rad_s = |(target_vel - observer_vel) x b^| / range
  *      (clamped at 1e3 rad/s), then oi_expose's Note 7.
  *  10. Shape (scene->shape not NULL): OI_FLAG_GLINT when illum->flux_specular
- *      exceeds half of illum->flux_obs (the exposure uses the total). Note
+ *      exceeds half of illum->flux_obs and the target is not occulted (the
+ *      exposure uses the total). Note
  *      5's radiance bound is then the largest over the facets of
  *      (albedo_diffuse + albedo_specular (n + 2) / 2) (e_sun + e_earth +
  *      e_moon) / pi, the peak of its BRDF times pi (target_albedo for a

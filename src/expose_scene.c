@@ -103,6 +103,17 @@ static OI_NOINLINE int check_scene(const oi_camera *camera, const oi_scene *scen
     if (illum->e_sun < 0 || illum->e_earth < 0 || illum->e_moon < 0 || illum->flux_obs < 0) {
         return OI_ERR_INPUT;
     }
+    if (scene->shape != NULL) {
+        /* the facets' BRDF peaks bound the resolved radiance (Note 10) */
+#ifdef OI_NO_FACETS
+        return OI_ERR_SHAPE;
+#else
+        st = oi__shape_scene_check(scene);
+        if (st != OI_OK) return st;
+        if (!OI_ISFINITE(illum->flux_specular)) return OI_ERR_NONFINITE;
+        if (illum->flux_specular < 0) return OI_ERR_INPUT;
+#endif
+    }
     if (!oi__camera_valid(camera)) return OI_ERR_CAMERA;
     g->r_obs = oi__norm(scene->observer_km);
     r_tgt = oi__norm(scene->target_km);
@@ -280,8 +291,12 @@ static OI_NOINLINE void limit_resolved(const oi_camera *camera, const oi_scene *
                            oi_expose_in *in)
 {
     oi_real ifov = camera->pixel_pitch_m / camera->focal_length_m;
-    oi_real cap = scene->target_albedo * (illum->e_sun + illum->e_earth + illum->e_moon) /
-                  OI_PI_R * (ifov * ifov) / camera->psf_peak_fraction;
+    oi_real peak = scene->target_albedo, cap;
+#ifndef OI_NO_FACETS
+    if (scene->shape != NULL) peak = oi__shape_peak(scene);
+#endif
+    cap = peak * (illum->e_sun + illum->e_earth + illum->e_moon) /
+          OI_PI_R * (ifov * ifov) / camera->psf_peak_fraction;
     if (in->flux_w_m2 > cap) {
         in->flux_w_m2 = cap;
         in->flags |= OI_FLAG_RESOLVED;
@@ -337,6 +352,10 @@ int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
 #endif
     if (in.flags & OI_FLAG_OCCULTED) in.flux_w_m2 = 0;
     limit_resolved(camera, scene, illum, &in);
+    /* a glint: the specular lobes carry most of the (unoccluded) flux */
+    if (scene->shape != NULL && in.flux_w_m2 > 0 &&
+        illum->flux_specular > OI_R(0.5) * illum->flux_obs)
+        in.flags |= OI_FLAG_GLINT;
     in.flags |= region_flags(illum->shadow.region);
     if (illum->sun_moon_hidden > (oi_real)0) in.flags |= OI_FLAG_MOON_SHADOW;
 

@@ -61,6 +61,13 @@ static int check_scene(const oi_scene *s, const oi_model *m)
     if (n_sun > far || n_target > far || n_moon > far || n_obs > far) return OI_ERR_GEOMETRY;
     if (n_target <= m->earth_radius_km || n_obs <= m->earth_radius_km)
         return OI_ERR_BELOW_SURFACE;
+    if (s->shape != NULL) {
+#ifdef OI_NO_FACETS
+        return OI_ERR_SHAPE;
+#else
+        return oi__shape_scene_check(s);
+#endif
+    }
     return OI_OK;
 }
 
@@ -265,31 +272,11 @@ static OI_NOINLINE int earth_flux_moments(const oi_scene *scene, const oi_model 
                                           const oi_real obs_hat[3], oi_real ratio,
                                           oi_illum *out)
 {
-    oi_real r_hat[3], s_hat[3], x[3], y[3], o[3], c[3], along, cos_theta, sin_theta, shape;
-    int i;
-    (void)oi__unit_bounded(scene->target_km, r_hat);
-    (void)oi__unit_bounded(scene->sun_km, s_hat);
-    along = oi__dot(s_hat, r_hat);
+    oi_real r_hat[3], s_hat[3], x[3], y[3], o[3], c[3], cos_theta, sin_theta, shape;
+    oi__local_frame(scene->target_km, scene->sun_km, r_hat, s_hat, x, y);
     oi__cross(s_hat, r_hat, c);
     sin_theta = oi__norm_bounded(c);
-    cos_theta = along;
-    for (i = 0; i < 3; i++) x[i] = s_hat[i] - along * r_hat[i];
-    /* near the Sun-Earth axis x is rounding noise that need not be normal to
-     * r_hat: orthogonalised once more after scaling (the distribution is then
-     * symmetric about the zenith to within sin(theta), so any normal x does) */
-    if (oi__unit_bounded(x, x) > (oi_real)0) {
-        const oi_real dr = oi__dot(x, r_hat);
-        for (i = 0; i < 3; i++) x[i] -= dr * r_hat[i];
-    }
-    if (oi__unit_bounded(x, x) == (oi_real)0) {
-        /* on the Sun-Earth axis the distribution is symmetric about the
-         * zenith: any x normal to it */
-        const oi_real e[3] = {(oi_real)1, (oi_real)0, (oi_real)0};
-        const oi_real f[3] = {(oi_real)0, (oi_real)1, (oi_real)0};
-        oi__cross(r_hat, (r_hat[0] * r_hat[0] < OI_R(0.5)) ? e : f, x);
-        (void)oi__unit_bounded(x, x);
-    }
-    oi__cross(r_hat, x, y);
+    cos_theta = oi__dot(s_hat, r_hat);
     o[0] = oi__dot(obs_hat, x);
     o[1] = oi__dot(obs_hat, y);
     o[2] = oi__dot(obs_hat, r_hat);
@@ -325,6 +312,13 @@ static OI_NOINLINE int observer_term(const oi_scene *scene, const oi_model *m, o
 #endif
     out->flux_moon = reflected_flux(out->e_moon, out->dir_moon, obs_hat, ratio,
                                     scene->target_albedo, &out->phase_moon);
+#ifndef OI_NO_FACETS
+    if (scene->shape != NULL) {
+        /* the facets replace the sphere (the phase angles stay) */
+        out->flux_sun = out->flux_earth = out->flux_moon = (oi_real)0;
+        oi__shape_flux(scene, m, obs_hat, out);
+    }
+#endif
     out->flux_obs = out->flux_sun + out->flux_earth + out->flux_moon;
     out->mag_v = oi__magnitude_v(out->flux_obs, m->tsi_w_m2);
     return OI_OK;

@@ -379,6 +379,35 @@ int oi__earth_sphere_shape(const oi_earth_angular_table *t, oi_real theta, oi_re
                            oi_real *shape);
 #endif
 
+/* The local frame of the Earth's light at the target (src/local_frame.c). */
+void oi__local_frame(const oi_real target_km[3], const oi_real sun_km[3], oi_real r_hat[3],
+                     oi_real s_hat[3], oi_real x[3], oi_real y[3]);
+
+#ifndef OI_NO_FACETS
+/* 1 when a resolved model has the facets' earthshine from the cubature
+ * (earth_reflection OI_EARTH_REFLECT_MOMENTS with earth_model
+ * OI_EARTH_TABLE), 0 for the mean direction. */
+static inline int oi__plate_cubature(const oi_model *m)
+{
+    return m->earth_reflection == OI_EARTH_REFLECT_MOMENTS && m->earth_model == OI_EARTH_TABLE;
+}
+/* Earthshine irradiance on a face of unit normal nrm in the local frame, per
+ * unit Earth albedo and solar irradiance (src/facet_earth.c). */
+oi_real oi__plate_earth(oi_real cos_theta, oi_real sin_theta, oi_real h_km, oi_real R,
+                        const oi_real nrm[3]);
+/* The attitude quaternion's check and rotation (src/quaternion.c). */
+int oi__quat_unit(const oi_real q[4], oi_real out[4]);
+void oi__quat_rotate(const oi_real q[4], const oi_real v[3], oi_real out[3]);
+/* The specular lobe per unit albedo (src/brdf.c). */
+oi_real oi__phong_lobe(const oi_real nrm[3], oi_real cos_in, const oi_real u_in[3],
+                       const oi_real u_out[3], oi_real shininess);
+/* A scene's shape: its check and its fluxes (src/facet.c). */
+int oi__shape_scene_check(const oi_scene *s);
+void oi__shape_flux(const oi_scene *s, const oi_model *m, const oi_real obs_hat[3],
+                    oi_illum *out);
+oi_real oi__shape_peak(const oi_scene *s);
+#endif
+
 /* oi_magnitude_v (src/magnitude.c) with the model's TSI already resolved. */
 oi_real oi__magnitude_v(oi_real flux_w_m2, oi_real tsi_w_m2);
 

@@ -1,0 +1,219 @@
+/* SPDX-License-Identifier: MIT */
+/* facet_earth.c: the earthshine irradiance on a flat facet, by a fixed
+ * cubature over the visible sunlit cap clipped by the facet's horizon
+ * (docs/shapes.md), and oi_earthshine_plate. */
+#include "oi_internal.h"
+
+#ifndef OI_NO_FACETS
+
+/* Gauss-Legendre of order 8 on [0, 1], its nodes t mapped by
+ * a = (1 - cos(pi t)) / 2 (so a piece's endpoint behaviour in sqrt(a - a0),
+ * where a circle of the region touches a ring, becomes analytic): the node
+ * and the weight times the map's derivative (mpmath, 21 digits). */
+#define N_NODES 8
+static const oi_real node_map[N_NODES][2] = {
+    { OI_R(0.000972393074746595051155), OI_R(0.00495601380754328264479) },
+    { OI_R(0.0252873078505905667399), OI_R(0.0548412356676075773844) },
+    { OI_R(0.132555030622283849363), OI_R(0.167094698072744440676) },
+    { OI_R(0.357916038049035612469), OI_R(0.273108052452103539402) },
+    { OI_R(0.642083961950964387531), OI_R(0.273108052452103539402) },
+    { OI_R(0.867444969377716150637), OI_R(0.167094698072744440676) },
+    { OI_R(0.97471269214940943326), OI_R(0.0548412356676075773844) },
+    { OI_R(0.999027606925253404949), OI_R(0.00495601380754328264479) },
+};
+
+/* Break points: 0, the horizon, the terminator's tangency, the facet
+ * circle's two tangencies and its two crossings with the terminator, and up
+ * to N_GEO multiples of the altitude (the 1/d^3 peak under the target). */
+#define N_GEO 6
+#define N_BREAK (7 + N_GEO)
+
+/* The azimuthal integral over [b1, b2] of (A + B cos b)(C + D cos b + E sin b)
+ * (the lit factor n.s and the facet's N.(P - T), both linear in cos b and
+ * sin b on a ring about the sub-target point), in closed form. */
+static oi_real arc_integral(const oi_real k[5], oi_real b1, oi_real b2)
+{
+    oi_real s1, c1, s2, c2, ds, dc, db, dsc, dss;
+    OI_SINCOS(b1, &s1, &c1);
+    OI_SINCOS(b2, &s2, &c2);
+    db = b2 - b1;
+    ds = s2 - s1;
+    dc = c2 - c1;
+    dsc = s2 * c2 - s1 * c1;
+    dss = s2 * s2 - s1 * s1;
+    return k[0] * k[2] * db + (k[0] * k[3] + k[1] * k[2]) * ds - k[0] * k[4] * dc +
+           k[1] * k[3] * OI_R(0.5) * (db + dsc) + k[1] * k[4] * OI_R(0.5) * dss;
+}
+
+/* Half-width of the arc where c0 + amp cos(b - centre) > 0 on the ring:
+ * -1 empty, > pi (as 4) the whole ring. */
+static oi_real half_width(oi_real c0, oi_real amp)
+{
+    oi_real x;
+    if (!(amp > (oi_real)0)) return c0 > (oi_real)0 ? OI_R(4.0) : OI_R(-1.0);
+    x = -c0 / amp;
+    if (x <= OI_R(-1.0)) return OI_R(4.0);
+    if (x >= OI_R(1.0)) return OI_R(-1.0);
+    return OI_ACOS(x);
+}
+
+/* The ring's integral over the intersection of the lit arc |b| < w1 and the
+ * facet's arc |b - beta| < w2 (either may be the whole ring). */
+static oi_real ring(const oi_real k[5], oi_real w1, oi_real beta, oi_real w2)
+{
+    oi_real sum = (oi_real)0;
+    int i;
+    if (w1 < (oi_real)0 || w2 < (oi_real)0) return sum;
+    if (w1 > OI_PI_R && w2 > OI_PI_R) return arc_integral(k, -OI_PI_R, OI_PI_R);
+    if (w2 > OI_PI_R) return arc_integral(k, -w1, w1);
+    if (w1 > OI_PI_R) return arc_integral(k, beta - w2, beta + w2);
+    /* beta in [-pi, pi]: the facet's arc and its images a turn away */
+    for (i = -1; i <= 1; i++) {
+        const oi_real shift = (oi_real)(2 * i) * OI_PI_R;
+        const oi_real lo1 = beta - w2 + shift, hi1 = beta + w2 + shift;
+        const oi_real lo = lo1 > -w1 ? lo1 : -w1, hi = hi1 < w1 ? hi1 : w1;
+        if (hi > lo) sum += arc_integral(k, lo, hi);
+    }
+    return sum;
+}
+
+/* Insert x into the sorted list bp[0..n-1] when 0 < x < a_max. */
+static int add_break(oi_real bp[N_BREAK], int n, oi_real x, oi_real a_max)
+{
+    int i;
+    if (!(x > (oi_real)0 && x < a_max) || n >= N_BREAK) return n;
+    for (i = n; i > 0 && bp[i - 1] > x; i--) bp[i] = bp[i - 1];
+    bp[i] = x;
+    return n + 1;
+}
+
+/* The two points where the terminator (the great circle of pole s) crosses
+ * the facet circle (pole nrm, cosine c_n): their polar angles from the
+ * zenith (the sub-target point) added as break points. */
+static int add_crossings(oi_real bp[N_BREAK], int n, const oi_real s[3], const oi_real nrm[3],
+                         oi_real c_n, oi_real a_max)
+{
+    oi_real k = oi__dot(s, nrm), det, al, be, p0[3], u[3], rest, z;
+    int i;
+    det = ((oi_real)1 - k) * ((oi_real)1 + k);
+    if (!(det > OI_R(1e-12))) return n;
+    al = -c_n * k / det;
+    be = c_n / det;
+    for (i = 0; i < 3; i++) p0[i] = al * s[i] + be * nrm[i];
+    rest = (oi_real)1 - oi__dot(p0, p0);
+    if (!(rest > (oi_real)0)) return n;
+    oi__cross(s, nrm, u);
+    if (oi__unit_bounded(u, u) == (oi_real)0) return n;
+    rest = OI_SQRT(rest);
+    z = p0[2] + rest * u[2];
+    n = add_break(bp, n, OI_ACOS(oi__clamp(z, OI_R(-1.0), OI_R(1.0))), a_max);
+    z = p0[2] - rest * u[2];
+    return add_break(bp, n, OI_ACOS(oi__clamp(z, OI_R(-1.0), OI_R(1.0))), a_max);
+}
+
+/*
+ * oi__plate_earth: irradiance on the face of unit normal nrm (local frame: z
+ * the zenith, x towards the Sun's side) per unit Earth albedo and unit solar
+ * irradiance at the Earth, at theta (cos_theta, sin_theta) and h_km above an
+ * Earth of radius R (km).
+ * Notes:
+ *  1. Unit r = |target|: R' = R / r, h' = h / r. A surface point n at polar
+ *     angle a, azimuth b about the sub-target point sends radiance
+ *     (n.s) / pi; seen from the target at distance d' (d'^2 = h'^2 +
+ *     4 R' sin^2(a/2)) it subtends cos(e) dA / d'^2, cos(e) = (cos a - R') / d',
+ *     and the face receives it times N.(P - T) / d'. So
+ *       E = R'^2 / pi int sin a (cos a - R') / d'^4 J(a) da,
+ *     J the azimuthal integral of (n.s)(N.(P - T)) over the arcs where both
+ *     are positive (arc_integral, exact).
+ *  2. The region is the intersection of three caps (visible, lit, in front of
+ *     the face); the a range is split where a circle of theirs touches a
+ *     ring or two cross, and at multiples of the altitude; each piece gets
+ *     the mapped 8-point rule (node_map). docs/shapes.md measures it.
+ */
+oi_real oi__plate_earth(oi_real cos_theta, oi_real sin_theta, oi_real h_km, oi_real R,
+                        const oi_real nrm[3])
+{
+    oi_real bp[N_BREAK], s[3], r = R + h_km, rp = R / r, hp = h_km / r, nh, c_n, a_max;
+    oi_real beta = (oi_real)0, total = (oi_real)0, d;
+    int n = 2, p, q, g;
+
+    nh = OI_SQRT(nrm[0] * nrm[0] + nrm[1] * nrm[1]);
+    c_n = nrm[2] / rp;
+    if (!(c_n < (oi_real)1)) return (oi_real)0; /* the whole Earth behind the face */
+    a_max = OI_ATAN2(OI_SQRT(hp * ((oi_real)1 + rp)), rp);
+    bp[0] = (oi_real)0;
+    bp[1] = a_max;
+    n = add_break(bp, n, OI_FABS(OI_HALF_PI_R - OI_ATAN2(sin_theta, cos_theta)), a_max);
+    if (nh > (oi_real)0) beta = OI_ATAN2(nrm[1], nrm[0]);
+    if (c_n > OI_R(-1.0)) {
+        const oi_real gam = OI_ATAN2(nh, nrm[2]), rho = OI_ACOS(c_n);
+        n = add_break(bp, n, OI_FABS(gam - rho), a_max);
+        n = add_break(bp, n, gam + rho, a_max);
+        s[0] = sin_theta;
+        s[1] = (oi_real)0;
+        s[2] = cos_theta;
+        n = add_crossings(bp, n, s, nrm, c_n, a_max);
+    }
+    /* distances 2 h, 8 h, ... while within the inner half of the horizon's */
+    d = OI_R(2.0) * hp;
+    for (g = 0; g < N_GEO && d * d < OI_R(0.5) * hp * ((oi_real)1 + rp); g++) {
+        const oi_real x = (d * d - hp * hp) / (OI_R(4.0) * rp);
+        n = add_break(bp, n, OI_R(2.0) * OI_ASIN(OI_SQRT(x)), a_max);
+        d *= OI_R(4.0);
+    }
+
+    for (p = 0; p + 1 < n; p++) {
+        const oi_real a0 = bp[p], width = bp[p + 1] - bp[p];
+        if (!(width > (oi_real)0)) continue;
+        for (q = 0; q < N_NODES; q++) {
+            oi_real a = a0 + width * node_map[q][0], sh, ch, sa, ca, sh2, d2, k[5];
+            OI_SINCOS(OI_R(0.5) * a, &sh, &ch);
+            sa = OI_R(2.0) * sh * ch;
+            sh2 = sh * sh;
+            ca = (oi_real)1 - OI_R(2.0) * sh2;
+            d2 = hp * hp + OI_R(4.0) * rp * sh2;
+            k[0] = ca * cos_theta;
+            k[1] = sa * sin_theta;
+            k[2] = -nrm[2] * (hp + OI_R(2.0) * rp * sh2);
+            k[3] = rp * sa * nrm[0];
+            k[4] = rp * sa * nrm[1];
+            total += width * node_map[q][1] * sa * (hp - OI_R(2.0) * sh2) / (d2 * d2) *
+                     ring(k, half_width(k[0], k[1]), beta, half_width(k[2], rp * sa * nh));
+        }
+    }
+    total *= rp * rp / OI_PI_R;
+    return total > (oi_real)0 ? total : (oi_real)0;
+}
+
+/* oi_earthshine_plate: contract in include/orbillum.h. */
+int oi_earthshine_plate(oi_real theta, oi_real h_km, const oi_real normal[3],
+                        const oi_model *model, oi_real *irradiance)
+{
+    oi_model m;
+    oi_real nrm[3], phi, psi, cs, sn;
+    int st;
+
+    if (irradiance != NULL) *irradiance = (oi_real)0;
+    if (irradiance == NULL || normal == NULL) return OI_ERR_NULL;
+    st = oi__model_resolve(model, &m);
+    if (st < 0) return st;
+    if (!oi__finite3(normal)) return OI_ERR_NONFINITE;
+    if (!OI_ISFINITE(theta) || !OI_ISFINITE(h_km)) return OI_ERR_NONFINITE;
+    theta = oi__clamp(theta, (oi_real)0, OI_PI_R);
+    OI_SINCOS(theta, &sn, &cs);
+    st = oi__earthshine(theta, cs, sn, h_km, &m, &phi, &psi);
+    if (st < 0) return st;
+    if (oi__unit(normal, nrm) == (oi_real)0) return OI_ERR_ZERO_VECTOR;
+    if (oi__plate_cubature(&m)) {
+        *irradiance = oi__plate_earth(cs, sn, h_km, m.earth_radius_km, nrm);
+    } else {
+        /* the mean direction: (sin psi, 0, -cos psi) in the local frame */
+        oi_real c, s, dot;
+        OI_SINCOS(psi, &s, &c);
+        dot = nrm[0] * s - nrm[2] * c;
+        *irradiance = dot > (oi_real)0 ? phi * dot : (oi_real)0;
+    }
+    return st;
+}
+
+#endif /* OI_NO_FACETS */
