@@ -5,9 +5,11 @@ runtime's facets of the triangles, ray casting); the light is the runtime's.
 Only what the view needs: ``v`` and ``f`` records of a Wavefront OBJ file
 (polygons are fanned into triangles; texture/normal indices are ignored). Each
 triangle becomes one facet of the runtime (oi_facet, through the binding): its
-normal from the winding, its area, one-sided when each of its edges is shared
-with another triangle (a closed surface; a panel modelled as two sheets back to
-back is closed too), two-sided when it lies on an open sheet. The runtime does
+normal from the winding (counter-clockwise seen from outside; a closed mesh
+wound the other way round throughout is turned), its area, one-sided when each
+of its edges is shared with another triangle (a closed surface; a panel
+modelled as two sheets back to back is closed too), two-sided when it lies on
+an open sheet. The runtime does
 not model shadowing between facets (a facet hidden from a source by another is
 still lit: exact for convex bodies only), and neither does the picture.
 
@@ -19,6 +21,11 @@ nadir-pointing satellite can.
 from __future__ import annotations
 
 import numpy as np
+
+
+#: barycentric tolerance of the ray-triangle test: a ray on the edge two
+#: triangles share hits one of them despite rounding
+EDGE_EPS = 1e-12
 
 
 def load_obj(path: str) -> tuple[np.ndarray, np.ndarray]:
@@ -106,6 +113,10 @@ def triangle_facets(verts: np.ndarray, tris: np.ndarray, albedo_diffuse: float,
         for u, v in ((t[0], t[1]), (t[1], t[2]), (t[2], t[0])):
             e = tuple(sorted((tuple(key[u]), tuple(key[v]))))
             edges[e] = edges.get(e, 0) + 1
+    # a closed mesh wound inwards (negative enclosed volume): its normals turned outwards
+    closed = all(c >= 2 for c in edges.values())
+    if closed and np.sum(np.einsum("ij,ij->i", a, np.cross(b, c))) < 0:
+        cr = -cr
     out = []
     for t, n, ar in zip(tris, cr, area):
         open_edge = any(edges[tuple(sorted((tuple(key[u]), tuple(key[v]))))] == 1
@@ -152,7 +163,9 @@ def cast(origin: np.ndarray, dirs: np.ndarray, tri_xyz: np.ndarray):
         qv = np.cross(tv, e1)
         v = (d @ qv) * inv
         t = (qv @ e2) * inv
-        hit = ok & (u >= 0) & (v >= 0) & (u + v <= 1) & (t > 0) & (t < best_t)
+        # edges belong to both triangles (EDGE_EPS): no ray through the crack of a shared edge
+        hit = (ok & (u >= -EDGE_EPS) & (v >= -EDGE_EPS) & (u + v <= 1 + EDGE_EPS) & (t > 0)
+               & (t < best_t))
         best_t[hit] = t[hit]
         best_f[hit] = k
     hit = best_f >= 0

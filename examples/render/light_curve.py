@@ -18,7 +18,9 @@ Writes into --out:
                        shape's curve; on the case's rows without them, the sphere's)
   CASE-light-curve.csv id, t_s, mag_sphere, mag_shape, flux_shape, flux_specular,
                        flags_shape (magnitude 99 = OI_MAG_DARK: nothing seen)
-  CASE-light-curve.png the two curves (Agg), glints marked
+  CASE-light-curve.png the two curves (Agg), glints marked, the rows where the
+                       Earth hides the target shaded (flag occulted: the
+                       magnitude is what the target sends, not what is seen)
 With --plan the planner is run on CASE-tumbling.csv and on the case's rows
 (written as CASE.csv), and the largest difference from the binding's magnitudes
 is printed (0: the same library, the same inputs; else exit 1).
@@ -35,7 +37,7 @@ import sys
 
 import numpy as np
 
-from .common import scene_inputs, times
+from .common import intervals, scene_inputs, times
 
 MAG_DARK = 99.0
 
@@ -130,6 +132,11 @@ def plot(path: str, lc: dict, title: str, shape: str) -> None:
     if glint.any():
         ax[0].plot(t_min[glint], mb[glint], "o", ms=3, color="#ff7f0e",
                    label="glint (specular > half the flux)")
+    hidden = np.array(["occulted" in f.split("+") for f in lc["flags_shape"]])
+    for a in ax:
+        for k, (i0, i1) in enumerate(intervals(hidden)):
+            a.axvspan(t_min[i0], t_min[min(i1, len(t_min) - 1)], color="#cccccc", lw=0,
+                      label="behind the Earth (occulted)" if (k == 0 and a is ax[0]) else None)
     ax[0].invert_yaxis()
     ax[0].set_ylabel("V magnitude")
     ax[0].legend(fontsize=8, loc="best")

@@ -183,8 +183,11 @@ def test_rotation_invariance():
     """Rotating every position and the attitude together changes no output
     (box-wing and cylinder with every term, earthshine included)."""
     moon = np.array([-200000.0, 300000.0, 50000.0])
-    obs = TARGET + np.array([-40.0, 25.0, 30.0])
-    q0 = random_quaternions(1, 5)[0]
+    # an attitude that turns the plate's normal towards the Sun's side, the
+    # observer out along the normal: every shape lit and seen
+    s_dir = (SUN - TARGET) / np.linalg.norm(SUN - TARGET)
+    q0 = next(q for q in random_quaternions(50, 5) if rotation(q)[:, 2] @ s_dir > 0.3)
+    obs = TARGET + 50.0 * rotation(q0)[:, 2]
     rows = []
     turns = random_quaternions(6, 6)
     for shape in ("box-wing", "cylinder", "plate"):
