@@ -323,7 +323,7 @@ static int parse_target(batch *b, const csv_reader *r, oi_scene *sc)
     double q[4] = {1.0, 0.0, 0.0, 0.0}, norm2 = 0.0;
     const char *s = field_of(b, r, C_TARGET_SHAPE, &short_row);
     if (s != NULL && shapes_lookup(b->shapes, s, &sc->shape) != 0) {
-        char names[400], detail[480];
+        char names[640], detail[760];
         shapes_names(b->shapes, names, sizeof names);
         snprintf(detail, sizeof detail, "\"%.60s\"; known: %s%s", s, names,
                  b->shapes == NULL ? " (more with --shapes FILE)" : "");
