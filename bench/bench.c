@@ -22,6 +22,10 @@
  *   sun_earth_mean oi_illuminate, Sun + Earth, earthshine reflected from its
  *                  mean direction (OI_EARTH_REFLECT_MEAN): the difference
  *                  with sun_earth is the cost of the angular moments
+ *   sun_earth_plate, sun_earth_box_wing, sun_earth_cylinder  as sun_earth with the
+ *                  built-in shape (docs/shapes.md) instead of the sphere, the
+ *                  scene's attitude the identity: the facets' cost (without
+ *                  OI_NO_FACETS; with it, the sphere's)
  *   all_expose     oi_illuminate (all terms) + oi_expose_scene (built-in camera 0)
  *   sun_fraction   oi_sun_fraction alone
  *   earthshine     oi_earthshine alone (the baked table), theta and h of each scene
@@ -64,11 +68,14 @@ static bench_scene_d raw[BENCH_NSCENES];
 static volatile double sink;
 
 enum { C_ALL, C_SUN, C_SUN_EARTH, C_ALL_EXPOSE, C_SUN_FRACTION, C_EARTHSHINE, C_EARTHSHINE_LAMBERT,
-       C_SUN_MOON, C_SUN_EARTH_MEAN, C_SUN_FRACTION_BATCH, C_SUN_FRACTION_BATCH_ALL, C_ALL_BATCH, C_EARTHSHINE_BATCH,
+       C_SUN_MOON, C_SUN_EARTH_MEAN, C_SHAPE_PLATE, C_SHAPE_BOX_WING, C_SHAPE_CYLINDER,
+       C_SUN_FRACTION_BATCH, C_SUN_FRACTION_BATCH_ALL, C_ALL_BATCH, C_EARTHSHINE_BATCH,
        C_N };
 static const char *const config_name[C_N] = {"all",          "sun",        "sun_earth",
                                              "all_expose",   "sun_fraction", "earthshine",
                                              "earthshine_lambert", "sun_moon", "sun_earth_mean",
+                                             "sun_earth_plate", "sun_earth_box_wing",
+                                             "sun_earth_cylinder",
                                              "sun_fraction_batch",
                                              "sun_fraction_batch_all", "all_batch",
                                              "earthshine_batch"};
@@ -205,6 +212,17 @@ static double run_config(int cfg)
         case C_SUN_EARTH_MEAN:
             s->terms = OI_TERM_SUN | OI_TERM_EARTH;
             (void)oi_illuminate(s, &mean, &il);
+            acc += (double)il.flux_obs;
+            break;
+        case C_SHAPE_PLATE:
+        case C_SHAPE_BOX_WING:
+        case C_SHAPE_CYLINDER:
+            s->terms = OI_TERM_SUN | OI_TERM_EARTH;
+#ifndef OI_NO_FACETS
+            s->shape = oi_shape_builtin(cfg - C_SHAPE_PLATE);
+#endif
+            (void)oi_illuminate(s, NULL, &il);
+            s->shape = NULL;
             acc += (double)il.flux_obs;
             break;
         case C_ALL_EXPOSE:

@@ -11,7 +11,9 @@
  *   - otherwise every real output is finite (outputs are pre-filled with
  *     NaN bit patterns, so an output left unwritten is caught too),
  *     fractions lie in [0, 1], irradiances, fluxes, areas are >= 0,
- *     angles in [0, pi], directions are unit vectors or zero.
+ *     angles in [0, pi], directions are unit vectors or zero; with a shape
+ *     (a fuzzed set of facets or a built-in, a fuzzed attitude), the
+ *     specular flux lies in [0, flux_obs].
  * Build and run: make fuzz (mk/analysis.mk).
  */
 #include "fuzz_common.h"
@@ -149,6 +151,48 @@ static void do_earthshine(fz_in *in)
     FZ_CHECK(oi_earthshine(theta, h, NULL, NULL, &psi) == OI_ERR_NULL);
 }
 
+#ifndef OI_NO_FACETS
+/* The fuzzed shape's storage (the scene points into it during the call). */
+static oi_facet fz_facets[4];
+static oi_shape fz_shape_store;
+
+/* A shape: a built-in, or up to 4 fuzzed facets (n_facets fuzzed too, so
+ * counts out of range are tried), and an attitude. */
+static void fz_shape(fz_in *in, oi_scene *s)
+{
+    uint8_t how = fz_u8(in);
+    int i;
+    if (how & 1) {
+        s->shape = oi_shape_builtin((int)(how >> 1) % 4);
+    } else {
+        for (i = 0; i < 4; i++) {
+            fz_vec(in, fz_facets[i].normal);
+            fz_facets[i].area_m2 = fz_real(in);
+            fz_facets[i].two_sided = (int)(fz_u8(in) & 1u);
+            fz_facets[i].albedo_diffuse = fz_real(in);
+            fz_facets[i].albedo_specular = fz_real(in);
+            fz_facets[i].shininess = fz_real(in);
+        }
+        fz_shape_store.facets = (how & 2) ? NULL : fz_facets;
+        /* 0..4 (0 is refused; more would read past the array: a caller's bug) */
+        fz_shape_store.n_facets = (unsigned)(how >> 2) % 5u;
+        fz_shape_store.diffuse_from_scene = (how & 128) != 0;
+        fz_shape_store.name = NULL;
+        s->shape = &fz_shape_store;
+    }
+    for (i = 0; i < 4; i++) s->attitude_q[i] = fz_real(in);
+    if (how & 64) {
+        /* a plausible unit quaternion, so that the facets are reached */
+        oi_real n = (oi_real)0;
+        for (i = 0; i < 4; i++) n += s->attitude_q[i] * s->attitude_q[i];
+        if (n > (oi_real)0 && n < (oi_real)FZ_MAX) {
+            n = (oi_real)sqrt((double)n);
+            for (i = 0; i < 4; i++) s->attitude_q[i] /= n;
+        }
+    }
+}
+#endif
+
 static void fz_scene(fz_in *in, oi_scene *s)
 {
     uint8_t flags = fz_u8(in);
@@ -172,6 +216,9 @@ static void fz_scene(fz_in *in, oi_scene *s)
     if (flags & 8) s->earth_albedo = fz_real(in);
     if (flags & 16) s->target_albedo = fz_real(in);
     if (flags & 32) s->target_radius_m = fz_real(in);
+#ifndef OI_NO_FACETS
+    if (flags & 64) fz_shape(in, s);
+#endif
 }
 
 /* On a violation, the scene and the result are printed before the abort. */
@@ -251,6 +298,8 @@ static void check_illum(int st, const oi_illum *o)
     FZ_CHECK(fz_nonneg(o->phase_moon) && o->phase_moon <= (oi_real)PI_D * (1 + 4 * FZ_EPS));
     FZ_CHECK(fz_nonneg(o->flux_sun) && fz_nonneg(o->flux_earth) && fz_nonneg(o->flux_moon));
     FZ_CHECK(fz_nonneg(o->flux_obs));
+    FZ_CHECK(fz_nonneg(o->flux_specular) &&
+             o->flux_specular <= o->flux_obs * (1 + 8 * FZ_EPS) + (oi_real)FZ_MIN_NORMAL);
     FZ_CHECK(fz_finite(o->mag_v) && o->mag_v <= (oi_real)OI_MAG_DARK);
     FZ_CHECK(fz_nonneg(o->range_km));
 }
@@ -424,7 +473,7 @@ static void do_illuminate(fz_in *in)
 static void do_misc(fz_in *in)
 {
     oi_real f, x = fz_real(in), mag;
-    char name[24];
+    char name[24] = {0};
     size_t i, n = fz_u8(in) % sizeof name;
     int st = (int)(int8_t)fz_u8(in);
     const char *sn = oi_status_name(st);
@@ -448,6 +497,32 @@ static void do_misc(fz_in *in)
         if (c != NULL) FZ_CHECK(c->n_times >= 1 && c->n_times <= OI_CAMERA_MAX_TIMES);
     }
     (void)oi_camera_find(NULL);
+#endif
+#ifndef OI_NO_FACETS
+    {
+        /* the plate's earthshine and the BRDF: finite, non-negative, zeroed on error */
+        oi_real nrm[3], e, th = fz_real(in), h = fz_real(in), b;
+        oi_facet fc;
+        oi_model m;
+        fz_vec(in, nrm);
+        fz_model(in, &m);
+        NAN_FILL(e);
+        st = oi_earthshine_plate(th, h, nrm, (fz_u8(in) & 1) ? &m : NULL, &e);
+        FZ_CHECK(fz_known_status(st));
+        FZ_CHECK(fz_nonneg(e));
+        if (st < 0) FZ_CHECK(e == 0);
+        fz_vec(in, fc.normal);
+        fc.area_m2 = fz_real(in);
+        fc.two_sided = (int)(fz_u8(in) & 1u);
+        fc.albedo_diffuse = fz_real(in);
+        fc.albedo_specular = fz_real(in);
+        fc.shininess = fz_real(in);
+        b = oi_facet_brdf(&fc, nrm, fc.normal);
+        if (oi_shape_check(&(oi_shape){&fc, 1u, 0, NULL}) == OI_OK) FZ_CHECK(fz_nonneg(b));
+        (void)oi_shape_find(name);
+    }
+#endif
+#ifndef OI_NO_EXPOSURE
     FZ_CHECK(oi_camera_builtin(-1) == NULL);
     {
         const oi_camera *c = oi_camera_builtin((int)(int8_t)fz_u8(in));

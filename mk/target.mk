@@ -30,7 +30,7 @@ CROSS_OPTS := Os O2
 CROSS_CFGS := $(foreach c,$(CROSS_CORES),$(foreach o,$(CROSS_OPTS),$(c)-$(o)))
 
 # Compile-time option sets measured by `make size` (OPTSET_<name> in mk/matrix.mk).
-CROSS_OPTSETS := full sun_only no_moon no_atmosphere no_exposure no_earth_table sun_uniform
+CROSS_OPTSETS := full sun_only no_moon no_atmosphere no_exposure no_earth_table no_facets sun_uniform
 # which program each option set links (target/size_<prog>.c)
 SIZEPROG_sun_only := sun
 SIZEPROG_sun_uniform := sun
@@ -39,7 +39,8 @@ SIZEPROG_sun_uniform := sun
 # library so a function the library does not define yet is reported, not a link error.
 OI_PUBLIC := oi_status_name oi_lambert_phase oi_angle oi_cap_overlap oi_sun_fraction \
   oi_earthshine oi_earthshine_sphere oi_moon_phase_law oi_scene_defaults oi_illuminate oi_magnitude_v \
-  oi_flux_from_magnitude oi_camera_builtin oi_camera_find oi_flag_name oi_expose oi_expose_scene
+  oi_flux_from_magnitude oi_camera_builtin oi_camera_find oi_flag_name oi_expose oi_expose_scene \
+  oi_shape_check oi_shape_builtin oi_shape_find oi_facet_brdf oi_earthshine_plate
 
 cfg_core = $(word 1,$(subst -, ,$(1)))
 cfg_opt = $(word 2,$(subst -, ,$(1)))

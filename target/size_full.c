@@ -26,7 +26,7 @@ int main(void)
     oi_illum il;
     oi_real a[3], b[3], phi, psi, f;
     oi_shadow sh;
-    int st;
+    int st = 0;
     a[0] = vin[0];
     a[1] = vin[1];
     a[2] = vin[2];
@@ -38,7 +38,29 @@ int main(void)
     s.target_km[1] = vin[6];
     s.observer_km[2] = vin[7];
     s.has_observer = 1;
-    st = oi_illuminate(&s, NULL, &il);
+#ifndef OI_NO_FACETS
+    {
+        /* a shape from the built-ins (by index or name), its check, the BRDF
+         * and the plate's earthshine */
+        oi_facet fc;
+        oi_real e;
+        s.shape = oi_shape_builtin((int)vin[12]);
+        if (s.shape == NULL) s.shape = oi_shape_find(oi_status_name((int)vin[13]));
+        st = oi_shape_check(s.shape);
+        fc.normal[0] = a[0];
+        fc.normal[1] = a[1];
+        fc.normal[2] = a[2];
+        fc.area_m2 = vin[3];
+        fc.two_sided = (int)vin[4];
+        fc.albedo_diffuse = vin[5];
+        fc.albedo_specular = vin[6];
+        fc.shininess = vin[7];
+        rout = oi_facet_brdf(&fc, a, b);
+        st += oi_earthshine_plate(vin[8], vin[9], a, NULL, &e);
+        rout = e;
+    }
+#endif
+    st += oi_illuminate(&s, NULL, &il);
     st += oi_sun_fraction(a, b, NULL, &sh);
     st += oi_earthshine(vin[8], vin[9], NULL, &phi, &psi);
     st += oi_flux_from_magnitude(vin[10], NULL, &f);

@@ -184,5 +184,56 @@ int oi_expose_scene(const oi_camera *camera, const oi_scene *scene, const oi_ill
 #endif
 #endif /* OI_NO_EXPOSURE */
 
+#ifndef OI_NO_FACETS
+#ifdef STUB_oi_shape_check
+int oi_shape_check(const oi_shape *shape)
+{
+    (void)shape;
+    oi_target_missing("oi_shape_check");
+    return STUB_ERR;
+}
+#endif
+#ifdef STUB_oi_shape_builtin
+const oi_shape *oi_shape_builtin(int index)
+{
+    (void)index;
+    oi_target_missing("oi_shape_builtin");
+    return NULL;
+}
+#endif
+#ifdef STUB_oi_shape_find
+const oi_shape *oi_shape_find(const char *name)
+{
+    (void)name;
+    oi_target_missing("oi_shape_find");
+    return NULL;
+}
+#endif
+#ifdef STUB_oi_facet_brdf
+oi_real oi_facet_brdf(const oi_facet *facet, const oi_real to_source[3],
+                      const oi_real to_observer[3])
+{
+    (void)facet;
+    (void)to_source;
+    (void)to_observer;
+    oi_target_missing("oi_facet_brdf");
+    return 0;
+}
+#endif
+#ifdef STUB_oi_earthshine_plate
+int oi_earthshine_plate(oi_real theta, oi_real h_km, const oi_real normal[3],
+                        const oi_model *model, oi_real *irradiance)
+{
+    (void)theta;
+    (void)h_km;
+    (void)normal;
+    (void)model;
+    oi_target_missing("oi_earthshine_plate");
+    if (irradiance) *irradiance = 0;
+    return STUB_ERR;
+}
+#endif
+#endif /* OI_NO_FACETS */
+
 /* ISO C forbids an empty translation unit. */
 typedef int oi_stubs_nonempty;

@@ -208,7 +208,7 @@ class oi_scene(ctypes.Structure):
         ("earth_albedo", real), ("target_albedo", real), ("target_radius_m", real),
         ("has_moon", c_int),
         ("target_vel_km_s", real * 3), ("observer_vel_km_s", real * 3),
-        ("shape", POINTER(oi_shape)), ("attitude_q", real * 4),
+        ("shape", c_void_p), ("attitude_q", real * 4),
     ]
 
 
