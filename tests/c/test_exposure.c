@@ -225,7 +225,7 @@ static void test_input_flags(void **state)
     in.flags = OI_FLAG_SUN_EXCLUSION | OI_FLAG_PENUMBRA | OI_FLAG_TOO_FAINT | OI_FLAG_SATURATED;
     check_int(OI_OK, oi_expose(&c, &in, NULL, &out), "status");
     check_int(OI_FLAG_SUN_EXCLUSION | OI_FLAG_PENUMBRA, (long)out.flags, "flags");
-    in.flags = OI_FLAG_TRAILED << 1; /* the first bit beyond the defined flags */
+    in.flags = OI_FLAG_GLINT << 1; /* the first bit beyond the defined flags */
     check_int(OI_ERR_FLAGS, oi_expose(&c, &in, NULL, &out), "unknown bit");
     assert_true(all_zero(&out, sizeof out));
 }
@@ -447,7 +447,8 @@ static void test_flag_names(void **state)
     assert_null(oi_flag_name(OI_FLAG_SUN_EXCLUSION | OI_FLAG_ECLIPSED));
     assert_string_equal(oi_flag_name(OI_FLAG_MOON_IN_FOV), "moon_in_fov");
     assert_string_equal(oi_flag_name(OI_FLAG_TRAILED), "trailed");
-    assert_null(oi_flag_name(OI_FLAG_TRAILED << 1));
+    assert_string_equal(oi_flag_name(OI_FLAG_GLINT), "glint");
+    assert_null(oi_flag_name(OI_FLAG_GLINT << 1));
 }
 #endif /* OI_NO_EXPOSURE */
 
@@ -474,6 +475,7 @@ static void test_status_names(void **state)
         {OI_ERR_GEOMETRY, -12, "ERR_GEOMETRY"},
         {OI_ERR_INPUT, -13, "ERR_INPUT"},
         {OI_ERR_FLAGS, -14, "ERR_FLAGS"},
+        {OI_ERR_SHAPE, -15, "ERR_SHAPE"},
     };
     size_t i, n = sizeof all / sizeof all[0];
     int code, named = 0;

@@ -19,6 +19,8 @@
 #include "orbillum.h"
 #include "oi_test_util.h"
 
+#ifndef OI_NO_FACETS
+
 static const double PI = 3.14159265358979323846;
 
 #ifdef OI_SINGLE_PRECISION
@@ -26,8 +28,6 @@ static const double PI = 3.14159265358979323846;
 #else
 #define REL_TOL 1e-12
 #endif
-
-#ifndef OI_NO_FACETS
 
 /* A LEO scene: Sun along +x, target at 7000 km on +y, observer 1000 km
  * away; only the terms asked for. */
@@ -536,6 +536,7 @@ static void test_shape_refused(void **state)
     oi_scene_defaults(&s);
     set3(s.sun_km, 1.495978707e8, 0.0, 0.0);
     set3(s.target_km, 0.0, 7000.0, 0.0);
+    s.terms = OI_TERM_SUN;
     s.shape = (const struct oi_shape *)(const void *)&dummy;
     check_int(OI_ERR_SHAPE, oi_illuminate(&s, NULL, &il), "shape without facets");
 }
