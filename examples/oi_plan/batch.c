@@ -315,8 +315,8 @@ static int parse_opt(batch *b, const csv_reader *r, int k, double *value)
 
 /* The target's shape and attitude: the target_shape and q_w, q_x, q_y, q_z
  * columns into sc. Returns 0, -1 after a parse error (reported: ERR_PARSE),
- * or OI_ERR_SHAPE after reporting an unknown name or a quaternion that is not
- * of unit norm. */
+ * or OI_ERR_SHAPE after reporting an unknown name or, for a facet shape, a
+ * quaternion that is not of unit norm. */
 static int parse_target(batch *b, const csv_reader *r, oi_scene *sc)
 {
     int short_row = 0, i, given = 0, first_empty = -1;
@@ -349,7 +349,8 @@ static int parse_target(batch *b, const csv_reader *r, oi_scene *sc)
         return -1;
     }
     for (i = 0; i < 4; i++) norm2 += q[i] * q[i];
-    if (!(fabs(sqrt(norm2) - 1.0) <= Q_NORM_TOLERANCE)) {
+    /* as the library: the attitude is read (and checked) with a facet shape only */
+    if (sc->shape != NULL && !(fabs(sqrt(norm2) - 1.0) <= Q_NORM_TOLERANCE)) {
         char detail[96];
         snprintf(detail, sizeof detail, "(norm %.17g; off 1 by more than 1e-6)", sqrt(norm2));
         row_error(b, r->rec_line, b->col[C_Q_W], "the attitude quaternion is not a unit one",

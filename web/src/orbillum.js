@@ -466,7 +466,11 @@ export class Orbillum {
       if (q.length !== 0 && q.length !== 4) return row;
       if (q.length === 4) {
         const norm = Math.sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-        if (!(Math.abs(norm - 1) <= 1e-6)) { row.status = this.statusName(C.OI_ERR_SHAPE); return row; }
+        // as the planner and the library: checked (and read) with a facet shape only
+        if (scene.shape_ptr && !(Math.abs(norm - 1) <= 1e-6)) {
+          row.status = this.statusName(C.OI_ERR_SHAPE);
+          return row;
+        }
         scene.attitude_q = q;
       }
     }
