@@ -79,6 +79,8 @@ def light_curve(cols: dict, shape: str, rate_deg_s: float, axis) -> dict:
     q = spin_quaternions(t_s, rate_deg_s, axis)
     inp = _read_text(columns_text(cols))
     kw = scene_inputs(inp)
+    kw.pop("target_shape", None)  # the case's own shape columns, if any, give way to the tumble
+    kw.pop("attitude_q", None)
     camera = inp["camera"][0] if "camera" in inp else orbillum.cameras()[0]
     sphere = orbillum.expose(camera, **kw)
     shaped = orbillum.expose(camera, **kw, target_shape=shape, attitude_q=q)

@@ -380,7 +380,8 @@ def main(argv=None) -> int:
     p.add_argument("--seed", type=int, default=1, help="noise seed")
     p.add_argument("--obj", help="render this OBJ facet model (metres, body frame; nadir/Sun "
                                  "attitude) instead of the sphere, lit by the runtime's facet "
-                                 "model; the exposure is the runtime's for that shape")
+                                 "model; the exposure is the runtime's for that shape (it "
+                                 "replaces the row's target_shape and q_w..q_z)")
     p.add_argument("--specular", type=float, default=0.0,
                    help="with --obj: the facets' specular albedo (the runtime's Phong lobe; "
                         "default 0)")
@@ -401,7 +402,11 @@ def main(argv=None) -> int:
     if not camname:
         camname = orbillum.cameras()[0]
     cam = orbillum.camera(camname)
-    res = orbillum.expose(camname, **inputs)
+    try:
+        res = orbillum.expose(camname, **inputs)
+    except ValueError as e:  # e.g. a target_shape from a --shapes file the binding does not read
+        print(f"error: {a.input}: {e}", file=sys.stderr)
+        return 2
     ids = cols.get("id", [str(i) for i in range(len(res["status"]))])
     if a.time:
         if a.time not in ids:
@@ -422,6 +427,12 @@ def main(argv=None) -> int:
               file=sys.stderr)
         return 1
     sc = row_scene(inputs, i)
+    shape = (inputs.get("target_shape") or [None] * (i + 1))[i]
+    if shape not in (None, "sphere") and not a.obj:
+        print(f"error: row {i} ({ids[i]}) has target_shape {shape!r}: a facet shape has no "
+              "geometry to draw; the view draws the sphere or an OBJ model (--obj)",
+              file=sys.stderr)
+        return 2
     model = None
     if a.obj:
         from .facets import load_obj

@@ -67,6 +67,19 @@ def test_light_curve_runs_and_matches_the_planner(tmp_path):
     assert [r["flags"] for r in shaped_rows] == [c["flags_shape"] for c in curve]
     tumbling = list(csv.DictReader(open(out / "leo-leo-pass-tumbling.csv", encoding="utf-8")))
     assert {r["target_shape"] for r in tumbling} == {"box-wing"}
+    # the pictures' reader of a planner input (examples/render/common.py) takes the shape and
+    # attitude columns as the planner does
+    from examples.render.common import read_csv, scene_inputs
+    kw = scene_inputs(read_csv(str(out / "leo-leo-pass-tumbling.csv")))
+    x = orbillum.expose("telescope-15cm", **kw)
+    assert [r["mag_v"] for r in shaped_rows] == [g17(m) for m in x["mag_v"]]
+    # the view draws no facet shape without its geometry (an OBJ model)
+    from examples.render import view
+    assert view.main([str(out / "leo-leo-pass-tumbling.csv"), "--row", "150",
+                      "-o", str(tmp_path / "v.png")]) == 2
+    assert view.main([str(out / "leo-leo-pass-tumbling.csv"), "--row", "150", "--obj",
+                      os.path.join(ROOT, "examples", "render", "models", "boxwing.obj"),
+                      "-o", str(tmp_path / "v.png")]) == 0
     # a tumbling box-wing is not a sphere: its curve moves by magnitudes where the
     # sphere's changes slowly
     ms = np.array([float(c["mag_sphere"]) for c in curve])
