@@ -22,6 +22,11 @@ static const oi_real node_map[N_NODES][2] = {
     { OI_R(0.999027606925253404949), OI_R(0.00495601380754328264479) },
 };
 
+/* Lowest altitude the cubature integrates at (km): below it, 1 m, the value
+ * there (the flat plane's limit to O(h / R) = 2e-7), so that h^4 stays a
+ * normal number in single precision. */
+#define H_FLOOR_KM OI_R(1e-3)
+
 /* Break points: 0, the horizon, the terminator's tangency, the facet
  * circle's two tangencies and its two crossings with the terminator, and up
  * to N_GEO multiples of the altitude (the 1/d^3 peak under the target). */
@@ -129,13 +134,19 @@ static int add_crossings(oi_real bp[N_BREAK], int n, const oi_real s[3], const o
  *     the face); the a range is split where a circle of theirs touches a
  *     ring or two cross, and at multiples of the altitude; each piece gets
  *     the mapped 8-point rule (node_map). docs/shapes.md measures it.
+ *  3. h_km below H_FLOOR_KM is taken as H_FLOOR_KM.
  */
 oi_real oi__plate_earth(oi_real cos_theta, oi_real sin_theta, oi_real h_km, oi_real R,
                         const oi_real nrm[3])
 {
-    oi_real bp[N_BREAK], s[3], r = R + h_km, rp = R / r, hp = h_km / r, nh, c_n, a_max;
+    oi_real bp[N_BREAK], s[3], r, rp, hp, nh, c_n, a_max;
     oi_real beta = (oi_real)0, total = (oi_real)0, d;
     int n = 2, p, q, g;
+
+    if (!(h_km >= H_FLOOR_KM)) h_km = H_FLOOR_KM;
+    r = R + h_km;
+    rp = R / r;
+    hp = h_km / r;
 
     nh = OI_SQRT(nrm[0] * nrm[0] + nrm[1] * nrm[1]);
     c_n = nrm[2] / rp;
