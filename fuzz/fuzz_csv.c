@@ -9,7 +9,10 @@
  *      the reader terminates (at most one record per input byte + 1);
  *   2. the whole batch (batch_run) on the same bytes through a memfd path,
  *      writing its CSV to a memory stream: exit code 0, 1 or 2 (the planner's
- *      contract), and no "nan"/"inf" in any output field.
+ *      contract), and no "nan"/"inf" in any output field;
+ *   3. the same bytes as a --shapes file (shapes_load): it either fails or
+ *      holds 1 to PLAN_SHAPES_MAX shapes of 1 to OI_FACETS_MAX facets each,
+ *      every one accepted by oi_shape_check, named, within PLAN_FACETS_TOTAL.
  * Run with -close_fd_mask=2 to silence the planner's messages (make fuzz does).
  */
 #define _GNU_SOURCE 1
@@ -25,6 +28,7 @@
 #include "orbillum.h"
 #include "batch.h"
 #include "csv_read.h"
+#include "shapes.h"
 
 #define FZ_CHECK(cond)                                                              \
     do {                                                                            \
@@ -102,6 +106,37 @@ static void check_output(const char *out, size_t len)
     }
 }
 
+static void check_shapes(const plan_shapes *s)
+{
+    unsigned i, total = 0;
+    FZ_CHECK(s->n_shapes >= 1u && s->n_shapes <= PLAN_SHAPES_MAX);
+    FZ_CHECK(s->n_facets <= PLAN_FACETS_TOTAL);
+    for (i = 0; i < s->n_shapes; i++) {
+        const plan_shape *p = &s->shapes[i];
+        const oi_shape *found;
+        size_t len = strnlen(p->name, PLAN_SHAPE_NAME_MAX);
+        FZ_CHECK(len > 0 && len < PLAN_SHAPE_NAME_MAX);
+        FZ_CHECK(p->shape.n_facets >= 1u && p->shape.n_facets <= (unsigned)OI_FACETS_MAX);
+        FZ_CHECK(oi_shape_check(&p->shape) == OI_OK);
+        FZ_CHECK(shapes_lookup(s, p->name, &found) == 0 && found == &p->shape);
+        total += p->shape.n_facets;
+    }
+    FZ_CHECK(total == s->n_facets);
+}
+
+static void fuzz_shapes(const char *path)
+{
+    static plan_shapes s; /* static: 30 KB */
+    FILE *err = fopen("/dev/null", "w");
+    int st;
+    if (err == NULL) return;
+    st = shapes_load(&s, path, err);
+    fclose(err);
+    FZ_CHECK(st == 0 || st == -1);
+    if (st == 0) check_shapes(&s);
+    else FZ_CHECK(s.n_shapes == 0u && s.n_facets == 0u);
+}
+
 static void fuzz_batch(const uint8_t *data, size_t size)
 {
     char path[64];
@@ -121,8 +156,9 @@ static void fuzz_batch(const uint8_t *data, size_t size)
         close(fd);
         return;
     }
-    code = batch_run(path, oi_camera_builtin(0), os, NULL);
+    code = batch_run(path, oi_camera_builtin(0), NULL, os, NULL);
     fclose(os);
+    fuzz_shapes(path);
     close(fd);
     FZ_CHECK(code == PLAN_EXIT_OK || code == PLAN_EXIT_ROWS || code == PLAN_EXIT_INPUT);
     check_output(out, out_len);

@@ -7,14 +7,18 @@
 #                      in build/pass-example/ (PASS_CASE=geo-inspector-eclipse by default)
 #   make gallery       pass plots and views of the three shipped cases in build/gallery/out/
 #   make gallery-docs  the same, refreshing the committed docs/gallery/
+#   make light-curve   a tumbling box-wing over a shipped pass beside the sphere: its V magnitude
+#                      against time, plotted into build/light-curve/ (LC_CASE=leo-leo-pass)
 
 SHARED_LIB := $(BUILDDIR)/liborbillum.so
 RT_HDR := $(wildcard include/*.h src/*.h tables/*.h)
 PY_BINDING_SRC := python/pyproject.toml python/setup.py $(wildcard python/orbillum/*.py python/orbillum/catalog/*.py)
 PASS_CASE ?= geo-inspector-eclipse
 PASS_DIR := $(BUILDDIR)/pass-example
+LC_CASE ?= leo-leo-pass
+LC_DIR := $(BUILDDIR)/light-curve
 
-.PHONY: shared binding pass-example gallery gallery-docs
+.PHONY: shared binding pass-example gallery gallery-docs light-curve
 
 shared: $(SHARED_LIB) ## build build/liborbillum.so (double precision, for the Python binding)
 
@@ -47,6 +51,10 @@ gallery: all binding ## pass plots and views of the shipped cases in build/galle
 
 gallery-docs: all binding ## the gallery, refreshing the committed docs/gallery/
 	$(PY) -m examples.render.gallery --plan $(PLAN) --out docs/gallery --work $(BUILDDIR)/gallery
+
+light-curve: all binding ## tumbling box-wing vs sphere over a shipped pass: V against time (build/light-curve/)
+	$(PY) -m examples.render.light_curve --case $(LC_CASE) --plan $(PLAN) --out $(LC_DIR)
+	@echo "light curve: $(LC_DIR)/$(LC_CASE)-light-curve.png (data: $(LC_CASE)-light-curve.csv)"
 
 # ---- the thin test binding's shared library (tests/python/_oi_ctypes.py):
 # the double-precision runtime plus a struct-size probe. Not the public

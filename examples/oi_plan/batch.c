@@ -9,6 +9,7 @@
 
 #include <ctype.h>
 #include <errno.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
@@ -17,6 +18,7 @@
 #include "csv_read.h"
 #include "numtext.h"
 #include "output.h"
+#include "shapes.h"
 #include "windows.h"
 
 enum column {
@@ -29,6 +31,7 @@ enum column {
     C_SKY,
     C_TARGET_VX, C_TARGET_VY, C_TARGET_VZ,
     C_OBSERVER_VX, C_OBSERVER_VY, C_OBSERVER_VZ,
+    C_TARGET_SHAPE, C_Q_W, C_Q_X, C_Q_Y, C_Q_Z,
     C_COUNT
 };
 
@@ -41,13 +44,15 @@ static const char *const column_name[C_COUNT] = {
     "terms", "earth_albedo", "target_albedo", "target_radius_m", "camera", "atmosphere",
     "sky",
     "target_vx", "target_vy", "target_vz",
-    "observer_vx", "observer_vy", "observer_vz"
+    "observer_vx", "observer_vy", "observer_vz",
+    "target_shape", "q_w", "q_x", "q_y", "q_z"
 };
 
 typedef struct batch {
     long col[C_COUNT];        /* field index of each known column, -1 if absent */
     size_t header_fields;
     const oi_camera *default_camera;
+    const plan_shapes *shapes; /* --shapes, or NULL */
     const char *path;
     int warned_extra;
     unsigned long messages;   /* row messages printed so far */
@@ -144,6 +149,15 @@ static int read_header(batch *b, csv_reader *r)
             fprintf(stderr, "oi-plan: %s: line %lu: columns %s, %s, %s must come together\n",
                     b->path, r->rec_line, column_name[groups[k][0]], column_name[groups[k][1]],
                     column_name[groups[k][2]]);
+            missing = 1;
+        }
+    }
+    {
+        int n = 0;
+        for (k = C_Q_W; k <= C_Q_Z; k++) n += b->col[k] >= 0;
+        if (n != 0 && n != 4) {
+            fprintf(stderr, "oi-plan: %s: line %lu: columns q_w, q_x, q_y, q_z must come "
+                            "together\n", b->path, r->rec_line);
             missing = 1;
         }
     }
@@ -296,6 +310,58 @@ static int parse_opt(batch *b, const csv_reader *r, int k, double *value)
     return 1;
 }
 
+/* Largest |norm - 1| of an attitude quaternion the planner normalises (the
+ * library's bound for oi_scene.attitude_q). */
+#define Q_NORM_TOLERANCE 1e-6
+
+/* The target's shape and attitude: the target_shape and q_w, q_x, q_y, q_z
+ * columns into sc. Returns 0, -1 after a parse error (reported: ERR_PARSE),
+ * or OI_ERR_SHAPE after reporting an unknown name or, for a facet shape, a
+ * quaternion that is not of unit norm. */
+static int parse_target(batch *b, const csv_reader *r, oi_scene *sc)
+{
+    int short_row = 0, i, given = 0, first_empty = -1;
+    double q[4] = {1.0, 0.0, 0.0, 0.0}, norm2 = 0.0;
+    const char *s = field_of(b, r, C_TARGET_SHAPE, &short_row);
+    if (s != NULL && shapes_lookup(b->shapes, s, &sc->shape) != 0) {
+        char names[640], detail[760];
+        shapes_names(b->shapes, names, sizeof names);
+        snprintf(detail, sizeof detail, "\"%.60s\"; known: %s%s", s, names,
+                 b->shapes == NULL ? " (more with --shapes FILE)" : "");
+        row_error(b, r->rec_line, b->col[C_TARGET_SHAPE], "unknown target_shape", detail);
+        return OI_ERR_SHAPE;
+    }
+    if (b->col[C_Q_W] < 0) return 0; /* attitude: identity (oi_scene_defaults) */
+    for (i = 0; i < 4; i++) {
+        double x = 0.0;
+        int st = parse_opt(b, r, C_Q_W + i, &x);
+        if (st < 0) return -1;
+        if (st == 0 && first_empty < 0) first_empty = i;
+        if (st == 1) {
+            given++;
+            q[i] = x;
+        }
+    }
+    if (given == 0) return 0;
+    if (given != 4) {
+        row_error(b, r->rec_line, b->col[C_Q_W + first_empty],
+                  "empty field (give all four of q_w, q_x, q_y, q_z or none):",
+                  column_name[C_Q_W + first_empty]);
+        return -1;
+    }
+    for (i = 0; i < 4; i++) norm2 += q[i] * q[i];
+    /* as the library: the attitude is read (and checked) with a facet shape only */
+    if (sc->shape != NULL && !(fabs(sqrt(norm2) - 1.0) <= Q_NORM_TOLERANCE)) {
+        char detail[96];
+        snprintf(detail, sizeof detail, "(norm %.17g; off 1 by more than 1e-6)", sqrt(norm2));
+        row_error(b, r->rec_line, b->col[C_Q_W], "the attitude quaternion is not a unit one",
+                  detail);
+        return OI_ERR_SHAPE;
+    }
+    for (i = 0; i < 4; i++) sc->attitude_q[i] = (oi_real)q[i]; /* the library normalises */
+    return 0;
+}
+
 /* Build the scene of one record and compute it. Returns 1 when the row is
  * OK (or a warning), 0 when it is an error; fills row. */
 static int run_row(batch *b, const csv_reader *r, plan_row *row)
@@ -384,6 +450,14 @@ static int run_row(batch *b, const csv_reader *r, plan_row *row)
     }
     model.no_atmosphere = x == 0;
 
+    st = parse_target(b, r, &sc);
+    if (st == -1) return 0;
+    if (st < 0) {
+        row->status = st;
+        row->status_name = oi_status_name(st);
+        return 0;
+    }
+
     memset(&goal, 0, sizeof goal);
     s = field_of(b, r, C_SKY, &short_row);
     if (s != NULL && parse_sky(s, &goal.sky) < 0) {
@@ -450,7 +524,8 @@ static void progress(unsigned long rows, time_t *last, int tty)
     fflush(stderr);
 }
 
-int batch_run(const char *path, const oi_camera *default_camera, FILE *out, FILE *summary)
+int batch_run(const char *path, const oi_camera *default_camera, const plan_shapes *shapes,
+              FILE *out, FILE *summary)
 {
     batch b;
     window_list wins;
@@ -463,6 +538,7 @@ int batch_run(const char *path, const oi_camera *default_camera, FILE *out, FILE
     memset(&b, 0, sizeof b);
     windows_init(&wins, 5.0); /* the default SNR goal of oi_expose */
     b.default_camera = default_camera;
+    b.shapes = shapes;
     b.path = strcmp(path, "-") == 0 ? "<stdin>" : path;
     fp = strcmp(path, "-") == 0 ? stdin : fopen(path, "rb");
     if (fp == NULL) {

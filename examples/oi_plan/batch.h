@@ -7,6 +7,7 @@
 #include <stdio.h>
 
 #include "orbillum.h"
+#include "shapes.h"
 
 /* Status name of a row whose text could not be parsed (planner level, not a
  * library status). */
@@ -20,9 +21,12 @@
 
 /* Run the batch on path ("-" for standard input), writing CSV to out and
  * messages to stderr. Rows without a camera column use default_camera.
+ * shapes: the named shapes of --shapes FILE that target_shape may name
+ * besides the built-in ones, or NULL.
  * summary: NULL, or where to print the observation windows of the pass
  * (consecutive rows, labelled by id) at the end.
  * Returns a PLAN_EXIT_* code. */
-int batch_run(const char *path, const oi_camera *default_camera, FILE *out, FILE *summary);
+int batch_run(const char *path, const oi_camera *default_camera, const plan_shapes *shapes,
+              FILE *out, FILE *summary);
 
 #endif

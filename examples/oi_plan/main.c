@@ -7,12 +7,13 @@
 #include "batch.h"
 #include "orbillum.h"
 #include "scenario.h"
+#include "shapes.h"
 
 static void usage(FILE *fp)
 {
     fputs(
         "usage: oi-plan [--camera NAME] [--step SECONDS]\n"
-        "       oi-plan --csv FILE|- [--camera NAME] [--summary]\n"
+        "       oi-plan --csv FILE|- [--camera NAME] [--shapes FILE] [--summary]\n"
         "       oi-plan --list-cameras | --help\n"
         "\n"
         "How an object in orbit is lit by the Sun, the Earth and the Moon, and how a\n"
@@ -27,6 +28,10 @@ static void usage(FILE *fp)
         "  --csv FILE      batch mode: one output row per input row (FILE '-' = stdin)\n"
         "  --summary       with --csv: print the observation windows of the pass\n"
         "                  (runs of consecutive observable rows, named by id) on stderr\n"
+        "  --shapes FILE   with --csv: named facet shapes that target_shape may name\n"
+        "                  (lines 'shape NAME', then one facet a line: nx ny nz area_m2\n"
+        "                  sided(1|2) albedo_diffuse albedo_specular shininess; '#'\n"
+        "                  comments; docs/planner.md)\n"
         "  --camera NAME   default camera (built-in name; default: the first one)\n"
         "  --step SECONDS  table step of the built-in scenario (default 120)\n"
         "  --list-cameras  list the built-in cameras and their parameters\n"
@@ -41,23 +46,28 @@ static void usage(FILE *fp)
         "            atmosphere (1, or 0 = as if the Earth had none),\n"
         "            sky (none, zodiacal, moon, all; default none),\n"
         "            target_vx,target_vy,target_vz, observer_vx,observer_vy,observer_vz\n"
-        "            (km/s; default at rest)\n"
+        "            (km/s; default at rest),\n"
+        "            target_shape (sphere, plate, box-wing, cylinder or a --shapes name;\n"
+        "            default sphere), q_w,q_x,q_y,q_z (attitude, body to input frame;\n"
+        "            default identity; |norm - 1| > 1e-6 is ERR_SHAPE)\n"
         "Batch output (numbers with %.17g; empty when not computed):\n"
         "  id,status,sun_fraction,sun_fraction_atm,e_sun,e_earth,e_moon,earth_theta_deg,\n"
         "  earth_h_km,flux_obs,mag_v,exposure_s,gain,snr,flags\n"
         "  status: OK, WARN_* (computed), ERR_* (row failed; ERR_PARSE: bad text).\n"
         "  flags: sun_exclusion, earth_in_fov, eclipsed, penumbra, occulted, resolved,\n"
-        "         too_faint, saturated, moon_shadow, moon_in_fov, trailed, joined by '+'.\n"
+        "         too_faint, saturated, moon_shadow, moon_in_fov, trailed, glint,\n"
+        "         joined by '+'.\n"
         "\n"
         "exit status: 0 all rows OK (warnings included), 1 some rows had errors,\n"
         "             2 unusable input (no header, missing required column,\n"
-        "             unreadable file) or bad options.\n"
+        "             unreadable file, a bad --shapes file) or bad options.\n"
         "\n"
         "examples:\n"
         "  oi-plan                                 # built-in scenario\n"
         "  oi-plan --camera telescope-15cm --step 60\n"
         "  oi-plan --csv pass.csv > plan.csv       # batch\n"
         "  oi-plan --csv pass.csv --summary > plan.csv   # and its windows on stderr\n"
+        "  oi-plan --csv pass.csv --shapes sats.txt > plan.csv   # target_shape from a file\n"
         "  printf 'sun_x,sun_y,sun_z,target_x,target_y,target_z\\n1.496e8,0,0,0,7000,0\\n' \\\n"
         "      | oi-plan --csv -\n"
         "  oi-plan --list-cameras\n",
@@ -113,7 +123,8 @@ static const char *option_value(int argc, char **argv, int *i, const char *name,
 
 int main(int argc, char **argv)
 {
-    const char *csv = NULL, *camera_name = NULL, *step_text = NULL;
+    static plan_shapes shapes; /* fixed storage: the planner allocates no facets */
+    const char *csv = NULL, *camera_name = NULL, *step_text = NULL, *shapes_path = NULL;
     const oi_camera *camera;
     double step = 120.0;
     int i, summary = 0;
@@ -137,6 +148,8 @@ int main(int argc, char **argv)
             csv = v;
         } else if ((v = option_value(argc, argv, &i, "--camera", &missing)) != NULL) {
             camera_name = v;
+        } else if ((v = option_value(argc, argv, &i, "--shapes", &missing)) != NULL) {
+            shapes_path = v;
         } else if ((v = option_value(argc, argv, &i, "--step", &missing)) != NULL) {
             step_text = v;
         } else if (missing) {
@@ -169,6 +182,17 @@ int main(int argc, char **argv)
             return PLAN_EXIT_INPUT;
         }
     }
-    if (csv != NULL) return batch_run(csv, camera, stdout, summary ? stderr : NULL);
+    if (shapes_path != NULL) {
+        if (csv == NULL) {
+            fprintf(stderr, "oi-plan: --shapes applies to --csv (the built-in scenario's target "
+                            "is its sphere)\n");
+            return PLAN_EXIT_INPUT;
+        }
+        if (shapes_load(&shapes, shapes_path, stderr) != 0) return PLAN_EXIT_INPUT;
+    }
+    if (csv != NULL) {
+        return batch_run(csv, camera, shapes_path != NULL ? &shapes : NULL, stdout,
+                         summary ? stderr : NULL);
+    }
     return scenario_run(stdout, camera, step);
 }

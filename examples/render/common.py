@@ -83,4 +83,10 @@ def scene_inputs(cols: dict, rows=None) -> dict:
     if "terms" in cols:
         dflt = "all" if moon is not None else "sun+earth"
         out["terms"] = [cols["terms"][i] or dflt for i in idx]
+    if "target_shape" in cols:  # as the planner: empty is the sphere
+        out["target_shape"] = [cols["target_shape"][i] or None for i in idx]
+    if "q_w" in cols:  # as the planner: a row with all four empty is the identity
+        q = np.column_stack([floats(cols[k]) for k in ("q_w", "q_x", "q_y", "q_z")])[idx]
+        q[np.isnan(q).all(axis=1)] = (1.0, 0.0, 0.0, 0.0)
+        out["attitude_q"] = q
     return out

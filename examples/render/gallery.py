@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: MIT
 """Regenerate docs/gallery/: each shipped case planned by build/oi-plan, its
-pass plot and camera views at chosen instants.
+pass plot and camera views at chosen instants, and the light curve of a
+tumbling box-wing over the LEO-LEO pass (examples/render/light_curve.py).
 
     python -m examples.render.gallery --plan build/oi-plan --out docs/gallery
 """
@@ -8,6 +9,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import shutil
 import subprocess
 import sys
 
@@ -61,6 +63,12 @@ def main(argv=None) -> int:
                 args += ["--camera", cam]
             if view.main(args) != 0:
                 return 2
+    from . import light_curve
+    lc_dir = os.path.join(a.work, "light-curve")
+    if light_curve.main(["--case", "leo-leo-pass", "--plan", a.plan, "--out", lc_dir]) != 0:
+        return 2
+    shutil.copyfile(os.path.join(lc_dir, "leo-leo-pass-light-curve.png"),
+                    os.path.join(a.out, "leo-leo-pass-light-curve.png"))
     from . import season
     if season.main(["--case", "geo-inspector-eclipse", "--start", "2006-02-20",
                     "--stop", "2006-04-20", "--step", "120",

@@ -5,16 +5,28 @@
 
 The target is a Lambertian sphere (radius and albedo from the row), or with
 --obj an OBJ facet model (examples/render/facets.py). For each sub-pixel the
-ray from the observer is intersected with the surface and the radiance is
+ray from the observer is intersected with the surface. On the sphere the
+radiance is
 
     L = (albedo / pi) * sum_s E_s max(0, n . d_s)
 
 over the sources s: the Sun (E = e_sun, which already carries the visible
 fraction of the disc and the atmosphere's sun_fraction_atm, from dir_sun), the
 Earth (E = e_earth from the table's mean incidence direction dir_earth: the
-Earth is treated as a collimated source from that direction, as the runtime does
-for the flux it reports) and the Moon (e_moon, dir_moon). Summed over the image,
-sum L dOmega equals the runtime's flux_obs (checked by the tests).
+Earth is treated as a collimated source from that direction) and the Moon
+(e_moon, dir_moon). Summed over the image, sum L dOmega equals the runtime's
+flux_obs to the pixelisation (checked by the tests; the runtime's sphere takes
+the Earth's angular distribution, so the Earth part differs by that).
+
+On an OBJ model the light is the runtime's facet model (oi_illuminate with a
+shape, through the binding), not a copy of it: each triangle is one facet
+(diffuse albedo from the row's target_albedo, the specular lobe from --specular
+and --shininess), and the runtime's flux per source of that facet alone, F_k,
+gives its radiance L_k = F_k d^2 / (A_k cos e_k) (d the range, A_k its area,
+e_k the angle of the observer from its normal): the facet's BRDF with the Sun,
+the Moon and the Earth's angular distribution as the runtime lights it. The
+exposure is the runtime's for the whole model (its triangles merged by plane
+into one oi_shape).
 
 Camera: the image scale is the pixel pitch over the focal length; electrons =
 L dOmega * aperture area * transmission * band fraction * QE / photon energy *
@@ -84,7 +96,9 @@ def radiance_image(sc: dict, res: dict, cam: dict, crop_px: int | None = None,
     Returns (L_sources dict name -> (M, M) array, meta dict). sc holds one row's
     positions (km) and target radius/albedo; res one row of orbillum.expose().
     model: None (the sphere of sc's radius) or (vertices in m, triangles) of an
-    OBJ facet model, oriented by facets.nadir_sun_attitude (needs sc["sun"]).
+    OBJ facet model, oriented by facets.nadir_sun_attitude (needs sc["sun"]),
+    lit by the runtime (facet_fluxes; sc's moon, terms, earth_albedo,
+    albedo_specular and shininess are read when given).
     """
     tgt, obs = sc["target"], sc["observer"]
     if model is None:
@@ -125,29 +139,85 @@ def radiance_image(sc: dict, res: dict, cam: dict, crop_px: int | None = None,
         tnear = -b - np.sqrt(np.where(hit, disc, 0.0))
         p = obs + tnear[..., None] * dirs
         n = (p - tgt) / a_km
+        alb = sc["target_albedo"]
+        L = {}
+        for s in ("sun", "earth", "moon"):
+            e = float(res[f"e_{s}"])
+            dv = np.asarray(res[f"dir_{s}"], dtype=float)
+            if e > 0 and np.linalg.norm(dv) > 0:
+                L[s] = np.where(hit, alb / math.pi * e * np.clip(n @ dv, 0.0, None), 0.0)
+            else:
+                L[s] = np.zeros((m, m))
     else:
-        from .facets import cast, nadir_sun_attitude
-        rot = nadir_sun_attitude(tgt, sc["sun"])
-        tri_xyz = (verts_m @ rot.T / 1000.0)[tris]  # (F, 3, 3) km, target-centred
-        fn = np.cross(tri_xyz[:, 1] - tri_xyz[:, 0], tri_xyz[:, 2] - tri_xyz[:, 0])
-        fn /= np.linalg.norm(fn, axis=1, keepdims=True)
-        hit, face, _t = cast(oc, dirs, tri_xyz)
-        n = fn[np.where(hit, face, 0)]
-        # two-sided facets: the normal that faces the viewer
-        n = np.where((np.sum(n * dirs, axis=-1) > 0)[..., None], -n, n)
-    alb = sc["target_albedo"]
-    L = {}
-    for s in ("sun", "earth", "moon"):
-        e = float(res[f"e_{s}"])
-        dv = np.asarray(res[f"dir_{s}"], dtype=float)
-        if e > 0 and np.linalg.norm(dv) > 0:
-            L[s] = np.where(hit, alb / math.pi * e * np.clip(n @ dv, 0.0, None), 0.0)
-        else:
-            L[s] = np.zeros((m, m))
+        from .facets import cast
+        fl = facet_fluxes(sc, model)
+        tri_xyz = (verts_m @ fl["rot"].T / 1000.0)[tris]  # (F, 3, 3) km, target-centred
+        fn = fl["normals"]
+        # a one-sided triangle turned away from the observer sends nothing: not cast, so
+        # that a panel's two back-to-back sheets show the one that faces the camera
+        to_obs = -los / d
+        cos_e = fn @ to_obs
+        cast_ok = (cos_e > 0) | fl["two_sided"]
+        idx = np.flatnonzero(cast_ok)
+        hit, face, _t = cast(oc, dirs, tri_xyz[idx])
+        face = idx[np.where(hit, face, 0)]
+        ce = np.abs(cos_e)
+        d_m = d * 1e3
+        L = {}
+        for s in ("sun", "earth", "moon"):
+            lk = np.where(ce > 1e-12, fl[s] * d_m * d_m / (fl["area_m2"] * np.maximum(ce, 1e-12)),
+                          0.0)
+            L[s] = np.where(hit, lk[face], 0.0)
     meta = {"range_km": d, "ifov_rad": ifov, "diam_px": diam_px, "crop_px": crop_px,
             "oversample": os_, "subpix_sr": sub * sub, "drawn_as_disc": drawn_as_disc,
             "shape": "sphere" if model is None else f"facet model ({len(tris)} triangles)"}
     return L, meta
+
+
+def _row_kwargs(sc: dict) -> dict:
+    """orbillum.illuminate's arguments for the one row sc describes."""
+    kw = {"sun": sc["sun"], "moon": sc.get("moon"), "target": sc["target"],
+          "observer": sc["observer"], "target_albedo": sc["target_albedo"]}
+    for k in ("terms", "earth_albedo", "target_radius_m"):
+        if sc.get(k) is not None:
+            kw[k] = sc[k]
+    return kw
+
+
+def model_shape(sc: dict, model):
+    """The OBJ model's triangles as runtime facets, their attitude, and the
+    whole model as one orbillum.Shape (triangles merged by plane)."""
+    import orbillum
+
+    from .facets import attitude_quaternion, merge_facets, nadir_sun_attitude, triangle_facets
+    verts_m, tris = model
+    rot = nadir_sun_attitude(sc["target"], sc["sun"])
+    facets = triangle_facets(verts_m, tris, sc["target_albedo"], sc.get("albedo_specular", 0.0),
+                             sc.get("shininess", 0.0))
+    merged = merge_facets(facets)
+    if len(merged) > orbillum.OI_FACETS_MAX:
+        raise ValueError(f"the model has {len(merged)} distinct facet planes; the runtime takes "
+                         f"at most OI_FACETS_MAX = {orbillum.OI_FACETS_MAX}")
+    return facets, rot, attitude_quaternion(rot), orbillum.Shape(merged, name="obj")
+
+
+def facet_fluxes(sc: dict, model) -> dict:
+    """The runtime's flux per source (W/m^2 at the observer) of each triangle
+    alone (one oi_illuminate row per triangle, each a one-facet shape), and
+    the triangles' input-frame normals, areas, sides and the attitude."""
+    import orbillum
+
+    facets, rot, q, _whole = model_shape(sc, model)
+    shapes = [orbillum.Shape([f]) for f in facets]
+    r = orbillum.illuminate(**_row_kwargs(sc), target_shape=shapes, attitude_q=q)
+    bad = r["status"] < 0
+    if bad.any():
+        raise ValueError(f"the runtime rejects triangle {int(np.argmax(bad))}: "
+                         f"{r['status_name'][np.argmax(bad)]}")
+    return {"sun": r["flux_sun"], "earth": r["flux_earth"], "moon": r["flux_moon"],
+            "normals": np.array([rot @ f["normal"] for f in facets]),
+            "area_m2": np.array([f["area_m2"] for f in facets]),
+            "two_sided": np.array([f["two_sided"] for f in facets]), "rot": rot, "q": q}
 
 
 def electrons_per_radiance(cam: dict, exposure_s: float, subpix_sr: float) -> float:
@@ -283,10 +353,15 @@ def plot_view(out_png, img: dict, sc: dict, res: dict, cam: dict, when: str) -> 
 
 
 def row_scene(inputs: dict, i: int) -> dict:
-    return {"target": inputs["target"][i], "observer": inputs["observer"][i],
-            "sun": inputs["sun"][i],
-            "target_radius_m": float(inputs.get("target_radius_m", [1.0] * (i + 1))[i]),
-            "target_albedo": float(inputs.get("target_albedo", [0.2] * (i + 1))[i])}
+    sc = {"target": inputs["target"][i], "observer": inputs["observer"][i],
+          "sun": inputs["sun"][i],
+          "moon": None if inputs.get("moon") is None else inputs["moon"][i],
+          "target_radius_m": float(inputs.get("target_radius_m", [1.0] * (i + 1))[i]),
+          "target_albedo": float(inputs.get("target_albedo", [0.2] * (i + 1))[i])}
+    for k in ("terms", "earth_albedo"):
+        if inputs.get(k) is not None:
+            sc[k] = inputs[k][i]
+    return sc
 
 
 def row_result(res: dict, i: int) -> dict:
@@ -303,8 +378,15 @@ def main(argv=None) -> int:
     g.add_argument("--row", type=int, help="row number (0 = first data row)")
     p.add_argument("--camera", help="built-in camera (default: the CSV's camera column)")
     p.add_argument("--seed", type=int, default=1, help="noise seed")
-    p.add_argument("--obj", help="render this OBJ facet model (metres) instead of the sphere; "
-                                 "the exposure is still the runtime's (sphere) suggestion")
+    p.add_argument("--obj", help="render this OBJ facet model (metres, body frame; nadir/Sun "
+                                 "attitude) instead of the sphere, lit by the runtime's facet "
+                                 "model; the exposure is the runtime's for that shape (it "
+                                 "replaces the row's target_shape and q_w..q_z)")
+    p.add_argument("--specular", type=float, default=0.0,
+                   help="with --obj: the facets' specular albedo (the runtime's Phong lobe; "
+                        "default 0)")
+    p.add_argument("--shininess", type=float, default=0.0,
+                   help="with --obj: the lobe's exponent (default 0)")
     p.add_argument("-o", "--output", required=True, help="PNG file")
     a = p.parse_args(argv)
 
@@ -320,7 +402,11 @@ def main(argv=None) -> int:
     if not camname:
         camname = orbillum.cameras()[0]
     cam = orbillum.camera(camname)
-    res = orbillum.expose(camname, **inputs)
+    try:
+        res = orbillum.expose(camname, **inputs)
+    except ValueError as e:  # e.g. a target_shape from a --shapes file the binding does not read
+        print(f"error: {a.input}: {e}", file=sys.stderr)
+        return 2
     ids = cols.get("id", [str(i) for i in range(len(res["status"]))])
     if a.time:
         if a.time not in ids:
@@ -341,14 +427,30 @@ def main(argv=None) -> int:
               file=sys.stderr)
         return 1
     sc = row_scene(inputs, i)
+    shape = (inputs.get("target_shape") or [None] * (i + 1))[i]
+    if shape not in (None, "sphere") and not a.obj:
+        print(f"error: row {i} ({ids[i]}) has target_shape {shape!r}: a facet shape has no "
+              "geometry to draw; the view draws the sphere or an OBJ model (--obj)",
+              file=sys.stderr)
+        return 2
     model = None
     if a.obj:
         from .facets import load_obj
+        sc["albedo_specular"] = a.specular
+        sc["shininess"] = a.shininess
         try:
             model = load_obj(a.obj)
+            _facets, _rot, q, whole = model_shape(sc, model)
         except (OSError, ValueError) as e:
             print(f"error: {e}", file=sys.stderr)
             return 2
+        # the runtime's exposure for the model itself (all its facets as one shape)
+        r = row_result(orbillum.expose(camname, **_row_kwargs(sc), target_shape=whole,
+                                       attitude_q=q), 0)
+        if r["status"] < 0 or r["expose_status"] < 0:
+            print(f"error: row {i} ({ids[i]}) with {a.obj}: {r['status_name']} / "
+                  f"{r['expose_status_name']}", file=sys.stderr)
+            return 1
     img = render(sc, r, cam, seed=a.seed, model=model)
     plot_view(a.output, img, sc, r, cam, ids[i])
     print(f"{a.output}: row {i} ({ids[i]})", file=sys.stderr)

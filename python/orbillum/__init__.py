@@ -12,6 +12,10 @@ inputs, so the numbers are exactly those of the C library (and of
     import orbillum
     r = orbillum.illuminate(sun, moon, target, observer)
     x = orbillum.expose("telescope-15cm", sun, moon, target, observer)
+
+The target is the scene's Lambertian sphere, or a shape of flat facets
+(``target_shape``: a built-in name, or facets; ``attitude_q``: quaternions
+body -> input frame per row), as include/orbillum.h's oi_shape.
 """
 import ctypes
 
@@ -29,13 +33,36 @@ globals().update({n: getattr(L, n) for n in _CONSTANTS})
 __all__ = ["illuminate", "expose", "expose_flux", "sun_fraction", "earthshine",
            "lambert_phase", "moon_phase_law", "magnitude_v", "flux_from_magnitude",
            "camera", "cameras", "status_name", "flag_names", "terms_mask",
+           "Shape", "shape", "shapes", "facet_brdf", "FACET_DTYPE",
            "library_path"] + _CONSTANTS
 
 _lib = L.load()
 
-SCENE_DTYPE = np.dtype(L.oi_scene)
-ILLUM_DTYPE = np.dtype(L.oi_illum)
-EXPOSURE_DTYPE = np.dtype(L.oi_exposure)
+
+
+def _np_dtype(struct):
+    """numpy dtype of a ctypes structure, pointer fields as uintp (numpy has
+    no pointer type): the same layout, offsets taken from ctypes."""
+    names, formats, offsets = [], [], []
+    for name, t in struct._fields_:
+        names.append(name)
+        offsets.append(getattr(struct, name).offset)
+        if issubclass(t, (ctypes._Pointer, ctypes.c_char_p, ctypes.c_void_p)):
+            formats.append(np.uintp)
+        elif issubclass(t, ctypes.Structure):
+            formats.append(_np_dtype(t))
+        else:
+            formats.append(np.dtype(t))
+    return np.dtype({"names": names, "formats": formats, "offsets": offsets,
+                     "itemsize": ctypes.sizeof(struct)}, align=True)
+
+
+SCENE_DTYPE = _np_dtype(L.oi_scene)
+ILLUM_DTYPE = _np_dtype(L.oi_illum)
+EXPOSURE_DTYPE = _np_dtype(L.oi_exposure)
+#: one facet (oi_facet) as a numpy record: normal (3,), area_m2, two_sided,
+#: albedo_diffuse, albedo_specular, shininess
+FACET_DTYPE = _np_dtype(L.oi_facet)
 assert SCENE_DTYPE.itemsize == ctypes.sizeof(L.oi_scene)
 assert ILLUM_DTYPE.itemsize == ctypes.sizeof(L.oi_illum)
 assert EXPOSURE_DTYPE.itemsize == ctypes.sizeof(L.oi_exposure)
@@ -157,6 +184,228 @@ def _mptr(m):
     return None if m is None else ctypes.addressof(m)
 
 
+# ------------------------------------------------------------------ shapes
+
+_FACET_REQUIRED = ("normal", "area_m2", "albedo_diffuse")
+_FACET_DEFAULTS = {"two_sided": 0, "albedo_specular": 0.0, "shininess": 0.0}
+_FACET_RULES = ("a nonzero finite normal, area_m2 in (0, 1e8], albedos in [0, 1] summing to "
+                "at most 1, shininess in [0, OI_SHININESS_MAX]")
+
+
+def shapes():
+    """Names of the built-in shapes (oi_shape_builtin), "sphere" first (the
+    scene's Lambertian sphere: no shape)."""
+    out = ["sphere"]
+    i = 0
+    while True:
+        p = _lib.oi_shape_builtin(i)
+        if not p:
+            return out
+        out.append(p.contents.name.decode())
+        i += 1
+
+
+class Shape:
+    """A target of flat facets for illuminate/expose (oi_shape).
+
+    Shape("box-wing") is a built-in shape (its facets in the library's static
+    storage); Shape(facets) copies the facets into a C array this object owns
+    (keep it, or pass it, while a call runs: the calls hold it). ``facets``
+    is one of
+      - a list of dicts, one per facet, with keys normal (3 numbers, body
+        frame), area_m2, albedo_diffuse, and optionally two_sided (False),
+        albedo_specular (0), shininess (0);
+      - a dict of columns with those keys (normal of shape (F, 3));
+      - a numpy array of FACET_DTYPE.
+    diffuse_from_scene: every facet's albedo_diffuse is the scene's
+    target_albedo (as the built-in "plate"). The library checks the facets
+    (oi_shape_check): a facet it rejects raises ValueError naming it.
+    Attributes: name, facets (a read-only FACET_DTYPE array), n_facets,
+    diffuse_from_scene, address (of the oi_shape, for the scene's shape field).
+    """
+
+    def __init__(self, facets, *, diffuse_from_scene=False, name=None):
+        if isinstance(facets, Shape):
+            diffuse_from_scene = diffuse_from_scene or facets.diffuse_from_scene
+            name = facets.name if name is None else name
+            facets = facets.facets
+        if isinstance(facets, str):
+            if facets == "sphere":
+                raise ValueError("target_shape: 'sphere' is no shape (the scene's sphere: pass "
+                                 "None or 'sphere' to illuminate/expose)")
+            p = _lib.oi_shape_find(facets.encode())
+            if not p:
+                raise ValueError(f"target_shape: no built-in shape {facets!r}; built-in: "
+                                 f"{', '.join(shapes())}, or facets")
+            self._struct = p.contents
+            self.address = ctypes.cast(p, ctypes.c_void_p).value
+            self.name = facets
+            n = self._struct.n_facets
+            buf = (L.oi_facet * n).from_address(
+                ctypes.cast(self._struct.facets, ctypes.c_void_p).value)
+            self.facets = np.frombuffer(buf, dtype=FACET_DTYPE, count=n).copy()
+            self.diffuse_from_scene = bool(self._struct.diffuse_from_scene)
+        else:
+            arr = _facet_array(facets)
+            self._c_facets = (L.oi_facet * len(arr))()
+            ctypes.memmove(self._c_facets, arr.ctypes.data, arr.nbytes)
+            self._struct = L.oi_shape()
+            self._struct.facets = ctypes.cast(self._c_facets, ctypes.POINTER(L.oi_facet))
+            self._struct.n_facets = len(arr)
+            self._struct.diffuse_from_scene = 1 if diffuse_from_scene else 0
+            self._name = None if name is None else str(name).encode()
+            self._struct.name = self._name
+            self.address = ctypes.addressof(self._struct)
+            self.name = name
+            self.facets = arr
+            self.diffuse_from_scene = bool(diffuse_from_scene)
+            _check_shape(self)
+        self.facets.flags.writeable = False
+        self.n_facets = len(self.facets)
+
+    def __repr__(self):
+        return (f"Shape({self.name!r}, {self.n_facets} facets"
+                f"{', diffuse_from_scene' if self.diffuse_from_scene else ''})")
+
+
+def shape(facets, *, diffuse_from_scene=False, name=None):
+    """A Shape (see Shape): a built-in name or facets."""
+    return Shape(facets, diffuse_from_scene=diffuse_from_scene, name=name)
+
+
+def _facet_array(facets):
+    """facets (list of dicts, dict of columns, FACET_DTYPE array) -> a
+    contiguous FACET_DTYPE array; ValueError/TypeError naming what is wrong."""
+    if isinstance(facets, np.ndarray) and facets.dtype.names:
+        missing = [k for k in FACET_DTYPE.names if k not in facets.dtype.names]
+        if missing:
+            raise ValueError(f"target_shape: facet array without field(s) {', '.join(missing)}")
+        arr = np.zeros(np.atleast_1d(facets).shape[0], dtype=FACET_DTYPE)
+        for k in FACET_DTYPE.names:
+            arr[k] = np.atleast_1d(facets)[k]
+    else:
+        if isinstance(facets, dict):
+            cols = dict(facets)
+            unknown = sorted(set(cols) - set(FACET_DTYPE.names))
+            if unknown:
+                raise ValueError(f"target_shape: unknown facet field(s) {', '.join(unknown)}; "
+                                 f"fields: {', '.join(FACET_DTYPE.names)}")
+            normal = _floats(cols.get("normal", []), "target_shape['normal']")
+            if normal.ndim == 1 and normal.shape == (3,):
+                normal = normal[None, :]
+            rows = [{"normal": nv} for nv in normal] if normal.ndim == 2 else None
+            if rows is None:
+                raise ValueError(f"target_shape['normal']: shape (F, 3), got {normal.shape}")
+            for k, v in cols.items():
+                if k == "normal":
+                    continue
+                v = np.atleast_1d(np.asarray(v))
+                if v.shape != (len(rows),):
+                    raise ValueError(f"target_shape[{k!r}]: one per facet ({len(rows)}), got "
+                                     f"shape {v.shape}")
+                for r, x in zip(rows, v):
+                    r[k] = x.item()
+            facets = rows
+        if isinstance(facets, (str, bytes)) or not hasattr(facets, "__len__"):
+            raise TypeError("target_shape: a built-in name, a Shape, a list of facet dicts, a "
+                            f"dict of facet columns or a FACET_DTYPE array; got "
+                            f"{type(facets).__name__}")
+        arr = np.zeros(len(facets), dtype=FACET_DTYPE)
+        for i, f in enumerate(facets):
+            if not isinstance(f, dict):
+                raise TypeError(f"target_shape[{i}]: a facet dict, got {type(f).__name__}")
+            unknown = sorted(set(f) - set(FACET_DTYPE.names))
+            if unknown:
+                raise ValueError(f"target_shape[{i}]: unknown facet field(s) "
+                                 f"{', '.join(unknown)}; fields: {', '.join(FACET_DTYPE.names)}")
+            for k in _FACET_REQUIRED:
+                if k not in f:
+                    raise ValueError(f"target_shape[{i}]: facet field {k!r} missing")
+            nv = _floats(f["normal"], f"target_shape[{i}]['normal']")
+            if nv.shape != (3,):
+                raise ValueError(f"target_shape[{i}]['normal']: 3 numbers, got shape {nv.shape}")
+            arr[i]["normal"] = nv
+            for k in ("area_m2", "albedo_diffuse", "albedo_specular", "shininess", "two_sided"):
+                v = f.get(k, _FACET_DEFAULTS.get(k))
+                if isinstance(v, (bool, np.bool_)) and k == "two_sided":
+                    v = int(v)
+                if isinstance(v, (str, bytes)) or not isinstance(
+                        v, (int, float, np.integer, np.floating)):
+                    raise TypeError(f"target_shape[{i}][{k!r}]: a number, got "
+                                    f"{type(v).__name__}")
+                if k == "two_sided" and v not in (0, 1):
+                    raise ValueError(f"target_shape[{i}]['two_sided']: True/False, got {v!r}")
+                arr[i][k] = v
+    if not 1 <= len(arr) <= L.OI_FACETS_MAX:
+        raise ValueError(f"target_shape: 1 to OI_FACETS_MAX = {L.OI_FACETS_MAX} facets, got "
+                         f"{len(arr)}")
+    return np.ascontiguousarray(arr)
+
+
+def _check_shape(sh):
+    """oi_shape_check; a rejected shape raises ValueError naming its first bad facet."""
+    st = _lib.oi_shape_check(ctypes.byref(sh._struct))
+    if st >= 0:
+        return
+    for i in range(sh._struct.n_facets):
+        one = L.oi_shape()
+        one.facets = ctypes.pointer(sh._c_facets[i])
+        one.n_facets = 1
+        one.diffuse_from_scene = sh._struct.diffuse_from_scene
+        if _lib.oi_shape_check(ctypes.byref(one)) < 0:
+            f = sh.facets[i]
+            raise ValueError(
+                f"target_shape[{i}]: the library rejects this facet ({status_name(st)}): "
+                f"normal {list(map(float, f['normal']))}, area_m2 {float(f['area_m2'])}, "
+                f"albedo_diffuse {float(f['albedo_diffuse'])}, albedo_specular "
+                f"{float(f['albedo_specular'])}, shininess {float(f['shininess'])}; it wants "
+                f"{_FACET_RULES}")
+    raise ValueError(f"target_shape: the library rejects the shape ({status_name(st)})")
+
+
+def _shape_of(spec, cache):
+    """None / 'sphere' -> None (the sphere); a name, a Shape or facets -> a Shape."""
+    if spec is None or (isinstance(spec, str) and spec in ("", "sphere")):
+        return None
+    if isinstance(spec, Shape):
+        return spec
+    if isinstance(spec, str):
+        if spec not in cache:
+            cache[spec] = Shape(spec)
+        return cache[spec]
+    return Shape(spec)
+
+
+def _is_per_row(spec):
+    """A sequence of per-row shapes: names, None or Shape objects (a list of
+    facet dicts is one shape)."""
+    if isinstance(spec, (str, dict, Shape)) or spec is None:
+        return False
+    if isinstance(spec, np.ndarray):
+        return spec.dtype.names is None
+    try:
+        items = list(spec)
+    except TypeError:
+        return False
+    return len(items) > 0 and all(x is None or isinstance(x, (str, Shape)) for x in items)
+
+
+def facet_brdf(facet, to_source, to_observer):
+    """oi_facet_brdf (1/sr) of one facet (a dict as for Shape, or a
+    FACET_DTYPE record) for directions to the source and the observer (body
+    frame, any length), elementwise over (N, 3) or (3,) directions."""
+    arr = _facet_array([facet] if isinstance(facet, dict) else np.atleast_1d(facet)[:1])
+    c = L.oi_facet.from_buffer_copy(arr.tobytes())
+    s = _vec(to_source, "to_source")
+    o = _vec(to_observer, "to_observer")
+    n = _n_rows(s, o)
+    s = np.ascontiguousarray(np.broadcast_to(s, (n, 3)))
+    o = np.ascontiguousarray(np.broadcast_to(o, (n, 3)))
+    R3 = ctypes.c_double * 3
+    return np.array([_lib.oi_facet_brdf(ctypes.byref(c), R3(*s[i]), R3(*o[i]))
+                     for i in range(n)])
+
+
 # ------------------------------------------------------------------ arrays
 
 
@@ -196,15 +445,34 @@ def _scalar_rows(v, n, name):
     return a
 
 
+def _attitudes(q):
+    """attitude_q: None, (4,) or (N, 4) quaternions (w, x, y, z)."""
+    if q is None:
+        return None
+    a = _floats(q, "attitude_q")
+    if a.shape == (4,):
+        a = a[None, :]
+    if a.ndim != 2 or a.shape[1] != 4:
+        raise ValueError(f"attitude_q: expected shape (N, 4) or (4,) (w, x, y, z), got {a.shape}")
+    return a
+
+
 def _scenes(sun, moon, target, observer, terms, earth_albedo, target_albedo,
-            target_radius_m, target_velocity=None, observer_velocity=None):
+            target_radius_m, target_velocity=None, observer_velocity=None,
+            target_shape=None, attitude_q=None, keep=None):
+    """The scenes' structured array. keep: a list that receives the Shape
+    objects the rows point to (the caller holds it while the C calls run)."""
     sun = _vec(sun, "sun")
     target = _vec(target, "target")
     moon = None if moon is None else _vec(moon, "moon")
     observer = None if observer is None else _vec(observer, "observer")
     tv = None if target_velocity is None else _vec(target_velocity, "target_velocity")
     ov = None if observer_velocity is None else _vec(observer_velocity, "observer_velocity")
-    n = _n_rows(sun, target, moon, observer, tv, ov)
+    q = _attitudes(attitude_q)
+    per_row = _is_per_row(target_shape)
+    row_shapes = list(target_shape) if per_row else None
+    n = _n_rows(sun, target, moon, observer, tv, ov, q,
+                None if row_shapes is None else np.empty((len(row_shapes), 0)))
     d = L.oi_scene()
     _lib.oi_scene_defaults(ctypes.addressof(d))
     sc = np.zeros(n, dtype=SCENE_DTYPE)  # velocities not given stay 0: at rest
@@ -234,6 +502,20 @@ def _scenes(sun, moon, target, observer, terms, earth_albedo, target_albedo,
                                        else target_albedo, n, "target_albedo")
     sc["target_radius_m"] = _scalar_rows(d.target_radius_m if target_radius_m is None
                                          else target_radius_m, n, "target_radius_m")
+    cache = {}
+    if per_row:
+        if len(row_shapes) != n:
+            raise ValueError(f"target_shape: expected one per row ({n}), got {len(row_shapes)}")
+        held = [_shape_of(x, cache) for x in row_shapes]
+        sc["shape"] = [0 if k is None else k.address for k in held]
+    else:
+        held = [_shape_of(target_shape, cache)]
+        sc["shape"] = 0 if held[0] is None else held[0].address
+    if keep is not None:
+        keep.extend(held)
+    elif any(k is not None for k in held):
+        raise ValueError("target_shape: internal: a shape without a keep list")
+    sc["attitude_q"] = 0.0 if q is None else q  # all zero: the identity
     return sc
 
 
@@ -277,7 +559,8 @@ def _illuminate_raw(sc, m):
 
 
 def illuminate(sun, moon, target, observer=None, *, terms=None, earth_albedo=None,
-               target_albedo=None, target_radius_m=None, model=None):
+               target_albedo=None, target_radius_m=None, target_shape=None, attitude_q=None,
+               model=None):
     """Light on the target from Sun, Earth and Moon, and what the observer sees.
 
     Given:
@@ -288,15 +571,26 @@ def illuminate(sun, moon, target, observer=None, *, terms=None, earth_albedo=Non
                        mask (OI_TERM_*), or one of these per row
       earth_albedo, target_albedo, target_radius_m   scalars or (N,); None: the C
                        defaults (oi_scene_defaults: 0.30, 0.2, 1.0 m)
+      target_shape     None or 'sphere' (the Lambertian sphere of target_radius_m
+                       and target_albedo), a built-in shape's name (shapes():
+                       'plate', 'box-wing', 'cylinder'), a Shape, facets (as
+                       Shape takes them), or a sequence of names / Shapes / None,
+                       one per row. ValueError for an unknown name or a facet the
+                       library rejects (naming it)
+      attitude_q       None (identity) or quaternions (w, x, y, z) body -> input
+                       frame, (4,) or (N, 4); a norm off 1 by more than 1e-6 (NaN
+                       too) is the row's status ERR_SHAPE, else it is normalised
       model            None (defaults) or dict of oi_model fields, e.g.
                        {"earth_model": "lambert", "limb_darkening": "darkened"}
     Returns: dict of arrays, one entry per oi_illum field (nested shadow fields as
       shadow_*; aliases sun_fraction, sun_fraction_ld, sun_fraction_atm;
-      dir_* of shape (N, 3)), plus status (int32) and status_name.
+      dir_* of shape (N, 3); flux_specular, the facets' specular part of
+      flux_obs), plus status (int32) and status_name.
     """
     m = _model(model)
+    keep = []
     sc = _scenes(sun, moon, target, observer, terms, earth_albedo, target_albedo,
-                 target_radius_m)
+                 target_radius_m, target_shape=target_shape, attitude_q=attitude_q, keep=keep)
     res, status = _illuminate_raw(sc, m)
     return _flatten(res, status)
 
@@ -381,8 +675,9 @@ def _exposure_dict(ex, st):
 
 
 def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None,
-           target_albedo=None, target_radius_m=None, model=None, fill=None, snr_min=None,
-           sky=None, target_velocity=None, observer_velocity=None):
+           target_albedo=None, target_radius_m=None, target_shape=None, attitude_q=None,
+           model=None, fill=None, snr_min=None, sky=None, target_velocity=None,
+           observer_velocity=None):
     """oi_illuminate then oi_expose_scene for each row: the suggested exposure.
 
     camera: a built-in camera name (see cameras()), a dict as camera() returns
@@ -395,6 +690,8 @@ def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None
     target_velocity, observer_velocity: (N, 3), (3,) or None (at rest), km/s in
     the positions' frame: the target's angular rate and trail (the planner's
     target_v*, observer_v* columns; docs/camera.md, "Motion").
+    target_shape, attitude_q: as illuminate(); a shape whose specular part is
+    more than half of flux_obs sets OI_FLAG_GLINT ('glint').
     Returns the dict of illuminate() plus the oi_exposure fields (exposure_s,
     gain, time_index, gain_index, signal_e, background_e, peak_e, saturation_e,
     fill, snr, sun_angle_rad, flags, background_w_m2_sr), flag_names, expose_status and
@@ -409,8 +706,10 @@ def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None
     cp, _ = _camera_ptr(camera)
     m = _model(model)
     g = _goal(fill, snr_min, sky)
+    keep = []
     sc = _scenes(sun, moon, target, observer, terms, earth_albedo, target_albedo,
-                 target_radius_m, target_velocity, observer_velocity)
+                 target_radius_m, target_velocity, observer_velocity, target_shape=target_shape,
+                 attitude_q=attitude_q, keep=keep)
     res, status = _illuminate_raw(sc, m)
     n = sc.shape[0]
     ex = np.empty(n, dtype=EXPOSURE_DTYPE)  # the batch writes every row

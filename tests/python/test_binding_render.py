@@ -128,10 +128,39 @@ def test_obj_facet_model_flat_face(tmp_path, monkeypatch):
     got = L["sun"].sum() * meta["subpix_sr"]
     # the face is h closer than the centre
     want = 0.3 / math.pi * r["e_sun"] * (2 * h) ** 2 / (d * 1000.0 - h) ** 2
-    # the body +x axis points at the Sun, so the +x face is seen face-on
+    # the body +x axis points at the Sun, so the +x face is seen face-on (the
+    # cube above is wound inwards throughout: the renderer turns it outwards)
     assert abs(got / want - 1) < 3e-3, f"want {want:.17g} got {got:.17g}"
+    # every drawn pixel has the runtime's radiance of a Lambertian face, albedo/pi E cos(i)
+    lit = L["sun"][L["sun"] > 0]
+    cos_i = au / math.hypot(au, 42164.0)
+    assert np.allclose(lit, 0.3 / math.pi * r["e_sun"] * cos_i, rtol=1e-12, atol=0)
     with pytest.raises(ValueError, match="no vertices or faces"):
         F.load_obj(str(_empty(tmp_path)))
+
+
+def test_attitude_quaternion_is_the_rotation():
+    """facets.attitude_quaternion against the matrix it comes from (the
+    textbook quaternion -> matrix formula), for the nadir/Sun attitude and
+    for rotations near each of Shepperd's four branches."""
+    F = pytest.importorskip("examples.render.facets")
+
+    def matrix(q):
+        w, x, y, z = q
+        return np.array([
+            [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+            [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+            [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
+    mats = [F.nadir_sun_attitude(np.array([0.0, 42164.0, 0.0]), np.array([1.5e8, 0.0, 0.0])),
+            F.nadir_sun_attitude(np.array([3000.0, -5000.0, 4000.0]), np.array([1e8, 9e7, 3e7]))]
+    for q in np.random.default_rng(4).normal(size=(40, 4)):
+        mats.append(matrix(q / np.linalg.norm(q)))
+    for axis in np.eye(3):  # half turns: w = 0, one of the vector branches
+        mats.append(matrix(np.concatenate([[0.0], axis])))
+    for m in mats:
+        q = F.attitude_quaternion(m)
+        assert abs(np.linalg.norm(q) - 1) < 1e-15
+        assert np.allclose(matrix(q), m, atol=1e-14)
 
 
 def _empty(tmp_path):

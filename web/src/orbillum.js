@@ -75,7 +75,8 @@ function parseReal(s) {
 
 const COLUMNS = ['id', 'sun_x', 'sun_y', 'sun_z', 'target_x', 'target_y', 'target_z',
   'moon_x', 'moon_y', 'moon_z', 'observer_x', 'observer_y', 'observer_z', 'terms',
-  'earth_albedo', 'target_albedo', 'target_radius_m', 'camera', 'atmosphere'];
+  'earth_albedo', 'target_albedo', 'target_radius_m', 'camera', 'atmosphere', 'target_shape',
+  'q_w', 'q_x', 'q_y', 'q_z'];
 
 /** The planner's output columns, in its order. */
 export const PLAN_COLUMNS = ['id', 'status', 'sun_fraction', 'sun_fraction_atm', 'e_sun',
@@ -175,6 +176,22 @@ export class Orbillum {
     return ptr === 0 ? null : this.cameraList.find((c) => c.ptr === ptr);
   }
 
+  /**
+   * The shape of a target_shape name as the planner reads it: {ptr} with ptr 0 for '' and
+   * 'sphere' (the scene's sphere), a built-in shape's address (oi_shape_find); null if unknown.
+   * (The planner's --shapes files are not read here.)
+   */
+  findShape(name) {
+    if (name === '' || name === 'sphere') return { ptr: 0 };
+    const bytes = new TextEncoder().encode(name);
+    if (bytes.length > 255) return null;
+    const b = new Uint8Array(this.memory.buffer);
+    b.set(bytes, this.p.name);
+    b[this.p.name + bytes.length] = 0;
+    const ptr = this.x.oi_shape_find(this.p.name);
+    return ptr === 0 ? null : { ptr };
+  }
+
   statusName(st) { return this.cString(this.x.oi_status_name(st)); }
 
   /** Flag names of a mask, lowest bit first, joined by '+' (as the planner prints them). */
@@ -200,6 +217,9 @@ export class Orbillum {
     for (const f of ['earth_albedo', 'target_albedo', 'target_radius_m']) {
       if (scene[f] !== undefined) this.setR(p, S, f, scene[f]);
     }
+    // a shape: the address findShape() gives (wasm32 pointers are 32-bit); its attitude (w, x, y, z)
+    if (scene.shape_ptr) this.setU(p, S, 'shape', scene.shape_ptr);
+    if (scene.attitude_q) for (let k = 0; k < 4; k++) this.setR(p, S, 'attitude_q', scene.attitude_q[k], k);
     return p;
   }
 
@@ -231,7 +251,7 @@ export class Orbillum {
     };
     for (const f of ['e_sun', 'e_earth', 'e_moon', 'earth_theta', 'earth_h_km', 'earth_phi',
       'earth_psi', 'moon_sun_fraction', 'phase_sun', 'phase_earth', 'phase_moon', 'flux_sun',
-      'flux_earth', 'flux_moon', 'flux_obs', 'mag_v', 'range_km']) {
+      'flux_earth', 'flux_moon', 'flux_obs', 'mag_v', 'range_km', 'flux_specular']) {
       out[f] = this.getR(p, I, f);
     }
     for (const f of ['dir_sun', 'dir_earth', 'dir_moon']) out[f] = this.get3(p, I, f);
@@ -429,6 +449,31 @@ export class Orbillum {
     }
     if (atm !== 0 && atm !== 1) return row;
     const model = { no_atmosphere: atm === 0 ? 1 : 0 };
+    // the target's shape and attitude, as examples/oi_plan/batch.c reads them
+    const shapeName = field('target_shape');
+    if (shapeName !== null) {
+      const sh = this.findShape(shapeName);
+      if (!sh) { row.status = this.statusName(C.OI_ERR_SHAPE); return row; }
+      if (sh.ptr) scene.shape_ptr = sh.ptr;
+    }
+    if (col.q_w >= 0) {
+      const q = [];
+      for (const c of ['q_w', 'q_x', 'q_y', 'q_z']) {
+        const [st, x] = parseReal(field(c));
+        if (st < 0) return row;
+        if (st === 0) q.push(x);
+      }
+      if (q.length !== 0 && q.length !== 4) return row;
+      if (q.length === 4) {
+        const norm = Math.sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+        // as the planner and the library: checked (and read) with a facet shape only
+        if (scene.shape_ptr && !(Math.abs(norm - 1) <= 1e-6)) {
+          row.status = this.statusName(C.OI_ERR_SHAPE);
+          return row;
+        }
+        scene.attitude_q = q;
+      }
+    }
     let camera = defaultCamera;
     const cs = field('camera');
     if (cs !== null && cs !== '') {
