@@ -31,6 +31,10 @@
  *                        declarations stay (the field and the constant
  *                        belong to the model's ABI), refused at run time
  *                        instead. docs/shadow.md.
+ *   OI_NO_OBLATE         no WGS-84 ellipsoid (src/oblate.c removed): a model
+ *                        with earth_shape = OI_EARTH_WGS84 is rejected with
+ *                        OI_ERR_MODEL (src/model.c); the field and its
+ *                        constants stay, as with OI_NO_LIMB_DARKENING.
  * An option that removes a feature removes its declarations too, so code that
  * still uses the feature fails to compile.
  */

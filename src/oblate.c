@@ -1,0 +1,401 @@
+/* SPDX-License-Identifier: MIT */
+/* oblate.c: the WGS-84 ellipsoid as the Earth's occulter (oi_model.earth_shape
+ * = OI_EARTH_WGS84): inside/outside, its geocentric radius, the angular radius
+ * of its silhouette towards a direction, and the visible fraction of a disc
+ * (the Sun's, the Moon's) behind its elliptic silhouette cone and, optionally,
+ * a second spherical occulter. Internal, declared in src/oi_internal.h;
+ * removed with OI_NO_OBLATE. Model, method and measured accuracy:
+ * docs/shadow.md section 10. */
+#include "oi_internal.h"
+
+#ifndef OI_NO_OBLATE
+
+/* (a/b)^2 - 1 = f (2 - f) / (1 - f)^2 for the WGS-84 flattening
+ * (NIMA TR8350.2, 3rd ed., 2000, table 3.1), a constant expression. */
+#define WGS84_F (1.0 / OI_WGS84_INV_FLATTENING)
+#define K2M1 ((oi_real)(WGS84_F * (2.0 - WGS84_F) / ((1.0 - WGS84_F) * (1.0 - WGS84_F))))
+
+/* x^2 + y^2 + (a/b)^2 z^2 over a^2: > 1 outside the ellipsoid of
+ * equatorial radius a (the frame's z axis the rotation axis). */
+static oi_real scaled_norm2(const oi_real p[3], oi_real a)
+{
+    const oi_real x = p[0] / a, y = p[1] / a, z = p[2] / a;
+    return x * x + y * y + z * z + K2M1 * z * z;
+}
+
+int oi__oblate_outside(const oi_real p[3], oi_real a)
+{
+    return scaled_norm2(p, a) > (oi_real)1;
+}
+
+oi_real oi__oblate_geocentric_radius(const oi_real p[3], oi_real a)
+{
+    return oi__norm_bounded(p) / OI_SQRT(scaled_norm2(p, a));
+}
+
+/* Distance along the unit direction u from o (outside) to where the ray
+ * first meets the ellipsoid, or -1 when it misses: z scaled by a/b, the
+ * ray o' + s u' against the sphere of radius a, s^2 |u'|^2 + 2 s o'.u' +
+ * |o'|^2 - a^2 = 0, the near root in the form without cancellation. */
+oi_real oi__oblate_ray_hit(const oi_real o[3], const oi_real u[3], oi_real a)
+{
+    const oi_real k2 = (oi_real)1 + K2M1;
+    const oi_real uu = u[0] * u[0] + u[1] * u[1] + k2 * u[2] * u[2];
+    const oi_real ou = o[0] * u[0] + o[1] * u[1] + k2 * o[2] * u[2];
+    const oi_real n = OI_SQRT(scaled_norm2(o, a)) * a; /* |o'| */
+    const oi_real c = (n - a) * (n + a), d = ou * ou - uu * c;
+    if (!(ou < (oi_real)0) || !(d >= (oi_real)0) || !(c > (oi_real)0)) return (oi_real)-1;
+    return c / (-ou + OI_SQRT(d));
+}
+
+/*
+ * A cone of directions u from the point, in the quadratic form
+ *   inside  <=>  (w.u)^2 - c (u.u + e u_z^2) >= 0  and  sigma (w.u) < 0,
+ * expressed in the frame (s, eu, ev) of the back disc: u = s + x eu + y ev
+ * (gnomonic coordinates about the disc's centre). m: the form's entries
+ * ss, su, sv, uu, uv, vv; l: sigma (w.s, w.eu, w.ev).
+ * The ellipsoid seen from p (p outside): scaling z by k = a/b maps it to the
+ * sphere of radius a, p to p' = (x, y, k z) and u to u' = (u_x, u_y, k u_z);
+ * u meets it when (p'.u')^2 >= (|p'|^2 - a^2) |u'|^2 with p'.u' < 0, and
+ * p'.u' = w.u for w = (x, y, k^2 z): divided by |p'|^2, w = (x, y, k^2 z)/|p'|,
+ * c = 1 - a^2/|p'|^2, e = k^2 - 1, sigma = 1. A sphere of unit direction d
+ * and apparent radius r: w = d, c = cos^2 r, e = 0, sigma = -1.
+ */
+typedef struct {
+    oi_real m[6];
+    oi_real l[3];
+} cone;
+
+static void cone_in_frame(const oi_real w[3], oi_real c, oi_real e, oi_real sigma,
+                          const oi_real f[3][3], cone *k)
+{
+    const oi_real ws = oi__dot(w, f[0]), wu = oi__dot(w, f[1]), wv = oi__dot(w, f[2]);
+    const oi_real ce = c * e;
+    k->m[0] = ws * ws - c - ce * f[0][2] * f[0][2];
+    k->m[1] = ws * wu - ce * f[0][2] * f[1][2];
+    k->m[2] = ws * wv - ce * f[0][2] * f[2][2];
+    k->m[3] = wu * wu - c - ce * f[1][2] * f[1][2];
+    k->m[4] = wu * wv - ce * f[1][2] * f[2][2];
+    k->m[5] = wv * wv - c - ce * f[2][2] * f[2][2];
+    k->l[0] = sigma * ws;
+    k->l[1] = sigma * wu;
+    k->l[2] = sigma * wv;
+}
+
+/* The ellipsoid's cone seen from p (outside), world coordinates. */
+static void earth_cone_world(const oi_real p[3], oi_real a, oi_real w[3], oi_real *c)
+{
+    const oi_real n = OI_SQRT(scaled_norm2(p, a)); /* |p'| / a > 1 */
+    const oi_real inv = (oi_real)1 / (n * a);
+    w[0] = p[0] * inv;
+    w[1] = p[1] * inv;
+    w[2] = p[2] * ((oi_real)1 + K2M1) * inv;
+    *c = (n - (oi_real)1) * (n + (oi_real)1) / (n * n);
+}
+
+/* Largest |x| a root may take: beyond every chord (|x| <= tan r < 1e16). */
+#define FAR_X OI_R(1e30)
+
+/*
+ * The part of the chord x in [-h, h] at height y inside the cone: 1 with
+ * [*xa, *xb] (xa < xb), or 0 when none. Along the line the form is
+ * alpha x^2 + 2 beta x + gamma, the front condition l0 + l1 x < 0; the
+ * point where the line crosses the plane w.u = 0 has a negative form, so
+ * the front part of {form >= 0} is one interval.
+ */
+static int chord_cover(const cone *k, oi_real y, oi_real h, oi_real *xa, oi_real *xb)
+{
+    const oi_real alpha = k->m[3];
+    const oi_real beta = k->m[1] + y * k->m[4];
+    const oi_real gamma = k->m[0] + y * ((oi_real)2 * k->m[2] + y * k->m[5]);
+    const oi_real l0 = k->l[0] + y * k->l[2], l1 = k->l[1];
+    oi_real lo = -h, hi = h, r1, r2, disc, q, t;
+    /* the front half-line */
+    if (l1 > (oi_real)0) {
+        t = -l0 / l1;
+        if (t < hi) hi = t;
+    } else if (l1 < (oi_real)0) {
+        t = -l0 / l1;
+        if (t > lo) lo = t;
+    } else if (!(l0 < (oi_real)0)) {
+        return 0;
+    }
+    if (!(lo < hi)) return 0;
+    disc = beta * beta - alpha * gamma;
+    if (alpha == (oi_real)0) {
+        /* linear: 2 beta x + gamma >= 0 */
+        if (beta == (oi_real)0) {
+            if (!(gamma >= (oi_real)0)) return 0;
+        } else {
+            t = -gamma / ((oi_real)2 * beta);
+            if (beta > (oi_real)0) {
+                if (t > lo) lo = t;
+            } else if (t < hi) {
+                hi = t;
+            }
+        }
+    } else if (!(disc >= (oi_real)0)) {
+        if (alpha < (oi_real)0) return 0; /* the form negative on the whole line */
+    } else {
+        q = -(beta + (beta < (oi_real)0 ? -OI_SQRT(disc) : OI_SQRT(disc)));
+        if (q == (oi_real)0) {
+            r1 = r2 = (oi_real)0;
+        } else {
+            r1 = q / alpha;
+            r2 = gamma / q;
+            if (r1 > r2) {
+                t = r1;
+                r1 = r2;
+                r2 = t;
+            }
+        }
+        if (alpha < (oi_real)0) {
+            if (r1 > lo) lo = r1;
+            if (r2 < hi) hi = r2;
+        } else if (l1 > (oi_real)0 || (l1 == (oi_real)0 && r1 - lo >= hi - r2)) {
+            /* the front nappe is the side below r1 */
+            if (r1 < hi) hi = r1;
+        } else if (r2 > lo) {
+            lo = r2;
+        }
+    }
+    if (!(lo < hi)) return 0;
+    *xa = lo;
+    *xb = hi;
+    return 1;
+}
+
+/* Solid angle per unit y of the chord x in [0, x] at height y, the
+ * gnomonic element dx dy / (1 + x^2 + y^2)^(3/2) integrated over x. */
+static oi_real chord_h(oi_real x, oi_real yy)
+{
+    return x / (yy * OI_SQRT(yy + x * x));
+}
+
+/* What the chord at height y keeps visible (solid angle per unit y). */
+static oi_real chord_visible(const cone *k, int n, oi_real y, oi_real h)
+{
+    const oi_real yy = (oi_real)1 + y * y;
+    oi_real a[2], b[2], vis = (oi_real)2 * chord_h(h, yy);
+    int i, nc = 0;
+    for (i = 0; i < n; ++i)
+        if (chord_cover(&k[i], y, h, &a[nc], &b[nc])) ++nc;
+    if (nc == 2 && a[1] < b[0] && a[0] < b[1]) {
+        /* overlapping: one union */
+        a[0] = a[0] < a[1] ? a[0] : a[1];
+        b[0] = b[0] > b[1] ? b[0] : b[1];
+        nc = 1;
+    }
+    for (i = 0; i < nc; ++i) vis -= chord_h(b[i], yy) - chord_h(a[i], yy);
+    return vis > (oi_real)0 ? vis : (oi_real)0;
+}
+
+/* The cone's form on the disc's limb, x = t cos th, y = t sin th. */
+static oi_real limb_form(const cone *k, oi_real t, oi_real th)
+{
+    oi_real s, c;
+    OI_SINCOS(th, &s, &c);
+    return k->m[0] + t * ((oi_real)2 * (k->m[1] * c + k->m[2] * s) +
+                          t * (k->m[3] * c * c + (oi_real)2 * k->m[4] * c * s + k->m[5] * s * s));
+}
+
+#define N_LIMB_SAMPLES 32
+#define MAX_BREAKS 24
+#define ROOT_MAX_IT 60
+
+/* psi in [-pi/2, pi/2] of the chord through the limb point at angle th. */
+static oi_real limb_psi(oi_real th)
+{
+    oi_real s, c;
+    OI_SINCOS(th, &s, &c);
+    return OI_ATAN2(s, OI_FABS(c));
+}
+
+static void add_break(oi_real *brk, int *nb, oi_real psi)
+{
+    if (*nb < MAX_BREAKS && psi > -OI_HALF_PI_R && psi < OI_HALF_PI_R) brk[(*nb)++] = psi;
+}
+
+/* Breaks of the chord integrand in psi (y = t sin psi) due to cone k: where
+ * its boundary crosses the disc's limb (sign changes of limb_form over
+ * N_LIMB_SAMPLES angles, each refined by the Illinois variant of regula
+ * falsi), and where a chord is tangent to it (the discriminant of the form
+ * along the chord, a quadratic in y, vanishes). */
+static void cone_breaks(const cone *k, oi_real t, oi_real *brk, int *nb)
+{
+    const oi_real step = (oi_real)2 * OI_PI_R / (oi_real)N_LIMB_SAMPLES;
+    oi_real f0 = limb_form(k, t, (oi_real)0), a2, b2, c2, d, q, y;
+    int i, it;
+    for (i = 0; i < N_LIMB_SAMPLES; ++i) {
+        oi_real lo = step * (oi_real)i, hi = step * (oi_real)(i + 1);
+        oi_real flo = f0, fhi = limb_form(k, t, hi), x = lo, fx;
+        int side = 0;
+        f0 = fhi;
+        if (!((flo < (oi_real)0 && fhi >= (oi_real)0) || (flo >= (oi_real)0 && fhi < (oi_real)0)))
+            continue;
+        for (it = 0; it < ROOT_MAX_IT && hi - lo > OI_R(4e-16) * (oi_real)8; ++it) {
+            x = (lo * fhi - hi * flo) / (fhi - flo);
+            if (!(x > lo && x < hi)) x = OI_R(0.5) * (lo + hi);
+            fx = limb_form(k, t, x);
+            if ((fx < (oi_real)0) == (flo < (oi_real)0)) {
+                lo = x;
+                flo = fx;
+                if (side == -1) fhi *= OI_R(0.5);
+                side = -1;
+            } else {
+                hi = x;
+                fhi = fx;
+                if (side == 1) flo *= OI_R(0.5);
+                side = 1;
+            }
+            if (fx == (oi_real)0) break;
+        }
+        add_break(brk, nb, limb_psi(x));
+    }
+    /* chords tangent to the boundary: (m_su + y m_uv)^2 - m_uu (m_ss + 2 y
+     * m_sv + y^2 m_vv) = a2 y^2 + 2 b2 y + c2 = 0 */
+    a2 = k->m[4] * k->m[4] - k->m[3] * k->m[5];
+    b2 = k->m[1] * k->m[4] - k->m[3] * k->m[2];
+    c2 = k->m[1] * k->m[1] - k->m[3] * k->m[0];
+    d = b2 * b2 - a2 * c2;
+    if (!(d >= (oi_real)0)) return;
+    q = -(b2 + (b2 < (oi_real)0 ? -OI_SQRT(d) : OI_SQRT(d)));
+    if (q == (oi_real)0) return;
+    y = c2 / q;
+    if (OI_FABS(y) < t) add_break(brk, nb, OI_ATAN2(y, OI_SQRT((t - y) * (t + y))));
+    if (a2 != (oi_real)0) {
+        y = q / a2;
+        if (OI_FABS(y) < t) add_break(brk, nb, OI_ATAN2(y, OI_SQRT((t - y) * (t + y))));
+    }
+}
+
+/* 8-point Gauss-Legendre rule on [0, 1], nodes x and 1 - x with one weight
+ * (the values of src/cap_segment.c). */
+static const oi_real gl8[4][2] = {
+    {OI_R(0.0198550717512318841582), OI_R(0.0506142681451881295763)},
+    {OI_R(0.101666761293186630204), OI_R(0.111190517226687235272)},
+    {OI_R(0.237233795041835507091), OI_R(0.156853322938943643669)},
+    {OI_R(0.40828267875217509753), OI_R(0.181341891689180991483)},
+};
+
+/* Panels per piece between breaks (each an 8-point rule in u, psi = p0 +
+ * (p1 - p0)(1 - cos pi u)/2 clustering the nodes at both breaks). */
+#define PANELS 8
+
+/* The integral over psi in [p0, p1] of the visible chord times dy/dpsi. */
+static oi_real piece(const cone *k, int n, oi_real t, oi_real p0, oi_real p1)
+{
+    const oi_real hw = OI_R(0.5) * (p1 - p0), du = (oi_real)1 / (oi_real)PANELS;
+    oi_real sum = (oi_real)0;
+    int pn, i, j;
+    for (pn = 0; pn < PANELS; ++pn) {
+        for (i = 0; i < 4; ++i) {
+            for (j = 0; j < 2; ++j) {
+                const oi_real x = j ? (oi_real)1 - gl8[i][0] : gl8[i][0];
+                const oi_real u = du * ((oi_real)pn + x);
+                oi_real su, cu, sp, cp, psi;
+                OI_SINCOS(OI_PI_R * u, &su, &cu);
+                psi = p0 + hw * ((oi_real)1 - cu);
+                OI_SINCOS(psi, &sp, &cp);
+                sum += gl8[i][1] * chord_visible(k, n, t * sp, t * cp) * t * cp * hw * OI_PI_R *
+                       su;
+            }
+        }
+    }
+    return sum * du;
+}
+
+/* An orthonormal frame (s, eu, ev): eu towards toward's component normal to
+ * s (any normal when there is none). */
+static void disc_frame(const oi_real s[3], const oi_real toward[3], oi_real f[3][3])
+{
+    oi_real d = oi__dot(toward, s), u[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        f[0][i] = s[i];
+        u[i] = toward[i] - d * s[i];
+    }
+    if (!(oi__unit_bounded(u, u) > (oi_real)0)) {
+        const oi_real e[3] = {(oi_real)1, (oi_real)0, (oi_real)0};
+        const oi_real g[3] = {(oi_real)0, (oi_real)1, (oi_real)0};
+        oi__cross(s, (s[0] * s[0] < OI_R(0.5)) ? e : g, u);
+        (void)oi__unit_bounded(u, u);
+    }
+    for (i = 0; i < 3; ++i) f[1][i] = u[i];
+    oi__cross(s, u, f[2]);
+}
+
+/*
+ * Visible fraction of the uniform disc of unit direction s and apparent
+ * radius r (< pi/4) seen from p (outside the ellipsoid of equatorial radius
+ * a), behind the ellipsoid and (mo not NULL) a sphere of unit direction mo
+ * and apparent radius rm. The solid angle the occulters leave, as chords
+ * of the gnomonic disc (closed form along each chord), integrated over
+ * y = tan(r) sin(psi) piecewise between the breaks (cone_breaks) by
+ * Gauss-Legendre; over the disc's solid angle 4 pi sin^2(r/2); in [0, 1].
+ */
+oi_real oi__oblate_visible(const oi_real s[3], oi_real r, const oi_real p[3], oi_real a,
+                           const oi_real mo[3], oi_real rm)
+{
+    oi_real f[3][3], w[3], c, t, brk[MAX_BREAKS], anti[3], sum = (oi_real)0, prev, cm;
+    cone k[2];
+    int n = 1, nb = 0, i, j;
+    anti[0] = -p[0];
+    anti[1] = -p[1];
+    anti[2] = -p[2];
+    disc_frame(s, anti, f);
+    earth_cone_world(p, a, w, &c);
+    cone_in_frame(w, c, K2M1, (oi_real)1, (const oi_real(*)[3])f, &k[0]);
+    if (mo != NULL) {
+        cm = OI_COS(rm);
+        cone_in_frame(mo, cm * cm, (oi_real)0, (oi_real)-1, (const oi_real(*)[3])f, &k[1]);
+        n = 2;
+    }
+    t = OI_TAN(r);
+    for (i = 0; i < n; ++i) cone_breaks(&k[i], t, brk, &nb);
+    /* sort the breaks (insertion; at most MAX_BREAKS) */
+    for (i = 1; i < nb; ++i) {
+        const oi_real v = brk[i];
+        for (j = i; j > 0 && brk[j - 1] > v; --j) brk[j] = brk[j - 1];
+        brk[j] = v;
+    }
+    prev = -OI_HALF_PI_R;
+    for (i = 0; i <= nb; ++i) {
+        const oi_real next = i < nb ? brk[i] : OI_HALF_PI_R;
+        if (next > prev) sum += piece(k, n, t, prev, next);
+        prev = next;
+    }
+    return oi__clamp(sum / ((oi_real)4 * OI_PI_R * oi__sin_half_sq(r)), (oi_real)0, (oi_real)1);
+}
+
+/* Angular radius of the ellipsoid's silhouette seen from p, along the great
+ * circle from the nadir -p towards s: the root tan(theta) of the cone's form
+ * on cos(theta) n + sin(theta) e (n = -p/|p|, e the unit normal towards s),
+ * m_ee tau^2 + 2 m_ne tau + m_nn = 0 with m_nn > 0 (the nadir inside). */
+oi_real oi__oblate_radius_towards(const oi_real p[3], oi_real a, const oi_real s[3])
+{
+    oi_real f[3][3], w[3], c, n[3], mnn, mne, mee, d, tau, wn, we;
+    int i;
+    const oi_real dp = oi__norm_bounded(p);
+    for (i = 0; i < 3; ++i) n[i] = -p[i] / dp;
+    disc_frame(n, s, f);
+    earth_cone_world(p, a, w, &c);
+    wn = oi__dot(w, f[0]);
+    we = oi__dot(w, f[1]);
+    mnn = wn * wn - c * ((oi_real)1 + K2M1 * f[0][2] * f[0][2]);
+    mne = wn * we - c * K2M1 * f[0][2] * f[1][2];
+    mee = we * we - c * ((oi_real)1 + K2M1 * f[1][2] * f[1][2]);
+    d = mne * mne - mee * mnn;
+    if (!(d > (oi_real)0)) d = (oi_real)0;
+    /* the positive root (the roots' product m_nn / m_ee < 0), in the form
+     * without cancellation; as an angle, atan2 of positive parts */
+    if (mne >= (oi_real)0) {
+        tau = -mee;
+        return OI_ATAN2(mne + OI_SQRT(d), tau > (oi_real)0 ? tau : (oi_real)0);
+    }
+    return OI_ATAN2(mnn, -mne + OI_SQRT(d));
+}
+
+#else
+typedef int oi__oblate_removed; /* ISO C forbids an empty translation unit */
+#endif /* OI_NO_OBLATE */
