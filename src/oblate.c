@@ -200,7 +200,7 @@ static oi_real limb_form(const cone *k, oi_real t, oi_real th)
 }
 
 #define N_LIMB_SAMPLES 32
-#define MAX_BREAKS 24
+#define MAX_BREAKS 12
 #define ROOT_MAX_IT 60
 
 /* psi in [-pi/2, pi/2] of the chord through the limb point at angle th. */
