@@ -66,31 +66,41 @@ typedef struct {
     oi_real l[3];
 } cone;
 
-static void cone_in_frame(const oi_real w[3], oi_real c, oi_real e, oi_real sigma,
+static void cone_in_frame(const oi_real w[3], oi_real c, oi_real e, oi_real s2, oi_real sigma,
                           const oi_real f[3][3], cone *k)
 {
-    const oi_real ws = oi__dot(w, f[0]), wu = oi__dot(w, f[1]), wv = oi__dot(w, f[2]);
+    /* (w.a)(w.b) - c a.b = -(w x a).(w x b) + (|w|^2 - c) a.b: the cross
+     * products are small where the form is (directions near the cone's
+     * boundary, far from its axis ... or near it), without the cancellation
+     * of two numbers near 1; s2 = |w|^2 - c is formed by the caller */
+    oi_real x[3][3];
     const oi_real ce = c * e;
-    k->m[0] = ws * ws - c - ce * f[0][2] * f[0][2];
-    k->m[1] = ws * wu - ce * f[0][2] * f[1][2];
-    k->m[2] = ws * wv - ce * f[0][2] * f[2][2];
-    k->m[3] = wu * wu - c - ce * f[1][2] * f[1][2];
-    k->m[4] = wu * wv - ce * f[1][2] * f[2][2];
-    k->m[5] = wv * wv - c - ce * f[2][2] * f[2][2];
-    k->l[0] = sigma * ws;
-    k->l[1] = sigma * wu;
-    k->l[2] = sigma * wv;
+    int i;
+    for (i = 0; i < 3; ++i) oi__cross(w, f[i], x[i]);
+    k->m[0] = s2 - oi__dot(x[0], x[0]) - ce * f[0][2] * f[0][2];
+    k->m[1] = -oi__dot(x[0], x[1]) - ce * f[0][2] * f[1][2];
+    k->m[2] = -oi__dot(x[0], x[2]) - ce * f[0][2] * f[2][2];
+    k->m[3] = s2 - oi__dot(x[1], x[1]) - ce * f[1][2] * f[1][2];
+    k->m[4] = -oi__dot(x[1], x[2]) - ce * f[1][2] * f[2][2];
+    k->m[5] = s2 - oi__dot(x[2], x[2]) - ce * f[2][2] * f[2][2];
+    k->l[0] = sigma * oi__dot(w, f[0]);
+    k->l[1] = sigma * oi__dot(w, f[1]);
+    k->l[2] = sigma * oi__dot(w, f[2]);
 }
 
-/* The ellipsoid's cone seen from p (outside), world coordinates. */
-static void earth_cone_world(const oi_real p[3], oi_real a, oi_real w[3], oi_real *c)
+/* The ellipsoid's cone seen from p (outside), world coordinates; *s2 =
+ * |w|^2 - c = (k^2 (k^2 - 1) z^2 + a^2) / |p'|^2 without cancellation. */
+static void earth_cone_world(const oi_real p[3], oi_real a, oi_real w[3], oi_real *c,
+                             oi_real *s2)
 {
-    const oi_real n = OI_SQRT(scaled_norm2(p, a)); /* |p'| / a > 1 */
-    const oi_real inv = (oi_real)1 / (n * a);
+    const oi_real n2 = scaled_norm2(p, a); /* |p'|^2 / a^2 > 1 */
+    const oi_real n = OI_SQRT(n2);
+    const oi_real inv = (oi_real)1 / (n * a), z = p[2] / a;
     w[0] = p[0] * inv;
     w[1] = p[1] * inv;
     w[2] = p[2] * ((oi_real)1 + K2M1) * inv;
-    *c = (n - (oi_real)1) * (n + (oi_real)1) / (n * n);
+    *c = (n - (oi_real)1) * (n + (oi_real)1) / n2;
+    *s2 = (((oi_real)1 + K2M1) * K2M1 * z * z + (oi_real)1) / n2;
 }
 
 /* Largest |x| a root may take: beyond every chord (|x| <= tan r < 1e16). */
@@ -172,12 +182,14 @@ static oi_real chord_h(oi_real x, oi_real yy)
     return x / (yy * OI_SQRT(yy + x * x));
 }
 
-/* What the chord at height y keeps visible (solid angle per unit y). */
-static oi_real chord_visible(const cone *k, int n, oi_real y, oi_real h)
+/* What the occulters cover of the chord at height y (solid angle per unit
+ * y); *full: the whole chord's. */
+static oi_real chord_hidden(const cone *k, int n, oi_real y, oi_real h, oi_real *full)
 {
     const oi_real yy = (oi_real)1 + y * y;
-    oi_real a[2], b[2], vis = (oi_real)2 * chord_h(h, yy);
+    oi_real a[2], b[2], hid = (oi_real)0;
     int i, nc = 0;
+    *full = (oi_real)2 * chord_h(h, yy);
     for (i = 0; i < n; ++i)
         if (chord_cover(&k[i], y, h, &a[nc], &b[nc])) ++nc;
     if (nc == 2 && a[1] < b[0] && a[0] < b[1]) {
@@ -186,49 +198,62 @@ static oi_real chord_visible(const cone *k, int n, oi_real y, oi_real h)
         b[0] = b[0] > b[1] ? b[0] : b[1];
         nc = 1;
     }
-    for (i = 0; i < nc; ++i) vis -= chord_h(b[i], yy) - chord_h(a[i], yy);
-    return vis > (oi_real)0 ? vis : (oi_real)0;
+    for (i = 0; i < nc; ++i) hid += chord_h(b[i], yy) - chord_h(a[i], yy);
+    return hid < *full ? hid : *full;
 }
 
-/* The cone's form on the disc's limb, x = t cos th, y = t sin th. */
-static oi_real limb_form(const cone *k, oi_real t, oi_real th)
+/* A circle on the sky in the back disc's frame: the directions
+ * cr c + sr (cos th g1 + sin th g2) (c, g1, g2 orthonormal). */
+typedef struct {
+    oi_real c[3], g1[3], g2[3], cr, sr;
+} circle;
+
+/* The cone's form at the circle's point of angle th. */
+static oi_real circle_form(const cone *k, const circle *q, oi_real th, oi_real u[3])
 {
     oi_real s, c;
+    int i;
     OI_SINCOS(th, &s, &c);
-    return k->m[0] + t * ((oi_real)2 * (k->m[1] * c + k->m[2] * s) +
-                          t * (k->m[3] * c * c + (oi_real)2 * k->m[4] * c * s + k->m[5] * s * s));
+    for (i = 0; i < 3; ++i) u[i] = q->cr * q->c[i] + q->sr * (c * q->g1[i] + s * q->g2[i]);
+    return k->m[0] * u[0] * u[0] +
+           (oi_real)2 * u[0] * (k->m[1] * u[1] + k->m[2] * u[2]) +
+           k->m[3] * u[1] * u[1] + (oi_real)2 * k->m[4] * u[1] * u[2] + k->m[5] * u[2] * u[2];
 }
 
 #define N_LIMB_SAMPLES 32
-#define MAX_BREAKS 12
+#define MAX_BREAKS 16
 #define ROOT_MAX_IT 60
-
-/* psi in [-pi/2, pi/2] of the chord through the limb point at angle th. */
-static oi_real limb_psi(oi_real th)
-{
-    oi_real s, c;
-    OI_SINCOS(th, &s, &c);
-    return OI_ATAN2(s, OI_FABS(c));
-}
 
 static void add_break(oi_real *brk, int *nb, oi_real psi)
 {
     if (*nb < MAX_BREAKS && psi > -OI_HALF_PI_R && psi < OI_HALF_PI_R) brk[(*nb)++] = psi;
 }
 
-/* Breaks of the chord integrand in psi (y = t sin psi) due to cone k: where
- * its boundary crosses the disc's limb (sign changes of limb_form over
- * N_LIMB_SAMPLES angles, each refined by the Illinois variant of regula
- * falsi), and where a chord is tangent to it (the discriminant of the form
- * along the chord, a quadratic in y, vanishes). */
-static void cone_breaks(const cone *k, oi_real t, oi_real *brk, int *nb)
+/* The break psi of a crossing point u (frame coordinates) when it lies on
+ * or inside the back disc of gnomonic radius t: y = u_v / u_s. */
+static void add_point(oi_real *brk, int *nb, const oi_real u[3], oi_real t)
+{
+    oi_real y;
+    if (!(u[0] > (oi_real)0)) return;
+    if (u[1] * u[1] + u[2] * u[2] > OI_R(1.000001) * t * t * u[0] * u[0]) return;
+    y = u[2] / u[0];
+    if (!(OI_FABS(y) < t)) return;
+    add_break(brk, nb, OI_ATAN2(y, OI_SQRT((t - y) * (t + y))));
+}
+
+/* Where cone k's boundary crosses circle q inside the disc: sign changes of
+ * the form over N_LIMB_SAMPLES angles, each refined by the Illinois variant
+ * of regula falsi to a few ulp (the form on a circle is a trigonometric
+ * polynomial of degree 2: at most 4 zeros). */
+static OI_NOINLINE void crossing_breaks(const cone *k, const circle *q, oi_real t, oi_real *brk,
+                                        int *nb)
 {
     const oi_real step = (oi_real)2 * OI_PI_R / (oi_real)N_LIMB_SAMPLES;
-    oi_real f0 = limb_form(k, t, (oi_real)0), a2, b2, c2, d, q, y;
+    oi_real u[3], f0 = circle_form(k, q, (oi_real)0, u);
     int i, it;
     for (i = 0; i < N_LIMB_SAMPLES; ++i) {
         oi_real lo = step * (oi_real)i, hi = step * (oi_real)(i + 1);
-        oi_real flo = f0, fhi = limb_form(k, t, hi), x = lo, fx;
+        oi_real flo = f0, fhi = circle_form(k, q, hi, u), x = lo, fx;
         int side = 0;
         f0 = fhi;
         if (!((flo < (oi_real)0 && fhi >= (oi_real)0) || (flo >= (oi_real)0 && fhi < (oi_real)0)))
@@ -236,7 +261,7 @@ static void cone_breaks(const cone *k, oi_real t, oi_real *brk, int *nb)
         for (it = 0; it < ROOT_MAX_IT && hi - lo > OI_R(4e-16) * (oi_real)8; ++it) {
             x = (lo * fhi - hi * flo) / (fhi - flo);
             if (!(x > lo && x < hi)) x = OI_R(0.5) * (lo + hi);
-            fx = limb_form(k, t, x);
+            fx = circle_form(k, q, x, u);
             if ((fx < (oi_real)0) == (flo < (oi_real)0)) {
                 lo = x;
                 flo = fx;
@@ -250,8 +275,16 @@ static void cone_breaks(const cone *k, oi_real t, oi_real *brk, int *nb)
             }
             if (fx == (oi_real)0) break;
         }
-        add_break(brk, nb, limb_psi(x));
+        (void)circle_form(k, q, x, u);
+        add_point(brk, nb, u, t);
     }
+}
+
+/* Breaks where a chord y = const is tangent to cone k's boundary: the
+ * discriminant of the form along the chord vanishes. */
+static void tangent_breaks(const cone *k, oi_real t, oi_real *brk, int *nb)
+{
+    oi_real a2, b2, c2, d, q, y;
     /* chords tangent to the boundary: (m_su + y m_uv)^2 - m_uu (m_ss + 2 y
      * m_sv + y^2 m_vv) = a2 y^2 + 2 b2 y + c2 = 0 */
     a2 = k->m[4] * k->m[4] - k->m[3] * k->m[5];
@@ -278,31 +311,94 @@ static const oi_real gl8[4][2] = {
     {OI_R(0.40828267875217509753), OI_R(0.181341891689180991483)},
 };
 
-/* Panels per piece between breaks (each an 8-point rule in u, psi = p0 +
- * (p1 - p0)(1 - cos pi u)/2 clustering the nodes at both breaks). */
-#define PANELS 8
+/* Panels per piece between breaks, each an 8-point rule in u with psi = p0
+ * + (p1 - p0)(1 - cos pi u)/2 clustering the nodes at both breaks; their
+ * edges in u graded towards both ends, where a neighbouring break (a
+ * chord's tangency next to a limb crossing) may lie just beyond the piece.
+ * Every occulter wider than twice the disc (the Earth up to ~700,000 km):
+ * 8 panels; a narrower one (the Earth beyond, the Moon) 14. */
+#define N_WIDE 8
+#define N_NARROW 14
+static const oi_real edge_wide[N_WIDE + 1] = {
+    OI_R(0.0), OI_R(0.015625), OI_R(0.0625), OI_R(0.25), OI_R(0.5),
+    OI_R(0.75), OI_R(0.9375), OI_R(0.984375), OI_R(1.0)};
+static const oi_real edge_narrow[N_NARROW + 1] = {
+    OI_R(0.0),   OI_R(0.00390625), OI_R(0.015625), OI_R(0.0625), OI_R(0.125),
+    OI_R(0.25),  OI_R(0.375),      OI_R(0.5),      OI_R(0.625),  OI_R(0.75),
+    OI_R(0.875), OI_R(0.9375),     OI_R(0.984375), OI_R(0.99609375), OI_R(1.0)};
 
-/* The integral over psi in [p0, p1] of the visible chord times dy/dpsi. */
-static oi_real piece(const cone *k, int n, oi_real t, oi_real p0, oi_real p1)
+/* The integrals over psi in [p0, p1] of the hidden part of the chord (the
+ * return value) and of the visible part (added to *vis), times dy/dpsi. */
+static OI_NOINLINE oi_real piece(const cone *k, int n, oi_real t, oi_real p0, oi_real p1,
+                                 int narrow, oi_real *vis)
 {
-    const oi_real hw = OI_R(0.5) * (p1 - p0), du = (oi_real)1 / (oi_real)PANELS;
-    oi_real sum = (oi_real)0;
+    const oi_real hw = OI_R(0.5) * (p1 - p0);
+    const oi_real *edge = narrow ? edge_narrow : edge_wide;
+    const int panels = narrow ? N_NARROW : N_WIDE;
+    oi_real sum = (oi_real)0, vsum = (oi_real)0;
     int pn, i, j;
-    for (pn = 0; pn < PANELS; ++pn) {
+    for (pn = 0; pn < panels; ++pn) {
+        const oi_real u0 = edge[pn], du = edge[pn + 1] - edge[pn];
+        oi_real part = (oi_real)0, vpart = (oi_real)0;
         for (i = 0; i < 4; ++i) {
             for (j = 0; j < 2; ++j) {
                 const oi_real x = j ? (oi_real)1 - gl8[i][0] : gl8[i][0];
-                const oi_real u = du * ((oi_real)pn + x);
-                oi_real su, cu, sp, cp, psi;
+                const oi_real u = u0 + du * x;
+                oi_real su, cu, sp, cp, psi, full, hid, wgt;
                 OI_SINCOS(OI_PI_R * u, &su, &cu);
                 psi = p0 + hw * ((oi_real)1 - cu);
                 OI_SINCOS(psi, &sp, &cp);
-                sum += gl8[i][1] * chord_visible(k, n, t * sp, t * cp) * t * cp * hw * OI_PI_R *
-                       su;
+                hid = chord_hidden(k, n, t * sp, t * cp, &full);
+                wgt = gl8[i][1] * t * cp * su;
+                part += wgt * hid;
+                vpart += wgt * (full - hid);
             }
         }
+        sum += part * du;
+        vsum += vpart * du;
     }
-    return sum * du;
+    *vis += vsum * hw * OI_PI_R;
+    return sum * hw * OI_PI_R;
+}
+
+static void disc_frame(const oi_real s[3], const oi_real toward[3], oi_real f[3][3]);
+
+/* The Earth's cone crossing the Moon's limb (centre m in the frame, radius
+ * rm) inside the disc: where the two covered intervals start or stop
+ * overlapping. */
+static OI_NOINLINE void moon_limb_breaks(const cone *k, const oi_real m[3], oi_real rm,
+                                         oi_real t, oi_real *brk, int *nb)
+{
+    circle q;
+    oi_real g[3][3];
+    int i;
+    const oi_real e[3] = {(oi_real)0, (oi_real)1, (oi_real)0};
+    disc_frame(m, e, g);
+    for (i = 0; i < 3; ++i) {
+        q.c[i] = g[0][i];
+        q.g1[i] = g[1][i];
+        q.g2[i] = g[2][i];
+    }
+    OI_SINCOS(rm, &q.sr, &q.cr);
+    crossing_breaks(k, &q, t, brk, nb);
+}
+
+/* Every break: each cone's crossings of the disc's limb and its tangent
+ * chords; with the Moon, moon_limb_breaks. */
+static OI_NOINLINE void all_breaks(const cone *k, int n, oi_real r, oi_real t,
+                                   const oi_real m[3], oi_real rm, oi_real *brk, int *nb)
+{
+    circle q;
+    int i;
+    q.c[0] = (oi_real)1;
+    q.c[1] = q.c[2] = q.g1[0] = q.g1[2] = q.g2[0] = q.g2[1] = (oi_real)0;
+    q.g1[1] = q.g2[2] = (oi_real)1;
+    OI_SINCOS(r, &q.sr, &q.cr);
+    for (i = 0; i < n; ++i) {
+        crossing_breaks(&k[i], &q, t, brk, nb);
+        tangent_breaks(&k[i], t, brk, nb);
+    }
+    if (n > 1) moon_limb_breaks(&k[0], m, rm, t, brk, nb);
 }
 
 /* An orthonormal frame (s, eu, ev): eu towards toward's component normal to
@@ -325,34 +421,50 @@ static void disc_frame(const oi_real s[3], const oi_real toward[3], oi_real f[3]
     oi__cross(s, u, f[2]);
 }
 
+/* The cones in the back disc's frame (s, eu towards the Earth's centre):
+ * the ellipsoid's in k[0], the sphere's (mo not NULL) in k[1] with its
+ * centre's frame coordinates in mf; returns 1 when an occulter is narrower
+ * than twice the disc (the silhouette's sine squared, 1 - c, against
+ * 4 sin^2 r). Out of line: its frame is not live during the quadrature. */
+static OI_NOINLINE int build_cones(const oi_real s[3], oi_real r, const oi_real p[3], oi_real a,
+                                   const oi_real mo[3], oi_real rm, cone *k, oi_real mf[3])
+{
+    oi_real f[3][3], w[3], c, s2, cm, sm;
+    int i;
+    w[0] = -p[0];
+    w[1] = -p[1];
+    w[2] = -p[2];
+    disc_frame(s, w, f);
+    earth_cone_world(p, a, w, &c, &s2);
+    cone_in_frame(w, c, K2M1, s2, (oi_real)1, (const oi_real(*)[3])f, &k[0]);
+    if (mo == NULL) return !((oi_real)1 - c > (oi_real)4 * oi__sqr(OI_SIN(r)));
+    OI_SINCOS(rm, &sm, &cm);
+    cone_in_frame(mo, cm * cm, (oi_real)0, sm * sm, (oi_real)-1, (const oi_real(*)[3])f, &k[1]);
+    for (i = 0; i < 3; ++i) mf[i] = oi__dot(mo, f[i]);
+    return 1;
+}
+
 /*
  * Visible fraction of the uniform disc of unit direction s and apparent
- * radius r (< pi/4) seen from p (outside the ellipsoid of equatorial radius
- * a), behind the ellipsoid and (mo not NULL) a sphere of unit direction mo
- * and apparent radius rm. The solid angle the occulters leave, as chords
- * of the gnomonic disc (closed form along each chord), integrated over
- * y = tan(r) sin(psi) piecewise between the breaks (cone_breaks) by
- * Gauss-Legendre; over the disc's solid angle 4 pi sin^2(r/2); in [0, 1].
+ * radius r (<= 0.5 rad) seen from p (outside the ellipsoid of equatorial
+ * radius a), behind the ellipsoid and (mo not NULL) a sphere of unit
+ * direction mo and apparent radius rm. The solid angle the occulters
+ * cover, as chords of the gnomonic disc (closed form along each chord),
+ * integrated over y = tan(r) sin(psi) piecewise between the breaks
+ * (all_breaks) by Gauss-Legendre; over the disc's solid angle 4 pi
+ * sin^2(r/2); in [0, 1].
  */
 oi_real oi__oblate_visible(const oi_real s[3], oi_real r, const oi_real p[3], oi_real a,
                            const oi_real mo[3], oi_real rm)
 {
-    oi_real f[3][3], w[3], c, t, brk[MAX_BREAKS], anti[3], sum = (oi_real)0, prev, cm;
+    oi_real t, sr, cr, brk[MAX_BREAKS], mf[3], hid = (oi_real)0, vis = (oi_real)0, prev, disc;
     cone k[2];
-    int n = 1, nb = 0, i, j;
-    anti[0] = -p[0];
-    anti[1] = -p[1];
-    anti[2] = -p[2];
-    disc_frame(s, anti, f);
-    earth_cone_world(p, a, w, &c);
-    cone_in_frame(w, c, K2M1, (oi_real)1, (const oi_real(*)[3])f, &k[0]);
-    if (mo != NULL) {
-        cm = OI_COS(rm);
-        cone_in_frame(mo, cm * cm, (oi_real)0, (oi_real)-1, (const oi_real(*)[3])f, &k[1]);
-        n = 2;
-    }
-    t = OI_TAN(r);
-    for (i = 0; i < n; ++i) cone_breaks(&k[i], t, brk, &nb);
+    int nb = 0, i, j;
+    const int n = mo != NULL ? 2 : 1;
+    const int narrow = build_cones(s, r, p, a, mo, rm, k, mf);
+    OI_SINCOS(r, &sr, &cr);
+    t = sr / cr;
+    all_breaks(k, n, r, t, mf, rm, brk, &nb);
     /* sort the breaks (insertion; at most MAX_BREAKS) */
     for (i = 1; i < nb; ++i) {
         const oi_real v = brk[i];
@@ -362,10 +474,13 @@ oi_real oi__oblate_visible(const oi_real s[3], oi_real r, const oi_real p[3], oi
     prev = -OI_HALF_PI_R;
     for (i = 0; i <= nb; ++i) {
         const oi_real next = i < nb ? brk[i] : OI_HALF_PI_R;
-        if (next > prev) sum += piece(k, n, t, prev, next);
+        if (next > prev) hid += piece(k, n, t, prev, next, narrow, &vis);
         prev = next;
     }
-    return oi__clamp(sum / ((oi_real)4 * OI_PI_R * oi__sin_half_sq(r)), (oi_real)0, (oi_real)1);
+    /* the smaller of the two parts keeps its relative accuracy (and is
+     * exactly 0 when nothing, or everything, is covered) */
+    disc = (oi_real)4 * OI_PI_R * oi__sin_half_sq(r);
+    return oi__clamp(vis < hid ? vis / disc : (oi_real)1 - hid / disc, (oi_real)0, (oi_real)1);
 }
 
 /* Angular radius of the ellipsoid's silhouette seen from p, along the great
@@ -374,17 +489,18 @@ oi_real oi__oblate_visible(const oi_real s[3], oi_real r, const oi_real p[3], oi
  * m_ee tau^2 + 2 m_ne tau + m_nn = 0 with m_nn > 0 (the nadir inside). */
 oi_real oi__oblate_radius_towards(const oi_real p[3], oi_real a, const oi_real s[3])
 {
-    oi_real f[3][3], w[3], c, n[3], mnn, mne, mee, d, tau, wn, we;
+    oi_real f[3][3], w[3], c, s2, n[3], xn[3], xe[3], mnn, mne, mee, d, tau;
     int i;
     const oi_real dp = oi__norm_bounded(p);
     for (i = 0; i < 3; ++i) n[i] = -p[i] / dp;
     disc_frame(n, s, f);
-    earth_cone_world(p, a, w, &c);
-    wn = oi__dot(w, f[0]);
-    we = oi__dot(w, f[1]);
-    mnn = wn * wn - c * ((oi_real)1 + K2M1 * f[0][2] * f[0][2]);
-    mne = wn * we - c * K2M1 * f[0][2] * f[1][2];
-    mee = we * we - c * ((oi_real)1 + K2M1 * f[1][2] * f[1][2]);
+    earth_cone_world(p, a, w, &c, &s2);
+    /* the form's entries as in cone_in_frame */
+    oi__cross(w, f[0], xn);
+    oi__cross(w, f[1], xe);
+    mnn = s2 - oi__dot(xn, xn) - c * K2M1 * f[0][2] * f[0][2];
+    mne = -oi__dot(xn, xe) - c * K2M1 * f[0][2] * f[1][2];
+    mee = s2 - oi__dot(xe, xe) - c * K2M1 * f[1][2] * f[1][2];
     d = mne * mne - mee * mnn;
     if (!(d > (oi_real)0)) d = (oi_real)0;
     /* the positive root (the roots' product m_nn / m_ee < 0), in the form

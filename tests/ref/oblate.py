@@ -20,7 +20,11 @@ quadratic cone there):
 - The outer integral over phi by tanh-sinh (mpmath.quad), split where the
   covered parts start, stop, reach the disc's limb or its centre, or where
   the Earth's and the Moon's parts start or stop overlapping (found on a grid
-  of 720 azimuths and refined by bisection to 1e-25).
+  of 2880 azimuths and refined by bisection to 1e-25). No row puts the back
+  disc's centre on an occulter's outline: there the covered part of the rays
+  next to the outline's tangent through the centre changes faster than
+  tanh-sinh resolves (3.7e-9 off on the sphere against the exact caps, where
+  the runtime's chords agree with the caps to 3e-13).
 
 The output depends only on this script (no timestamps, no randomness).
 """
@@ -230,14 +234,14 @@ def geometries():
         for dec in (0.0, DEC):
             sun = [AU_KM * np.cos(dec), 0.0, AU_KM * np.sin(dec)]
             for psi in (0.0, np.radians(50.0)) if dec == 0 else (np.radians(90.0),):
-                for off in ((-1.2, -0.5, 0.3, 0.9, 1.2) if alt < 1e6 else (-0.9, 0.0, 0.8)):
+                for off in ((-1.2, -0.5, 0.3, 0.9, 1.2) if alt < 1e6 else (-0.9, 0.05, 0.8)):
                     out.append(("%s, dec %.2f, psi %.0f, offset %+.1f" % (
                         tag, np.degrees(dec), np.degrees(psi), off), sun,
                         edge_point(sun, alt, psi, off), None))
     # the Moon on the Sun's disc while a GEO target is in the ellipsoid's penumbra
     sun = [AU_KM * np.cos(DEC), 0.0, AU_KM * np.sin(DEC)]
     for psi in (0.0, np.radians(90.0)):
-        t = np.array(edge_point(sun, 35786.0, psi, 0.0))
+        t = np.array(edge_point(sun, 35786.0, psi, 0.1))
         s = (np.array(sun) - t) / np.linalg.norm(np.array(sun) - t)
         toward = -t - np.dot(-t, s) * s
         toward /= np.linalg.norm(toward)
@@ -253,8 +257,8 @@ def geometries():
     t = np.array([0.0, 0.0, 7000.0])
     rho = np.arcsin(A_KM / 7000.0)
     for az in (0.0, np.radians(60.0)):
-        for dd in (-0.006, -0.002, 0.0, 0.003, 0.006):
-            ang = np.radians(180.0) - (rho + 0.0 + dd) if False else rho + dd
+        for dd in (-0.006, -0.002, 0.0005, 0.003, 0.006):
+            ang = rho + dd
             # a direction at angle ang from the nadir (0,0,-1), azimuth az
             u = np.array([np.sin(ang) * np.cos(az), np.sin(ang) * np.sin(az), -np.cos(ang)])
             moon = list(t + 384400.0 * u)
