@@ -383,10 +383,11 @@ static OI_NOINLINE void moon_limb_breaks(const cone *k, const oi_real m[3], oi_r
     crossing_breaks(k, &q, t, brk, nb);
 }
 
-/* Every break: each cone's crossings of the disc's limb and its tangent
- * chords; with the Moon, moon_limb_breaks. */
-static OI_NOINLINE void all_breaks(const cone *k, int n, oi_real r, oi_real t,
-                                   const oi_real m[3], oi_real rm, oi_real *brk, int *nb)
+/* Every break of the cones: each one's crossings of the disc's limb and
+ * its tangent chords (with the Moon, the caller adds moon_limb_breaks: not
+ * from here, so that the two frames do not stack). */
+static OI_NOINLINE void all_breaks(const cone *k, int n, oi_real r, oi_real t, oi_real *brk,
+                                   int *nb)
 {
     circle q;
     int i;
@@ -398,7 +399,6 @@ static OI_NOINLINE void all_breaks(const cone *k, int n, oi_real r, oi_real t,
         crossing_breaks(&k[i], &q, t, brk, nb);
         tangent_breaks(&k[i], t, brk, nb);
     }
-    if (n > 1) moon_limb_breaks(&k[0], m, rm, t, brk, nb);
 }
 
 /* An orthonormal frame (s, eu, ev): eu towards toward's component normal to
@@ -464,7 +464,8 @@ oi_real oi__oblate_visible(const oi_real s[3], oi_real r, const oi_real p[3], oi
     const int narrow = build_cones(s, r, p, a, mo, rm, k, mf);
     OI_SINCOS(r, &sr, &cr);
     t = sr / cr;
-    all_breaks(k, n, r, t, mf, rm, brk, &nb);
+    all_breaks(k, n, r, t, brk, &nb);
+    if (n > 1) moon_limb_breaks(&k[0], mf, rm, t, brk, &nb);
     /* sort the breaks (insertion; at most MAX_BREAKS) */
     for (i = 1; i < nb; ++i) {
         const oi_real v = brk[i];

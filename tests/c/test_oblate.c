@@ -32,6 +32,17 @@
  * 1/(2 r_sun) ~ 1e2 per radian: ~3e-5, twice the sphere's, so 1e-4; within
  * 1 km of the surface |p'| - a keeps only log10(h / a) of its digits
  * (docs/shadow.md section 10): 5e-2 there. */
+/* The Earth and the Moon on the Sun at once: the reference itself is off
+ * there, by 3.1e-8 against the exact three caps in the limit of a sphere
+ * (its split misses where the two outlines cross inside the disc; the
+ * runtime's chords agree with the caps to 1e-14 in that limit,
+ * docs/shadow.md section 10), so the runtime is checked to 3e-7 only. */
+#ifdef OI_SINGLE_PRECISION
+#define BOTH_TOL 1e-4
+#else
+#define BOTH_TOL 3e-7
+#endif
+
 #ifdef OI_SINGLE_PRECISION
 #define FRACTION_TOL 1e-4
 #define NEAR_SURFACE_TOL 5e-2
@@ -111,7 +122,7 @@ static void test_vs_mpmath(void **state)
             s.terms = OI_TERM_SUN | OI_TERM_MOON;
             st = oi_illuminate(&s, &m, &o);
             if (st < 0) check_int(OI_OK, st, r->label);
-            check_close(r->fraction_moon, (double)o.shadow.fraction, FRACTION_TOL, 0, r->label);
+            check_close(r->fraction_moon, (double)o.shadow.fraction, BOTH_TOL, 0, r->label);
             check_close(r->moon_visible, (double)o.moon_disc_visible, FRACTION_TOL, 0, r->label);
             if (fabs((double)o.shadow.fraction - r->fraction_moon) > worst_moon)
                 worst_moon = fabs((double)o.shadow.fraction - r->fraction_moon);
@@ -268,8 +279,10 @@ static void test_inside_and_heights(void **state)
         s.has_observer = 1;
         assert_int_equal(oi_illuminate(&s, &m, &o), OI_ERR_BELOW_SURFACE);
         s.has_observer = 0;
+#ifndef OI_NO_MOON
         set3(s.moon_km, 0, 0, B_KM - 1.0);
         assert_int_equal(oi_illuminate(&s, &m, &o), OI_ERR_BELOW_SURFACE);
+#endif
     }
 }
 
