@@ -28,6 +28,8 @@
  *                  OI_NO_FACETS; with it, the sphere's)
  *   all_expose     oi_illuminate (all terms) + oi_expose_scene (built-in camera 0)
  *   sun_fraction   oi_sun_fraction alone
+ *   sun_fraction_wgs84  oi_sun_fraction, the WGS-84 ellipsoid (OI_EARTH_WGS84)
+ *   all_wgs84      oi_illuminate as all, the WGS-84 ellipsoid
  *   earthshine     oi_earthshine alone (the baked table), theta and h of each scene
  *   earthshine_lambert   oi_earthshine with OI_EARTH_LAMBERT (analytic far field)
  *   sun_fraction_batch   oi_sun_fraction_batch, outputs mask 0 (the uniform disc's
@@ -69,6 +71,7 @@ static volatile double sink;
 
 enum { C_ALL, C_SUN, C_SUN_EARTH, C_ALL_EXPOSE, C_SUN_FRACTION, C_EARTHSHINE, C_EARTHSHINE_LAMBERT,
        C_SUN_MOON, C_SUN_EARTH_MEAN, C_SHAPE_PLATE, C_SHAPE_BOX_WING, C_SHAPE_CYLINDER,
+       C_SUN_FRACTION_WGS84, C_ALL_WGS84,
        C_SUN_FRACTION_BATCH, C_SUN_FRACTION_BATCH_ALL, C_ALL_BATCH, C_EARTHSHINE_BATCH,
        C_N };
 static const char *const config_name[C_N] = {"all",          "sun",        "sun_earth",
@@ -76,6 +79,7 @@ static const char *const config_name[C_N] = {"all",          "sun",        "sun_
                                              "earthshine_lambert", "sun_moon", "sun_earth_mean",
                                              "sun_earth_plate", "sun_earth_box_wing",
                                              "sun_earth_cylinder",
+                                             "sun_fraction_wgs84", "all_wgs84",
                                              "sun_fraction_batch",
                                              "sun_fraction_batch_all", "all_batch",
                                              "earthshine_batch"};
@@ -170,7 +174,7 @@ static double run_config(int cfg)
 {
     static oi_illum il;
     static oi_exposure ex;
-    oi_model lambert, mean;
+    oi_model lambert, mean, wgs84;
     oi_real phi, psi;
     double acc = 0.0;
     int i;
@@ -183,6 +187,8 @@ static double run_config(int cfg)
     lambert.earth_model = OI_EARTH_LAMBERT;
     memset(&mean, 0, sizeof mean);
     mean.earth_reflection = OI_EARTH_REFLECT_MEAN;
+    memset(&wgs84, 0, sizeof wgs84);
+    wgs84.earth_shape = OI_EARTH_WGS84;
     for (i = 0; i < BENCH_NSCENES; i++) {
         oi_scene *s = &scenes[i];
         if (only_light >= 0 && raw[i].light != only_light) continue;
@@ -239,6 +245,15 @@ static double run_config(int cfg)
         case C_SUN_FRACTION:
             (void)oi_sun_fraction(s->sun_km, s->target_km, NULL, &il.shadow);
             acc += (double)il.shadow.fraction;
+            break;
+        case C_SUN_FRACTION_WGS84:
+            (void)oi_sun_fraction(s->sun_km, s->target_km, &wgs84, &il.shadow);
+            acc += (double)il.shadow.fraction;
+            break;
+        case C_ALL_WGS84:
+            s->terms = OI_TERM_ALL;
+            (void)oi_illuminate(s, &wgs84, &il);
+            acc += (double)il.flux_obs;
             break;
         case C_EARTHSHINE:
             (void)oi_earthshine(es_theta[i], es_h[i], NULL, &phi, &psi);

@@ -36,6 +36,10 @@
  *                        the built-in shapes; oi_scene keeps its shape and
  *                        attitude_q fields (the layout does not change) and a
  *                        scene with a shape gets OI_ERR_SHAPE.
+ *   OI_NO_OBLATE         no WGS-84 ellipsoid (src/oblate.c removed): a model
+ *                        with earth_shape = OI_EARTH_WGS84 is rejected with
+ *                        OI_ERR_MODEL (src/model.c); the field and its
+ *                        constants stay, as with OI_NO_LIMB_DARKENING.
  * An option that removes a feature removes its declarations too, so code that
  * still uses the feature fails to compile.
  */

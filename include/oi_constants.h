@@ -20,6 +20,12 @@
 /* Earth equatorial radius (km), WGS-84 / GRS-80. */
 #define OI_EARTH_RADIUS_KM (6378.137)
 
+/* Inverse flattening of the WGS-84 ellipsoid (NIMA TR8350.2, 3rd ed., 2000,
+ * table 3.1): the Earth's shape with oi_model.earth_shape = OI_EARTH_WGS84,
+ * of equatorial radius oi_model.earth_radius_km (default 6378.137 km, the
+ * WGS-84 semi-major axis) and polar radius a (1 - 1/298.257223563). */
+#define OI_WGS84_INV_FLATTENING (298.257223563)
+
 /* Mean lunar radius (km), IAU WG on Cartographic Coordinates (Archinal et
  * al. 2011, Celest. Mech. Dyn. Astr. 109, 101). */
 #define OI_MOON_RADIUS_KM (1737.4)

@@ -123,6 +123,15 @@ const char *oi_status_name(int status);
 #define OI_EARTH_REFLECT_MEAN    (1) /* as if all of it came from its mean
                                         direction (exact in the far field) */
 
+/* oi_model.earth_shape: the Earth as occulter (its shadow, its hiding the
+ * Moon and the target) and the surface the altitudes are measured from */
+#define OI_EARTH_SPHERE (0)   /* sphere of radius earth_radius_km (default) */
+#define OI_EARTH_WGS84  (1)   /* WGS-84 ellipsoid: equatorial radius
+                                 earth_radius_km, flattening
+                                 1/OI_WGS84_INV_FLATTENING, the frame's z axis
+                                 the rotation axis (GCRS, J2000, TEME);
+                                 docs/shadow.md section 10 */
+
 /* oi_model.limb_darkening */
 #define OI_LIMB_UNIFORM (0)   /* uniform solar disc (default) */
 #define OI_LIMB_DARKENED (1)  /* irradiance uses a limb-darkened disc */
@@ -150,6 +159,8 @@ typedef struct oi_model {
     const oi_earth_table *earth_table; /* earthshine table; NULL: oi_earth_table_default() */
     const oi_atm_table *atm_table;     /* atmosphere table; NULL: oi_atm_table_default() */
     int earth_reflection;     /* OI_EARTH_REFLECT_MOMENTS or OI_EARTH_REFLECT_MEAN */
+    int earth_shape;          /* OI_EARTH_SPHERE or OI_EARTH_WGS84 (OI_ERR_MODEL with
+                                 OI_NO_OBLATE) */
 } oi_model;
 
 /*

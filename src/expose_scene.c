@@ -20,16 +20,18 @@ typedef struct {
     oi_real range;       /* |target - observer| (km) */
     oi_real b[3];        /* boresight target - observer (km) */
     oi_real bh[3];       /* its unit vector */
+    int shape;           /* oi_model.earth_shape */
 } scene_geom;
 
 /* The model constants oi_expose_scene needs (oi__model_resolve's status);
  * out of line (OI_NOINLINE) so that its copy of the model is not in the frame
  * of oi_expose_scene, which is live during the choice as well. */
 static OI_NOINLINE int scene_model(const oi_model *model, oi_real *re, oi_real *au, oi_real *tsi,
-                                   oi_real moon[2])
+                                   oi_real moon[2], int *shape)
 {
     oi_model m;
     int st = oi__model_resolve(model, &m);
+    *shape = m.earth_shape;
     *re = m.earth_radius_km;
     *au = m.au_km;
     *tsi = m.tsi_w_m2;
@@ -71,7 +73,7 @@ static OI_NOINLINE int check_scene(const oi_camera *camera, const oi_scene *scen
                        const oi_model *model, int use_moon, scene_geom *g)
 {
     oi_real r_tgt, re, au, tsi, moon[2]; /* locals: g's address does not leave this file */
-    int st;
+    int st, shape = OI_EARTH_SPHERE;
     if (!scene->has_observer) return OI_ERR_NULL;
     if (model == NULL) { /* the default model (src/model.c), without a copy */
         re = (oi_real)OI_EARTH_RADIUS_KM;
@@ -80,10 +82,11 @@ static OI_NOINLINE int check_scene(const oi_camera *camera, const oi_scene *scen
         moon[0] = (oi_real)OI_MOON_RADIUS_KM;
         moon[1] = (oi_real)OI_MOON_ALBEDO_DEFAULT;
     } else {
-        st = scene_model(model, &re, &au, &tsi, moon);
+        st = scene_model(model, &re, &au, &tsi, moon, &shape);
         if (st != OI_OK) return st;
     }
     g->re = re;
+    g->shape = shape;
     g->au = au;
     g->tsi = tsi;
     g->rm = moon[0];
@@ -127,6 +130,14 @@ static OI_NOINLINE int check_scene(const oi_camera *camera, const oi_scene *scen
     if (!speed_ok(scene->target_vel_km_s) || !speed_ok(scene->observer_vel_km_s)) {
         return OI_ERR_INPUT;
     }
+#ifndef OI_NO_OBLATE
+    if (g->shape == OI_EARTH_WGS84) {
+        /* inside or on the ellipsoid (src/oblate.c) */
+        if (!oi__oblate_outside(scene->observer_km, g->re) ||
+            !oi__oblate_outside(scene->target_km, g->re))
+            return OI_ERR_BELOW_SURFACE;
+    } else
+#endif
     if (!(g->r_obs > g->re) || !(r_tgt > g->re)) return OI_ERR_BELOW_SURFACE;
     oi__sub(scene->target_km, scene->observer_km, g->b);
     g->range = oi__unit(g->b, g->bh);
@@ -190,6 +201,15 @@ static OI_NOINLINE oi_real ground_background(const oi_scene *scene, const scene_
 {
     oi_real c, sc, ob, s_hit, cos_i, au_d, e0;
     oi_real hit[3], sun_hit[3]; /* then their unit vectors, in place */
+#ifndef OI_NO_OBLATE
+    if (g->shape == OI_EARTH_WGS84) {
+        /* the ellipsoid hides the target; the background stays the
+         * sphere's (none for an observer inside that sphere) */
+        s_hit = oi__oblate_ray_hit(scene->observer_km, g->bh, g->re);
+        if (s_hit >= 0 && s_hit < g->range) in->flags |= OI_FLAG_OCCULTED;
+        if (!(g->r_obs > g->re)) return s_hit;
+    }
+#endif
     c = (g->r_obs - g->re) * (g->r_obs + g->re); /* |o|^2 - R^2 > 0 */
     sc = OI_SQRT(c);
     ob = oi__dot(scene->observer_km, g->bh);
@@ -198,7 +218,7 @@ static OI_NOINLINE oi_real ground_background(const oi_scene *scene, const scene_
     hit[0] = scene->observer_km[0] + s_hit * g->bh[0];
     hit[1] = scene->observer_km[1] + s_hit * g->bh[1];
     hit[2] = scene->observer_km[2] + s_hit * g->bh[2];
-    if (s_hit < g->range) in->flags |= OI_FLAG_OCCULTED;
+    if (s_hit < g->range && g->shape != OI_EARTH_WGS84) in->flags |= OI_FLAG_OCCULTED;
     oi__sub(scene->sun_km, hit, sun_hit);
     (void)oi__unit(hit, hit);
     (void)oi__unit(sun_hit, sun_hit);

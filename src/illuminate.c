@@ -59,6 +59,15 @@ static int check_scene(const oi_scene *s, const oi_model *m)
         return OI_ERR_ZERO_VECTOR;
     /* Bounded positions keep every difference and square finite. */
     if (n_sun > far || n_target > far || n_moon > far || n_obs > far) return OI_ERR_GEOMETRY;
+#ifndef OI_NO_OBLATE
+    if (m->earth_shape == OI_EARTH_WGS84) {
+        /* inside or on the ellipsoid (src/oblate.c) */
+        if (!oi__oblate_outside(s->target_km, m->earth_radius_km) ||
+            (obs && !oi__oblate_outside(s->observer_km, m->earth_radius_km)))
+            return OI_ERR_BELOW_SURFACE;
+        return OI_OK;
+    }
+#endif
     if (n_target <= m->earth_radius_km || n_obs <= m->earth_radius_km)
         return OI_ERR_BELOW_SURFACE;
     if (s->shape != NULL) {
@@ -191,6 +200,11 @@ static OI_NOINLINE int moon_shadow_term(const oi_scene *s, const oi_model *m, oi
 {
     int st;
     oi_real before = out->shadow.fraction_atm;
+#ifndef OI_NO_OBLATE
+    if (m->earth_shape == OI_EARTH_WGS84) {
+        if (!oi__oblate_outside(s->moon_km, m->earth_radius_km)) return OI_ERR_BELOW_SURFACE;
+    } else
+#endif
     if (!(oi__dot(s->moon_km, s->moon_km) > m->earth_radius_km * m->earth_radius_km))
         return OI_ERR_BELOW_SURFACE;
     st = oi__moon_shadow(s->sun_km, s->moon_km, s->target_km, m, &out->shadow,
@@ -251,6 +265,13 @@ static OI_NOINLINE int earth_term(const oi_scene *scene, const oi_model *m, oi_i
     cos_theta = oi__dot(s_hat, r_hat);
     out->earth_theta = OI_ATAN2(sin_theta, cos_theta);
     out->earth_h_km = r_target - m->earth_radius_km;
+#ifndef OI_NO_OBLATE
+    /* the ellipsoid: the height above its geocentric radius under the target
+     * (the earthshine table's sphere of that radius) */
+    if (m->earth_shape == OI_EARTH_WGS84)
+        out->earth_h_km = r_target - oi__oblate_geocentric_radius(scene->target_km,
+                                                                  m->earth_radius_km);
+#endif
     if (scene->terms & OI_TERM_EARTH) {
         st = oi__earthshine(out->earth_theta, cos_theta, sin_theta, out->earth_h_km, m, &phi,
                             &psi);

@@ -39,7 +39,8 @@ static const oi_real bound_hi[N_FIELDS - N_RADII + 1] = {
 typedef char model_options_are_0_or_1[(OI_EARTH_TABLE == 0 && OI_EARTH_LAMBERT == 1 &&
                                        OI_MOON_PHASE_LAW == 0 && OI_MOON_LAMBERT == 1 &&
                                        OI_LIMB_UNIFORM == 0 && OI_LIMB_DARKENED == 1 &&
-                                       OI_EARTH_REFLECT_MOMENTS == 0 && OI_EARTH_REFLECT_MEAN == 1)
+                                       OI_EARTH_REFLECT_MOMENTS == 0 && OI_EARTH_REFLECT_MEAN == 1 &&
+                                       OI_EARTH_SPHERE == 0 && OI_EARTH_WGS84 == 1)
                                           ? 1
                                           : -1];
 
@@ -65,11 +66,16 @@ int oi__model_resolve(const oi_model *in, oi_model *out)
         }
     }
     /* each option 0 or 1 (see model_options_are_0_or_1) */
-    if ((in->earth_model | in->moon_model | in->limb_darkening | in->earth_reflection) & ~1)
+    if ((in->earth_model | in->moon_model | in->limb_darkening | in->earth_reflection |
+         in->earth_shape) & ~1)
         return OI_ERR_MODEL;
 #ifdef OI_NO_LIMB_DARKENING
     /* the limb-darkened disc is compiled out (include/oi_config.h) */
     if (in->limb_darkening == OI_LIMB_DARKENED) return OI_ERR_MODEL;
+#endif
+#ifdef OI_NO_OBLATE
+    /* the ellipsoid is compiled out (include/oi_config.h) */
+    if (in->earth_shape == OI_EARTH_WGS84) return OI_ERR_MODEL;
 #endif
 #ifndef OI_NO_ATMOSPHERE
     /* a caller's atmosphere table, where it would be used (the default is
@@ -82,6 +88,7 @@ int oi__model_resolve(const oi_model *in, oi_model *out)
     out->moon_model = in->moon_model;
     out->limb_darkening = in->limb_darkening;
     out->earth_reflection = in->earth_reflection;
+    out->earth_shape = in->earth_shape;
     out->no_atmosphere = in->no_atmosphere != 0;
     out->earth_table = in->earth_table;
     out->atm_table = in->atm_table;

@@ -47,7 +47,7 @@ static oi_real chosen_disc(const oi_model *m, oi_real frac, oi_real frac_ld)
  */
 static void both_occulters(const oi_real u_sun[3], const oi_real u_moon[3],
                            const oi_real target_km[3], oi_real rm, oi_real sep_moon, oi_real fm,
-                           oi_real fm_ld, oi_shadow *sh)
+                           oi_real fm_ld, const oi_model *m, oi_shadow *sh)
 {
     oi_real c[3][3], r[3], triple, a_sun, lim;
     int i;
@@ -76,6 +76,19 @@ static void both_occulters(const oi_real u_sun[3], const oi_real u_moon[3],
                           : sh->fraction;
     lim = fm_ld < (oi_real)1 ? fm_ld : (oi_real)1;
     if (sh->fraction_ld > lim) sh->fraction_ld = lim;
+#endif
+#ifndef OI_NO_OBLATE
+    if (m->earth_shape == OI_EARTH_WGS84 && r[0] <= OI_R(0.5)) {
+        /* the ellipsoid's silhouette and the Moon's disc (src/oblate.c);
+         * the limb-darkened fraction moved by as much as the uniform one */
+        const oi_real exact = oi__oblate_visible(u_sun, r[0], target_km, m->earth_radius_km,
+                                                 u_moon, rm);
+        sh->fraction_ld = oi__clamp(sh->fraction_ld + (exact - sh->fraction), (oi_real)0,
+                                    (oi_real)1);
+        sh->fraction = exact;
+    }
+#else
+    (void)m;
 #endif
 }
 
@@ -119,7 +132,7 @@ int oi__moon_shadow(const oi_real sun_km[3], const oi_real moon_km[3],
         sh->fraction = fm;
         sh->fraction_ld = fm_ld;
     } else if (sh->region != OI_SHADOW_UMBRA) {
-        both_occulters(u_sun, u_moon, point_km, rm, sep, fm, fm_ld, sh);
+        both_occulters(u_sun, u_moon, point_km, rm, sep, fm, fm_ld, m, sh);
     }
     new_disc = chosen_disc(m, sh->fraction, sh->fraction_ld);
     if (sh->fraction_atm == old)
@@ -146,8 +159,23 @@ oi_real oi__moon_disc_visible(const oi_real point_km[3], const oi_real u_moon[3]
     anti[0] = -point_km[0] / dp;
     anti[1] = -point_km[1] / dp;
     anti[2] = -point_km[2] / dp;
-    re = apparent_radius(m->earth_radius_km, dp);
     rm = apparent_radius(m->moon_radius_km, dm);
+#ifndef OI_NO_OBLATE
+    if (m->earth_shape == OI_EARTH_WGS84) {
+        /* the ellipsoid: its silhouette's radius towards the Moon decides
+         * the certain cases (a hundredth of the Moon's radius to spare), the
+         * exact fraction behind it the others (src/oblate.c) */
+        const oi_real sep = oi__angle_unit(u_moon, anti), margin = OI_R(0.01) * rm;
+        re = oi__oblate_radius_towards(point_km, m->earth_radius_km, u_moon);
+        if (sep >= re + rm + margin) return (oi_real)1;
+        if (sep <= re - rm - margin) return (oi_real)0;
+        if (rm <= OI_R(0.5))
+            return oi__oblate_visible(u_moon, rm, point_km, m->earth_radius_km, NULL, (oi_real)0);
+        (void)oi__disc_fractions(rm, re, sep, &frac, NULL);
+        return frac;
+    }
+#endif
+    re = apparent_radius(m->earth_radius_km, dp);
     (void)oi__disc_fractions(rm, re, oi__angle_unit(u_moon, anti), &frac, NULL);
     return frac;
 }

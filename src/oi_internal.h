@@ -305,6 +305,24 @@ oi_real oi__fraction_ld_two(oi_real rs, oi_real re, oi_real de, oi_real rm, oi_r
 #endif
 #endif
 
+#ifndef OI_NO_OBLATE
+/* The WGS-84 ellipsoid of equatorial radius a, the frame's z axis its
+ * rotation axis (oi_model.earth_shape = OI_EARTH_WGS84; src/oblate.c):
+ * 1 when p is outside it; its geocentric radius in the direction of p; the
+ * angular radius of its silhouette seen from p along the great circle from
+ * the nadir towards the unit direction s; the visible fraction of the
+ * uniform disc of unit direction s and apparent radius r seen from p behind
+ * it and (mo not NULL) a sphere of unit direction mo and apparent radius rm. */
+int oi__oblate_outside(const oi_real p[3], oi_real a);
+oi_real oi__oblate_geocentric_radius(const oi_real p[3], oi_real a);
+oi_real oi__oblate_radius_towards(const oi_real p[3], oi_real a, const oi_real s[3]);
+oi_real oi__oblate_visible(const oi_real s[3], oi_real r, const oi_real p[3], oi_real a,
+                           const oi_real mo[3], oi_real rm);
+/* Distance from o (outside) along the unit direction u to the ellipsoid,
+ * or -1 when the ray misses it. */
+oi_real oi__oblate_ray_hit(const oi_real o[3], const oi_real u[3], oi_real a);
+#endif
+
 static inline void oi__zero3(oi_real a[3])
 {
     a[0] = a[1] = a[2] = (oi_real)0;

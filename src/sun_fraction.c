@@ -142,6 +142,11 @@ int oi_sun_fraction(const oi_real sun_km[3], const oi_real point_km[3],
 }
 #endif
 
+/* Largest apparent solar radius for the ellipsoid's exact fraction (beyond,
+ * an observer within 2.1 solar radii of the Sun's centre, the equivalent
+ * sphere's). */
+#define OBLATE_RS_MAX OI_R(0.5)
+
 /* The geometry of one call: distances, and the two discs on the sky of the
  * point. */
 typedef struct {
@@ -150,6 +155,9 @@ typedef struct {
     oi_real q_earth; /* |point|^2 - R^2 near the surface (|point| < 2R), else -1 */
     oi_real sep;     /* angle between the Sun's and the Earth's centres (rad) */
     oi_real rs, re;  /* apparent radii of the Sun and the Earth (rad) */
+#ifndef OI_NO_OBLATE
+    oi_real s_hat[3]; /* unit vector from the point to the Sun (the ellipsoid) */
+#endif
 } sun_geom;
 
 /* Step 1: the positions validated (the statuses of the contract, in order),
@@ -162,6 +170,13 @@ static int sun_geometry(const oi_real sun_km[3], const oi_real point_km[3], cons
     ds = oi__norm(sun_km);
     g->dp = oi__norm(point_km);
     if (ds == (oi_real)0 || g->dp == (oi_real)0) return OI_ERR_ZERO_VECTOR;
+#ifndef OI_NO_OBLATE
+    if (m->earth_shape == OI_EARTH_WGS84) {
+        /* the ellipsoid (src/oblate.c): its outside, and the plain forms */
+        if (!oi__oblate_outside(point_km, m->earth_radius_km)) return OI_ERR_BELOW_SURFACE;
+        g->q_earth = (oi_real)-1;
+    } else
+#endif
     if (g->dp < (oi_real)2 * m->earth_radius_km) {
         /* near the surface: the sign of |p|^2 - R^2 decides, and its value
          * gives the Earth's apparent radius atan2(R, sqrt(|p|^2 - R^2)) */
@@ -184,13 +199,26 @@ static int sun_geometry(const oi_real sun_km[3], const oi_real point_km[3], cons
     (void)oi__divide3(anti, g->dp, anti);
     (void)oi__divide3(rel, g->dsp, rel);
     g->sep = oi__angle_unit(rel, anti);
+#ifndef OI_NO_OBLATE
+    memcpy(g->s_hat, rel, sizeof rel);
+#endif
     return OI_OK;
 }
 
 /* Step 2: the apparent radii of the two discs (Note 1). */
-static void apparent_radii(const oi_model *m, sun_geom *g)
+static void apparent_radii(const oi_real point_km[3], const oi_model *m, sun_geom *g)
 {
     g->rs = apparent_radius(m->sun_radius_km, g->dsp);
+#ifndef OI_NO_OBLATE
+    /* the ellipsoid: its silhouette's angular radius along the great circle
+     * from the nadir towards the Sun (the equivalent sphere's) */
+    if (m->earth_shape == OI_EARTH_WGS84) {
+        g->re = oi__oblate_radius_towards(point_km, m->earth_radius_km, g->s_hat);
+        return;
+    }
+#else
+    (void)point_km;
+#endif
     g->re = g->q_earth > (oi_real)0 ? OI_ATAN2(m->earth_radius_km, OI_SQRT(g->q_earth))
                                     : apparent_radius(m->earth_radius_km, g->dp);
 }
@@ -304,6 +332,70 @@ static int sun_fractions(const sun_geom *g, int need_ld, oi_real *frac, oi_real 
     return disc_fractions(g->rs, g->re, g->sep, need_ld, frac, frac_ld);
 }
 
+#ifndef OI_NO_OBLATE
+/* The ellipsoid's shadow (docs/shadow.md section 10): the equivalent
+ * sphere's region and fractions (the silhouette's radius along the great
+ * circle towards the Sun), and where the Sun's disc comes within a hundredth
+ * of its radius of that sphere's edges the exact visible fraction of the
+ * uniform disc behind the elliptic silhouette (src/oblate.c); the
+ * limb-darkened fraction is the equivalent sphere's moved by the same
+ * amount. The region follows the exact fraction. */
+static OI_NOINLINE int oblate_fractions(const oi_real point_km[3], const oi_model *m,
+                                        const sun_geom *g, int need_ld, oi_real *frac,
+                                        oi_real *frac_ld)
+{
+    int region = sun_fractions(g, need_ld, frac, frac_ld);
+    const oi_real margin = OI_R(0.01) * g->rs;
+    oi_real exact, moved;
+    if (g->dp >= g->dsp || !(g->rs <= OBLATE_RS_MAX) || g->sep >= g->re + g->rs + margin ||
+        g->sep <= g->re - g->rs - margin)
+        return region;
+    exact = oi__oblate_visible(g->s_hat, g->rs, point_km, m->earth_radius_km, NULL, (oi_real)0);
+    moved = exact - *frac;
+    *frac = exact;
+    *frac_ld = oi__clamp(*frac_ld + moved, (oi_real)0, (oi_real)1);
+    if (exact == (oi_real)1) {
+        *frac_ld = (oi_real)1;
+        return OI_SHADOW_LIT;
+    }
+    if (exact == (oi_real)0) {
+        *frac_ld = (oi_real)0;
+        return OI_SHADOW_UMBRA;
+    }
+    return region == OI_SHADOW_ANNULAR ? region : OI_SHADOW_PENUMBRA;
+}
+#endif
+
+/* The region and fractions of the model's Earth. */
+static int earth_fractions(const oi_real point_km[3], const oi_model *m, const sun_geom *g,
+                           int need_ld, oi_real *frac, oi_real *frac_ld)
+{
+#ifndef OI_NO_OBLATE
+    if (m->earth_shape == OI_EARTH_WGS84)
+        return oblate_fractions(point_km, m, g, need_ld, frac, frac_ld);
+#else
+    (void)point_km;
+    (void)m;
+#endif
+    return sun_fractions(g, need_ld, frac, frac_ld);
+}
+
+#if !defined(OI_NO_OBLATE) && !defined(OI_NO_ATMOSPHERE)
+/* The atmosphere over the ellipsoid: the table's coordinates about the
+ * equivalent sphere, the one of the silhouette's angular radius towards the
+ * Sun (out->earth_radius_rad, already set), radius |point| sin(r_e): the
+ * grazing rays' heights are measured above the ellipsoid's limb there. */
+static OI_NOINLINE int oblate_atmosphere(const oi_real sun_km[3], const oi_real point_km[3],
+                                         const oi_model *m, oi_real frac, oi_real frac_ld,
+                                         oi_shadow *out, oi_real light_dir[3])
+{
+    oi_model local = *m;
+    local.earth_radius_km = oi__norm_bounded(point_km) * OI_SIN(out->earth_radius_rad);
+    return oi__atm_fraction(sun_km, point_km, &local, frac, frac_ld, &out->fraction_atm,
+                            light_dir);
+}
+#endif
+
 /* Step 4, the atmosphere (Note 5): the single place where refraction and
  * extinction modify the sunlight reaching the point; without it the
  * model's choice of disc, uniform or limb-darkened. */
@@ -321,6 +413,10 @@ static int atmosphere_fraction(const oi_real sun_km[3], const oi_real point_km[3
     /* src/atmosphere.c: refraction and extinction from the baked table;
      * OI_WARN_TABLE_RANGE outside its z range (geometric kept). */
     if (m->no_atmosphere) return OI_OK;
+#ifndef OI_NO_OBLATE
+    if (m->earth_shape == OI_EARTH_WGS84)
+        return oblate_atmosphere(sun_km, point_km, m, frac, frac_ld, out, light_dir);
+#endif
     return oi__atm_fraction(sun_km, point_km, m, frac, frac_ld, &out->fraction_atm, light_dir);
 #endif
 }
@@ -339,13 +435,13 @@ int oi__sun_shadow(const oi_real sun_km[3], const oi_real point_km[3], const oi_
     memset(out, 0, sizeof *out);
     st = sun_geometry(sun_km, point_km, resolved, &g);
     if (st != OI_OK) return st;
-    apparent_radii(resolved, &g);
-    region = sun_fractions(&g, 1, &frac, &frac_ld);
+    apparent_radii(point_km, resolved, &g);
+    region = earth_fractions(point_km, resolved, &g, 1, &frac, &frac_ld);
     out->fraction = frac;
     out->fraction_ld = frac_ld;
+    out->earth_radius_rad = g.re; /* before the atmosphere: the ellipsoid's uses it */
     st = atmosphere_fraction(sun_km, point_km, resolved, frac, frac_ld, out, light_dir);
     out->sun_radius_rad = g.rs;
-    out->earth_radius_rad = g.re;
     out->separation_rad = g.sep;
     out->sun_distance_km = g.dsp;
     out->region = region;
@@ -380,14 +476,14 @@ int oi__sun_shadow_want(const oi_real sun_km[3], const oi_real point_km[3],
     memset(out, 0, sizeof *out);
     st = sun_geometry(sun_km, point_km, resolved, &g);
     if (st != OI_OK) return st;
-    apparent_radii(resolved, &g);
-    region = sun_fractions(&g, need_ld, &frac, &frac_ld);
+    apparent_radii(point_km, resolved, &g);
+    region = earth_fractions(point_km, resolved, &g, need_ld, &frac, &frac_ld);
     out->fraction = frac;
     out->fraction_ld = frac_ld;
+    out->earth_radius_rad = g.re; /* before the atmosphere: the ellipsoid's uses it */
     if (want & OI__WANT_ATM)
         st = atmosphere_fraction(sun_km, point_km, resolved, frac, frac_ld, out, light_dir);
     out->sun_radius_rad = g.rs;
-    out->earth_radius_rad = g.re;
     out->separation_rad = g.sep;
     out->sun_distance_km = g.dsp;
     out->region = region;

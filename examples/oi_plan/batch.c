@@ -31,7 +31,7 @@ enum column {
     C_SKY,
     C_TARGET_VX, C_TARGET_VY, C_TARGET_VZ,
     C_OBSERVER_VX, C_OBSERVER_VY, C_OBSERVER_VZ,
-    C_TARGET_SHAPE, C_Q_W, C_Q_X, C_Q_Y, C_Q_Z,
+    C_TARGET_SHAPE, C_Q_W, C_Q_X, C_Q_Y, C_Q_Z, C_EARTH_SHAPE,
     C_COUNT
 };
 
@@ -45,7 +45,7 @@ static const char *const column_name[C_COUNT] = {
     "sky",
     "target_vx", "target_vy", "target_vz",
     "observer_vx", "observer_vy", "observer_vz",
-    "target_shape", "q_w", "q_x", "q_y", "q_z"
+    "target_shape", "q_w", "q_x", "q_y", "q_z", "earth_shape"
 };
 
 typedef struct batch {
@@ -449,6 +449,20 @@ static int run_row(batch *b, const csv_reader *r, plan_row *row)
         return 0;
     }
     model.no_atmosphere = x == 0;
+
+    /* the Earth's shape: sphere (default, also an empty field) or wgs84 */
+    s = field_of(b, r, C_EARTH_SHAPE, &short_row);
+    if (s != NULL && s[0] != '\0') {
+        if (same_nocase(s, "wgs84")) {
+            model.earth_shape = OI_EARTH_WGS84;
+        } else if (same_nocase(s, "sphere")) {
+            model.earth_shape = OI_EARTH_SPHERE;
+        } else {
+            row_error(b, r->rec_line, b->col[C_EARTH_SHAPE],
+                      "earth_shape must be sphere (default) or wgs84; got", s);
+            return 0;
+        }
+    }
 
     st = parse_target(b, r, &sc);
     if (st == -1) return 0;

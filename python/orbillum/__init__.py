@@ -141,6 +141,7 @@ _MODEL_WORDS = {
     "earth_model": {"table": 0, "lambert": 1},
     "moon_model": {"phase_law": 0, "lambert": 1},
     "limb_darkening": {"uniform": 0, "darkened": 1},
+    "earth_shape": {"sphere": 0, "wgs84": 1},
 }
 
 

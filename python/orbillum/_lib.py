@@ -67,6 +67,8 @@ OI_LIMB_UNIFORM = 0   # oi_model.limb_darkening
 OI_LIMB_DARKENED = 1
 OI_EARTH_REFLECT_MOMENTS = 0  # oi_model.earth_reflection
 OI_EARTH_REFLECT_MEAN = 1
+OI_EARTH_SPHERE = 0   # oi_model.earth_shape
+OI_EARTH_WGS84 = 1
 
 OI_SHADOW_LIT = 0     # oi_shadow.region
 OI_SHADOW_PENUMBRA = 1
@@ -113,6 +115,7 @@ OI_AU_KM = 149597870.7
 OI_TSI_W_M2 = 1361.0
 OI_SUN_RADIUS_KM = 695700.0
 OI_EARTH_RADIUS_KM = 6378.137
+OI_WGS84_INV_FLATTENING = 298.257223563
 OI_MOON_RADIUS_KM = 1737.4
 OI_MOON_MEAN_DISTANCE_KM = 384400.0
 OI_EARTH_ALBEDO_DEFAULT = 0.30
@@ -176,6 +179,7 @@ class oi_model(ctypes.Structure):
         ("earth_model", c_int), ("moon_model", c_int), ("limb_darkening", c_int),
         ("no_atmosphere", c_int), ("earth_table", POINTER(oi_earth_table)),
         ("atm_table", POINTER(oi_atm_table)), ("earth_reflection", c_int),
+        ("earth_shape", c_int),
     ]
 
 

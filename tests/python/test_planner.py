@@ -173,6 +173,29 @@ def test_atmosphere_off_equals_geometric_fraction():
         assert r["sun_fraction_atm"] == r["sun_fraction"]
 
 
+def test_earth_shape_column():
+    """earth_shape: empty and sphere are the default, bit for bit; wgs84 casts the
+    ellipsoid's shadow (over the pole its limb is 21 km lower: a point there in
+    the sphere's penumbra is lit) and accepts a target between the polar and
+    the equatorial radius."""
+    # behind the Earth, just above the sphere's shadow edge over the pole
+    edge = dict(sun_x=AU, sun_y=0, sun_z=0, target_x=-3000, target_y=0, target_z=6374.0)
+    below = dict(LIT, target_x=0, target_y=0, target_z=6360.0)
+    rows = [dict(edge), dict(edge, earth_shape="sphere"), dict(edge, earth_shape=""),
+            dict(edge, earth_shape="wgs84"), dict(edge, earth_shape="WGS84"),
+            dict(below, earth_shape="wgs84"), dict(below)]
+    code, out, err = run_csv(table(rows))
+    r = parse(out)
+    assert r[0]["sun_fraction"] == r[1]["sun_fraction"] == r[2]["sun_fraction"]
+    assert float(r[0]["sun_fraction"]) < 1
+    assert r[3]["sun_fraction"] == r[4]["sun_fraction"]
+    assert float(r[3]["sun_fraction"]) > float(r[0]["sun_fraction"])
+    assert r[5]["status"] == "OK"
+    assert abs(float(r[5]["earth_h_km"]) - (6360.0 - 6378.137 * (1 - 1 / 298.257223563))) < 1e-6
+    assert r[6]["status"] == "ERR_BELOW_SURFACE"
+    assert code == 1
+
+
 def test_column_order_and_unknown_columns():
     rows = [dict(LIT_OBS, id="a"), dict(DARK, id="b")]
     cols = list(LIT_OBS.keys()) + ["id"]
@@ -338,6 +361,7 @@ def test_nonfinite_values(value):
     ("terms", "moon", "ERR_PARSE"),       # moon asked for without a position
     ("atmosphere", "2", "ERR_PARSE"),
     ("sky", "stars", "ERR_PARSE"),
+    ("earth_shape", "oblate", "ERR_PARSE"),
     ("sky", "zodiacal+", "ERR_PARSE"),
     ("observer_y", "", "ERR_PARSE"),      # two of three observer coordinates
 ])

@@ -1,0 +1,518 @@
+/* SPDX-License-Identifier: MIT */
+/* oblate.c: the WGS-84 ellipsoid as the Earth's occulter (oi_model.earth_shape
+ * = OI_EARTH_WGS84): inside/outside, its geocentric radius, the angular radius
+ * of its silhouette towards a direction, and the visible fraction of a disc
+ * (the Sun's, the Moon's) behind its elliptic silhouette cone and, optionally,
+ * a second spherical occulter. Internal, declared in src/oi_internal.h;
+ * removed with OI_NO_OBLATE. Model, method and measured accuracy:
+ * docs/shadow.md section 10. */
+#include "oi_internal.h"
+
+#ifndef OI_NO_OBLATE
+
+/* (a/b)^2 - 1 = f (2 - f) / (1 - f)^2 for the WGS-84 flattening
+ * (NIMA TR8350.2, 3rd ed., 2000, table 3.1), a constant expression. */
+#define WGS84_F (1.0 / OI_WGS84_INV_FLATTENING)
+#define K2M1 ((oi_real)(WGS84_F * (2.0 - WGS84_F) / ((1.0 - WGS84_F) * (1.0 - WGS84_F))))
+
+/* x^2 + y^2 + (a/b)^2 z^2 over a^2: > 1 outside the ellipsoid of
+ * equatorial radius a (the frame's z axis the rotation axis). */
+static oi_real scaled_norm2(const oi_real p[3], oi_real a)
+{
+    const oi_real x = p[0] / a, y = p[1] / a, z = p[2] / a;
+    return x * x + y * y + z * z + K2M1 * z * z;
+}
+
+int oi__oblate_outside(const oi_real p[3], oi_real a)
+{
+    return scaled_norm2(p, a) > (oi_real)1;
+}
+
+oi_real oi__oblate_geocentric_radius(const oi_real p[3], oi_real a)
+{
+    return oi__norm_bounded(p) / OI_SQRT(scaled_norm2(p, a));
+}
+
+/* Distance along the unit direction u from o (outside) to where the ray
+ * first meets the ellipsoid, or -1 when it misses: z scaled by a/b, the
+ * ray o' + s u' against the sphere of radius a, s^2 |u'|^2 + 2 s o'.u' +
+ * |o'|^2 - a^2 = 0, the near root in the form without cancellation. */
+oi_real oi__oblate_ray_hit(const oi_real o[3], const oi_real u[3], oi_real a)
+{
+    const oi_real k2 = (oi_real)1 + K2M1;
+    const oi_real uu = u[0] * u[0] + u[1] * u[1] + k2 * u[2] * u[2];
+    const oi_real ou = o[0] * u[0] + o[1] * u[1] + k2 * o[2] * u[2];
+    const oi_real n = OI_SQRT(scaled_norm2(o, a)) * a; /* |o'| */
+    const oi_real c = (n - a) * (n + a), d = ou * ou - uu * c;
+    if (!(ou < (oi_real)0) || !(d >= (oi_real)0) || !(c > (oi_real)0)) return (oi_real)-1;
+    return c / (-ou + OI_SQRT(d));
+}
+
+/*
+ * A cone of directions u from the point, in the quadratic form
+ *   inside  <=>  (w.u)^2 - c (u.u + e u_z^2) >= 0  and  sigma (w.u) < 0,
+ * expressed in the frame (s, eu, ev) of the back disc: u = s + x eu + y ev
+ * (gnomonic coordinates about the disc's centre). m: the form's entries
+ * ss, su, sv, uu, uv, vv; l: sigma (w.s, w.eu, w.ev).
+ * The ellipsoid seen from p (p outside): scaling z by k = a/b maps it to the
+ * sphere of radius a, p to p' = (x, y, k z) and u to u' = (u_x, u_y, k u_z);
+ * u meets it when (p'.u')^2 >= (|p'|^2 - a^2) |u'|^2 with p'.u' < 0, and
+ * p'.u' = w.u for w = (x, y, k^2 z): divided by |p'|^2, w = (x, y, k^2 z)/|p'|,
+ * c = 1 - a^2/|p'|^2, e = k^2 - 1, sigma = 1. A sphere of unit direction d
+ * and apparent radius r: w = d, c = cos^2 r, e = 0, sigma = -1.
+ */
+typedef struct {
+    oi_real m[6];
+    oi_real l[3];
+} cone;
+
+static void cone_in_frame(const oi_real w[3], oi_real c, oi_real e, oi_real s2, oi_real sigma,
+                          const oi_real f[3][3], cone *k)
+{
+    /* (w.a)(w.b) - c a.b = -(w x a).(w x b) + (|w|^2 - c) a.b: the cross
+     * products are small where the form is (directions near the cone's
+     * boundary, far from its axis ... or near it), without the cancellation
+     * of two numbers near 1; s2 = |w|^2 - c is formed by the caller */
+    oi_real x[3][3];
+    const oi_real ce = c * e;
+    int i;
+    for (i = 0; i < 3; ++i) oi__cross(w, f[i], x[i]);
+    k->m[0] = s2 - oi__dot(x[0], x[0]) - ce * f[0][2] * f[0][2];
+    k->m[1] = -oi__dot(x[0], x[1]) - ce * f[0][2] * f[1][2];
+    k->m[2] = -oi__dot(x[0], x[2]) - ce * f[0][2] * f[2][2];
+    k->m[3] = s2 - oi__dot(x[1], x[1]) - ce * f[1][2] * f[1][2];
+    k->m[4] = -oi__dot(x[1], x[2]) - ce * f[1][2] * f[2][2];
+    k->m[5] = s2 - oi__dot(x[2], x[2]) - ce * f[2][2] * f[2][2];
+    k->l[0] = sigma * oi__dot(w, f[0]);
+    k->l[1] = sigma * oi__dot(w, f[1]);
+    k->l[2] = sigma * oi__dot(w, f[2]);
+}
+
+/* The ellipsoid's cone seen from p (outside), world coordinates; *s2 =
+ * |w|^2 - c = (k^2 (k^2 - 1) z^2 + a^2) / |p'|^2 without cancellation. */
+static void earth_cone_world(const oi_real p[3], oi_real a, oi_real w[3], oi_real *c,
+                             oi_real *s2)
+{
+    const oi_real n2 = scaled_norm2(p, a); /* |p'|^2 / a^2 > 1 */
+    const oi_real n = OI_SQRT(n2);
+    const oi_real inv = (oi_real)1 / (n * a), z = p[2] / a;
+    w[0] = p[0] * inv;
+    w[1] = p[1] * inv;
+    w[2] = p[2] * ((oi_real)1 + K2M1) * inv;
+    *c = (n - (oi_real)1) * (n + (oi_real)1) / n2;
+    *s2 = (((oi_real)1 + K2M1) * K2M1 * z * z + (oi_real)1) / n2;
+}
+
+/* Largest |x| a root may take: beyond every chord (|x| <= tan r < 1e16). */
+#define FAR_X OI_R(1e30)
+
+/*
+ * The part of the chord x in [-h, h] at height y inside the cone: 1 with
+ * [*xa, *xb] (xa < xb), or 0 when none. Along the line the form is
+ * alpha x^2 + 2 beta x + gamma, the front condition l0 + l1 x < 0; the
+ * point where the line crosses the plane w.u = 0 has a negative form, so
+ * the front part of {form >= 0} is one interval.
+ */
+static int chord_cover(const cone *k, oi_real y, oi_real h, oi_real *xa, oi_real *xb)
+{
+    const oi_real alpha = k->m[3];
+    const oi_real beta = k->m[1] + y * k->m[4];
+    const oi_real gamma = k->m[0] + y * ((oi_real)2 * k->m[2] + y * k->m[5]);
+    const oi_real l0 = k->l[0] + y * k->l[2], l1 = k->l[1];
+    oi_real lo = -h, hi = h, r1, r2, disc, q, t;
+    /* the front half-line */
+    if (l1 > (oi_real)0) {
+        t = -l0 / l1;
+        if (t < hi) hi = t;
+    } else if (l1 < (oi_real)0) {
+        t = -l0 / l1;
+        if (t > lo) lo = t;
+    } else if (!(l0 < (oi_real)0)) {
+        return 0;
+    }
+    if (!(lo < hi)) return 0;
+    disc = beta * beta - alpha * gamma;
+    if (alpha == (oi_real)0) {
+        /* linear: 2 beta x + gamma >= 0 */
+        if (beta == (oi_real)0) {
+            if (!(gamma >= (oi_real)0)) return 0;
+        } else {
+            t = -gamma / ((oi_real)2 * beta);
+            if (beta > (oi_real)0) {
+                if (t > lo) lo = t;
+            } else if (t < hi) {
+                hi = t;
+            }
+        }
+    } else if (!(disc >= (oi_real)0)) {
+        if (alpha < (oi_real)0) return 0; /* the form negative on the whole line */
+    } else {
+        q = -(beta + (beta < (oi_real)0 ? -OI_SQRT(disc) : OI_SQRT(disc)));
+        if (q == (oi_real)0) {
+            r1 = r2 = (oi_real)0;
+        } else {
+            r1 = q / alpha;
+            r2 = gamma / q;
+            if (r1 > r2) {
+                t = r1;
+                r1 = r2;
+                r2 = t;
+            }
+        }
+        if (alpha < (oi_real)0) {
+            if (r1 > lo) lo = r1;
+            if (r2 < hi) hi = r2;
+        } else if (l1 > (oi_real)0 || (l1 == (oi_real)0 && r1 - lo >= hi - r2)) {
+            /* the front nappe is the side below r1 */
+            if (r1 < hi) hi = r1;
+        } else if (r2 > lo) {
+            lo = r2;
+        }
+    }
+    if (!(lo < hi)) return 0;
+    *xa = lo;
+    *xb = hi;
+    return 1;
+}
+
+/* Solid angle per unit y of the chord x in [0, x] at height y, the
+ * gnomonic element dx dy / (1 + x^2 + y^2)^(3/2) integrated over x. */
+static oi_real chord_h(oi_real x, oi_real yy)
+{
+    return x / (yy * OI_SQRT(yy + x * x));
+}
+
+/* What the occulters cover of the chord at height y (solid angle per unit
+ * y); *full: the whole chord's. */
+static oi_real chord_hidden(const cone *k, int n, oi_real y, oi_real h, oi_real *full)
+{
+    const oi_real yy = (oi_real)1 + y * y;
+    oi_real a[2], b[2], hid = (oi_real)0;
+    int i, nc = 0;
+    *full = (oi_real)2 * chord_h(h, yy);
+    for (i = 0; i < n; ++i)
+        if (chord_cover(&k[i], y, h, &a[nc], &b[nc])) ++nc;
+    if (nc == 2 && a[1] < b[0] && a[0] < b[1]) {
+        /* overlapping: one union */
+        a[0] = a[0] < a[1] ? a[0] : a[1];
+        b[0] = b[0] > b[1] ? b[0] : b[1];
+        nc = 1;
+    }
+    for (i = 0; i < nc; ++i) hid += chord_h(b[i], yy) - chord_h(a[i], yy);
+    return hid < *full ? hid : *full;
+}
+
+/* A circle on the sky in the back disc's frame: the directions
+ * cr c + sr (cos th g1 + sin th g2) (c, g1, g2 orthonormal). */
+typedef struct {
+    oi_real c[3], g1[3], g2[3], cr, sr;
+} circle;
+
+/* The cone's form at the circle's point of angle th. */
+static oi_real circle_form(const cone *k, const circle *q, oi_real th, oi_real u[3])
+{
+    oi_real s, c;
+    int i;
+    OI_SINCOS(th, &s, &c);
+    for (i = 0; i < 3; ++i) u[i] = q->cr * q->c[i] + q->sr * (c * q->g1[i] + s * q->g2[i]);
+    return k->m[0] * u[0] * u[0] +
+           (oi_real)2 * u[0] * (k->m[1] * u[1] + k->m[2] * u[2]) +
+           k->m[3] * u[1] * u[1] + (oi_real)2 * k->m[4] * u[1] * u[2] + k->m[5] * u[2] * u[2];
+}
+
+#define N_LIMB_SAMPLES 32
+#define MAX_BREAKS 16
+#define ROOT_MAX_IT 60
+
+static void add_break(oi_real *brk, int *nb, oi_real psi)
+{
+    if (*nb < MAX_BREAKS && psi > -OI_HALF_PI_R && psi < OI_HALF_PI_R) brk[(*nb)++] = psi;
+}
+
+/* The break psi of a crossing point u (frame coordinates) when it lies on
+ * or inside the back disc of gnomonic radius t: y = u_v / u_s. */
+static void add_point(oi_real *brk, int *nb, const oi_real u[3], oi_real t)
+{
+    oi_real y;
+    if (!(u[0] > (oi_real)0)) return;
+    if (u[1] * u[1] + u[2] * u[2] > OI_R(1.000001) * t * t * u[0] * u[0]) return;
+    y = u[2] / u[0];
+    if (!(OI_FABS(y) < t)) return;
+    add_break(brk, nb, OI_ATAN2(y, OI_SQRT((t - y) * (t + y))));
+}
+
+/* Where cone k's boundary crosses circle q inside the disc: sign changes of
+ * the form over N_LIMB_SAMPLES angles, each refined by the Illinois variant
+ * of regula falsi to a few ulp (the form on a circle is a trigonometric
+ * polynomial of degree 2: at most 4 zeros). */
+static OI_NOINLINE void crossing_breaks(const cone *k, const circle *q, oi_real t, oi_real *brk,
+                                        int *nb)
+{
+    const oi_real step = (oi_real)2 * OI_PI_R / (oi_real)N_LIMB_SAMPLES;
+    oi_real u[3], f0 = circle_form(k, q, (oi_real)0, u);
+    int i, it;
+    for (i = 0; i < N_LIMB_SAMPLES; ++i) {
+        oi_real lo = step * (oi_real)i, hi = step * (oi_real)(i + 1);
+        oi_real flo = f0, fhi = circle_form(k, q, hi, u), x = lo, fx;
+        int side = 0;
+        f0 = fhi;
+        if (!((flo < (oi_real)0 && fhi >= (oi_real)0) || (flo >= (oi_real)0 && fhi < (oi_real)0)))
+            continue;
+        for (it = 0; it < ROOT_MAX_IT && hi - lo > OI_R(4e-16) * (oi_real)8; ++it) {
+            x = (lo * fhi - hi * flo) / (fhi - flo);
+            if (!(x > lo && x < hi)) x = OI_R(0.5) * (lo + hi);
+            fx = circle_form(k, q, x, u);
+            if ((fx < (oi_real)0) == (flo < (oi_real)0)) {
+                lo = x;
+                flo = fx;
+                if (side == -1) fhi *= OI_R(0.5);
+                side = -1;
+            } else {
+                hi = x;
+                fhi = fx;
+                if (side == 1) flo *= OI_R(0.5);
+                side = 1;
+            }
+            if (fx == (oi_real)0) break;
+        }
+        (void)circle_form(k, q, x, u);
+        add_point(brk, nb, u, t);
+    }
+}
+
+/* Breaks where a chord y = const is tangent to cone k's boundary: the
+ * discriminant of the form along the chord vanishes. */
+static void tangent_breaks(const cone *k, oi_real t, oi_real *brk, int *nb)
+{
+    oi_real a2, b2, c2, d, q, y;
+    /* chords tangent to the boundary: (m_su + y m_uv)^2 - m_uu (m_ss + 2 y
+     * m_sv + y^2 m_vv) = a2 y^2 + 2 b2 y + c2 = 0 */
+    a2 = k->m[4] * k->m[4] - k->m[3] * k->m[5];
+    b2 = k->m[1] * k->m[4] - k->m[3] * k->m[2];
+    c2 = k->m[1] * k->m[1] - k->m[3] * k->m[0];
+    d = b2 * b2 - a2 * c2;
+    if (!(d >= (oi_real)0)) return;
+    q = -(b2 + (b2 < (oi_real)0 ? -OI_SQRT(d) : OI_SQRT(d)));
+    if (q == (oi_real)0) return;
+    y = c2 / q;
+    if (OI_FABS(y) < t) add_break(brk, nb, OI_ATAN2(y, OI_SQRT((t - y) * (t + y))));
+    if (a2 != (oi_real)0) {
+        y = q / a2;
+        if (OI_FABS(y) < t) add_break(brk, nb, OI_ATAN2(y, OI_SQRT((t - y) * (t + y))));
+    }
+}
+
+/* 8-point Gauss-Legendre rule on [0, 1], nodes x and 1 - x with one weight
+ * (the values of src/cap_segment.c). */
+static const oi_real gl8[4][2] = {
+    {OI_R(0.0198550717512318841582), OI_R(0.0506142681451881295763)},
+    {OI_R(0.101666761293186630204), OI_R(0.111190517226687235272)},
+    {OI_R(0.237233795041835507091), OI_R(0.156853322938943643669)},
+    {OI_R(0.40828267875217509753), OI_R(0.181341891689180991483)},
+};
+
+/* Panels per piece between breaks, each an 8-point rule in u with psi = p0
+ * + (p1 - p0)(1 - cos pi u)/2 clustering the nodes at both breaks; their
+ * edges in u graded towards both ends, where a neighbouring break (a
+ * chord's tangency next to a limb crossing) may lie just beyond the piece.
+ * Every occulter wider than twice the disc (the Earth up to ~700,000 km):
+ * 8 panels; a narrower one (the Earth beyond, the Moon) 14. */
+#define N_WIDE 8
+#define N_NARROW 14
+static const oi_real edge_wide[N_WIDE + 1] = {
+    OI_R(0.0), OI_R(0.015625), OI_R(0.0625), OI_R(0.25), OI_R(0.5),
+    OI_R(0.75), OI_R(0.9375), OI_R(0.984375), OI_R(1.0)};
+static const oi_real edge_narrow[N_NARROW + 1] = {
+    OI_R(0.0),   OI_R(0.00390625), OI_R(0.015625), OI_R(0.0625), OI_R(0.125),
+    OI_R(0.25),  OI_R(0.375),      OI_R(0.5),      OI_R(0.625),  OI_R(0.75),
+    OI_R(0.875), OI_R(0.9375),     OI_R(0.984375), OI_R(0.99609375), OI_R(1.0)};
+
+/* The integrals over psi in [p0, p1] of the hidden part of the chord (the
+ * return value) and of the visible part (added to *vis), times dy/dpsi. */
+static OI_NOINLINE oi_real piece(const cone *k, int n, oi_real t, oi_real p0, oi_real p1,
+                                 int narrow, oi_real *vis)
+{
+    const oi_real hw = OI_R(0.5) * (p1 - p0);
+    const oi_real *edge = narrow ? edge_narrow : edge_wide;
+    const int panels = narrow ? N_NARROW : N_WIDE;
+    oi_real sum = (oi_real)0, vsum = (oi_real)0;
+    int pn, i, j;
+    for (pn = 0; pn < panels; ++pn) {
+        const oi_real u0 = edge[pn], du = edge[pn + 1] - edge[pn];
+        oi_real part = (oi_real)0, vpart = (oi_real)0;
+        for (i = 0; i < 4; ++i) {
+            for (j = 0; j < 2; ++j) {
+                const oi_real x = j ? (oi_real)1 - gl8[i][0] : gl8[i][0];
+                const oi_real u = u0 + du * x;
+                oi_real su, cu, sp, cp, psi, full, hid, wgt;
+                OI_SINCOS(OI_PI_R * u, &su, &cu);
+                psi = p0 + hw * ((oi_real)1 - cu);
+                OI_SINCOS(psi, &sp, &cp);
+                hid = chord_hidden(k, n, t * sp, t * cp, &full);
+                wgt = gl8[i][1] * t * cp * su;
+                part += wgt * hid;
+                vpart += wgt * (full - hid);
+            }
+        }
+        sum += part * du;
+        vsum += vpart * du;
+    }
+    *vis += vsum * hw * OI_PI_R;
+    return sum * hw * OI_PI_R;
+}
+
+static void disc_frame(const oi_real s[3], const oi_real toward[3], oi_real f[3][3]);
+
+/* The Earth's cone crossing the Moon's limb (centre m in the frame, radius
+ * rm) inside the disc: where the two covered intervals start or stop
+ * overlapping. */
+static OI_NOINLINE void moon_limb_breaks(const cone *k, const oi_real m[3], oi_real rm,
+                                         oi_real t, oi_real *brk, int *nb)
+{
+    circle q;
+    oi_real g[3][3];
+    int i;
+    const oi_real e[3] = {(oi_real)0, (oi_real)1, (oi_real)0};
+    disc_frame(m, e, g);
+    for (i = 0; i < 3; ++i) {
+        q.c[i] = g[0][i];
+        q.g1[i] = g[1][i];
+        q.g2[i] = g[2][i];
+    }
+    OI_SINCOS(rm, &q.sr, &q.cr);
+    crossing_breaks(k, &q, t, brk, nb);
+}
+
+/* Every break of the cones: each one's crossings of the disc's limb and
+ * its tangent chords (with the Moon, the caller adds moon_limb_breaks: not
+ * from here, so that the two frames do not stack). */
+static OI_NOINLINE void all_breaks(const cone *k, int n, oi_real r, oi_real t, oi_real *brk,
+                                   int *nb)
+{
+    circle q;
+    int i;
+    q.c[0] = (oi_real)1;
+    q.c[1] = q.c[2] = q.g1[0] = q.g1[2] = q.g2[0] = q.g2[1] = (oi_real)0;
+    q.g1[1] = q.g2[2] = (oi_real)1;
+    OI_SINCOS(r, &q.sr, &q.cr);
+    for (i = 0; i < n; ++i) {
+        crossing_breaks(&k[i], &q, t, brk, nb);
+        tangent_breaks(&k[i], t, brk, nb);
+    }
+}
+
+/* An orthonormal frame (s, eu, ev): eu towards toward's component normal to
+ * s (any normal when there is none). */
+static void disc_frame(const oi_real s[3], const oi_real toward[3], oi_real f[3][3])
+{
+    oi_real d = oi__dot(toward, s), u[3];
+    int i;
+    for (i = 0; i < 3; ++i) {
+        f[0][i] = s[i];
+        u[i] = toward[i] - d * s[i];
+    }
+    if (!(oi__unit_bounded(u, u) > (oi_real)0)) {
+        const oi_real e[3] = {(oi_real)1, (oi_real)0, (oi_real)0};
+        const oi_real g[3] = {(oi_real)0, (oi_real)1, (oi_real)0};
+        oi__cross(s, (s[0] * s[0] < OI_R(0.5)) ? e : g, u);
+        (void)oi__unit_bounded(u, u);
+    }
+    for (i = 0; i < 3; ++i) f[1][i] = u[i];
+    oi__cross(s, u, f[2]);
+}
+
+/* The cones in the back disc's frame (s, eu towards the Earth's centre):
+ * the ellipsoid's in k[0], the sphere's (mo not NULL) in k[1] with its
+ * centre's frame coordinates in mf; returns 1 when an occulter is narrower
+ * than twice the disc (the silhouette's sine squared, 1 - c, against
+ * 4 sin^2 r). Out of line: its frame is not live during the quadrature. */
+static OI_NOINLINE int build_cones(const oi_real s[3], oi_real r, const oi_real p[3], oi_real a,
+                                   const oi_real mo[3], oi_real rm, cone *k, oi_real mf[3])
+{
+    oi_real f[3][3], w[3], c, s2, cm, sm;
+    int i;
+    w[0] = -p[0];
+    w[1] = -p[1];
+    w[2] = -p[2];
+    disc_frame(s, w, f);
+    earth_cone_world(p, a, w, &c, &s2);
+    cone_in_frame(w, c, K2M1, s2, (oi_real)1, (const oi_real(*)[3])f, &k[0]);
+    if (mo == NULL) return !((oi_real)1 - c > (oi_real)4 * oi__sqr(OI_SIN(r)));
+    OI_SINCOS(rm, &sm, &cm);
+    cone_in_frame(mo, cm * cm, (oi_real)0, sm * sm, (oi_real)-1, (const oi_real(*)[3])f, &k[1]);
+    for (i = 0; i < 3; ++i) mf[i] = oi__dot(mo, f[i]);
+    return 1;
+}
+
+/*
+ * Visible fraction of the uniform disc of unit direction s and apparent
+ * radius r (<= 0.5 rad) seen from p (outside the ellipsoid of equatorial
+ * radius a), behind the ellipsoid and (mo not NULL) a sphere of unit
+ * direction mo and apparent radius rm. The solid angle the occulters
+ * cover, as chords of the gnomonic disc (closed form along each chord),
+ * integrated over y = tan(r) sin(psi) piecewise between the breaks
+ * (all_breaks) by Gauss-Legendre; over the disc's solid angle 4 pi
+ * sin^2(r/2); in [0, 1].
+ */
+oi_real oi__oblate_visible(const oi_real s[3], oi_real r, const oi_real p[3], oi_real a,
+                           const oi_real mo[3], oi_real rm)
+{
+    oi_real t, sr, cr, brk[MAX_BREAKS], mf[3], hid = (oi_real)0, vis = (oi_real)0, prev, disc;
+    cone k[2];
+    int nb = 0, i, j;
+    const int n = mo != NULL ? 2 : 1;
+    const int narrow = build_cones(s, r, p, a, mo, rm, k, mf);
+    OI_SINCOS(r, &sr, &cr);
+    t = sr / cr;
+    all_breaks(k, n, r, t, brk, &nb);
+    if (n > 1) moon_limb_breaks(&k[0], mf, rm, t, brk, &nb);
+    /* sort the breaks (insertion; at most MAX_BREAKS) */
+    for (i = 1; i < nb; ++i) {
+        const oi_real v = brk[i];
+        for (j = i; j > 0 && brk[j - 1] > v; --j) brk[j] = brk[j - 1];
+        brk[j] = v;
+    }
+    prev = -OI_HALF_PI_R;
+    for (i = 0; i <= nb; ++i) {
+        const oi_real next = i < nb ? brk[i] : OI_HALF_PI_R;
+        if (next > prev) hid += piece(k, n, t, prev, next, narrow, &vis);
+        prev = next;
+    }
+    /* the smaller of the two parts keeps its relative accuracy (and is
+     * exactly 0 when nothing, or everything, is covered) */
+    disc = (oi_real)4 * OI_PI_R * oi__sin_half_sq(r);
+    return oi__clamp(vis < hid ? vis / disc : (oi_real)1 - hid / disc, (oi_real)0, (oi_real)1);
+}
+
+/* Angular radius of the ellipsoid's silhouette seen from p, along the great
+ * circle from the nadir -p towards s: the root tan(theta) of the cone's form
+ * on cos(theta) n + sin(theta) e (n = -p/|p|, e the unit normal towards s),
+ * m_ee tau^2 + 2 m_ne tau + m_nn = 0 with m_nn > 0 (the nadir inside). */
+oi_real oi__oblate_radius_towards(const oi_real p[3], oi_real a, const oi_real s[3])
+{
+    oi_real f[3][3], w[3], c, s2, n[3], xn[3], xe[3], mnn, mne, mee, d, tau;
+    int i;
+    const oi_real dp = oi__norm_bounded(p);
+    for (i = 0; i < 3; ++i) n[i] = -p[i] / dp;
+    disc_frame(n, s, f);
+    earth_cone_world(p, a, w, &c, &s2);
+    /* the form's entries as in cone_in_frame */
+    oi__cross(w, f[0], xn);
+    oi__cross(w, f[1], xe);
+    mnn = s2 - oi__dot(xn, xn) - c * K2M1 * f[0][2] * f[0][2];
+    mne = -oi__dot(xn, xe) - c * K2M1 * f[0][2] * f[1][2];
+    mee = s2 - oi__dot(xe, xe) - c * K2M1 * f[1][2] * f[1][2];
+    d = mne * mne - mee * mnn;
+    if (!(d > (oi_real)0)) d = (oi_real)0;
+    /* the positive root (the roots' product m_nn / m_ee < 0), in the form
+     * without cancellation; as an angle, atan2 of positive parts */
+    if (mne >= (oi_real)0) {
+        tau = -mee;
+        return OI_ATAN2(mne + OI_SQRT(d), tau > (oi_real)0 ? tau : (oi_real)0);
+    }
+    return OI_ATAN2(mnn, -mne + OI_SQRT(d));
+}
+
+#else
+typedef int oi__oblate_removed; /* ISO C forbids an empty translation unit */
+#endif /* OI_NO_OBLATE */
