@@ -122,6 +122,23 @@ const char *oi_status_name(int status);
 #define OI_EARTH_REFLECT_MEAN    (1) /* as if all of it came from its mean
                                         direction (exact in the far field) */
 
+/* oi_model.albedo_model: the Earth's albedo over the globe, read by
+ * oi_illuminate (and its batch) only (docs/earthshine-albedo.md). Positions
+ * are then taken in a frame whose z axis is the Earth's rotation axis (GCRS,
+ * J2000 or TEME), latitudes above its equator. */
+#define OI_ALBEDO_UNIFORM (0) /* oi_scene.earth_albedo everywhere (default) */
+#define OI_ALBEDO_KNOCKE  (1) /* zonal and seasonal, Knocke, Ries & Tapley 1988;
+                                 needs oi_scene.epoch_jd */
+#define OI_ALBEDO_MAP     (2) /* the caller's latitude-longitude grid (oi_model.albedo_map);
+                                 needs oi_scene.earth_rotation_rad */
+/* Largest number of rows (latitudes) or columns (longitudes) of an albedo map. */
+#define OI_ALBEDO_MAP_MAX_DIM (32768)
+/* Valid range of oi_scene.epoch_jd (Julian date, UTC): 1900-01-01 0h to 2100-01-01 0h. */
+#define OI_EPOCH_JD_MIN (2415020.5)
+#define OI_EPOCH_JD_MAX (2488069.5)
+/* Largest accepted |oi_scene.earth_rotation_rad| (rad). */
+#define OI_EARTH_ROTATION_MAX_RAD (1.0e3)
+
 /* oi_model.limb_darkening */
 #define OI_LIMB_UNIFORM (0)   /* uniform solar disc (default) */
 #define OI_LIMB_DARKENED (1)  /* irradiance uses a limb-darkened disc */
@@ -149,7 +166,29 @@ typedef struct oi_model {
     const oi_earth_table *earth_table; /* earthshine table; NULL: oi_earth_table_default() */
     const oi_atm_table *atm_table;     /* atmosphere table; NULL: oi_atm_table_default() */
     int earth_reflection;     /* OI_EARTH_REFLECT_MOMENTS or OI_EARTH_REFLECT_MEAN */
+    int albedo_model;         /* OI_ALBEDO_UNIFORM, OI_ALBEDO_KNOCKE or OI_ALBEDO_MAP */
+    const float *albedo_map;  /* OI_ALBEDO_MAP: n_lat rows from north to south, each of
+                                 n_lon cells from the Greenwich meridian eastwards,
+                                 values in [0, 1] (see "Albedo map" below) */
+    int albedo_map_n_lat;     /* rows, 1..OI_ALBEDO_MAP_MAX_DIM */
+    int albedo_map_n_lon;     /* cells per row, 1..OI_ALBEDO_MAP_MAX_DIM */
 } oi_model;
+
+/*
+ * Albedo map (oi_model.albedo_map, read with albedo_model = OI_ALBEDO_MAP):
+ * a caller-owned const array of n_lat * n_lon floats, row-major. Row i
+ * covers the latitudes from 90 - 180 i / n_lat to 90 - 180 (i + 1) / n_lat
+ * degrees (north to south), cell j of a row the east longitudes from
+ * 360 j / n_lon to 360 (j + 1) / n_lon degrees from the Greenwich meridian;
+ * map[i * n_lon + j] is the cell's albedo, in [0, 1] (e.g. a CERES monthly
+ * mean resampled to the grid). The field between cell centres is bilinear,
+ * periodic in longitude and constant in latitude beyond the first and last
+ * rows' centres. The Greenwich meridian lies at oi_scene.earth_rotation_rad
+ * from the frame's x axis, about its z axis (the Earth's rotation angle,
+ * or the Greenwich sidereal time for a TEME frame). Every value a call
+ * reads is checked (NaN or outside [0, 1]: OI_ERR_ALBEDO); the array is
+ * never written. A NULL map or a dimension out of range: OI_ERR_MODEL.
+ */
 
 /*
  * Baked tables of a model (include/oi_table.h, docs/tables.md).
@@ -397,6 +436,12 @@ typedef struct oi_scene {
     oi_real target_vel_km_s[3];   /* target velocity (km/s, the positions' frame); read by
                                      oi_expose_scene only; zero: at rest */
     oi_real observer_vel_km_s[3]; /* observer velocity (km/s), as target_vel_km_s */
+    oi_real epoch_jd;        /* Julian date (UTC) of the scene, in [OI_EPOCH_JD_MIN,
+                                OI_EPOCH_JD_MAX]; read only by the albedo model
+                                OI_ALBEDO_KNOCKE (with OI_TERM_EARTH) */
+    oi_real earth_rotation_rad; /* angle of the Greenwich meridian from the frame's x axis
+                                   about its z axis (rad, |value| <= OI_EARTH_ROTATION_MAX_RAD);
+                                   read only by OI_ALBEDO_MAP (with OI_TERM_EARTH) */
 } oi_scene;
 
 /* oi_scene_defaults: fill a scene with the defaults: zero positions, no
@@ -432,6 +477,10 @@ typedef struct oi_illum {
                                 seen from the target (0: no Moon position, or apart) */
     oi_real moon_disc_visible; /* fraction of the Moon's disc the Earth does not hide,
                                   seen from the target (with OI_TERM_MOON; else 0) */
+    oi_real earth_albedo_eff;  /* the albedo e_earth is formed with: earth_albedo
+                                  (OI_ALBEDO_UNIFORM), else the mean of the model's
+                                  albedo over the lit visible Earth weighted by its
+                                  earthshine (with OI_TERM_EARTH; else 0) */
 } oi_illum;
 
 /*
@@ -457,6 +506,13 @@ typedef struct oi_illum {
  *          OI_ERR_ZERO_VECTOR  a position read is the zero vector
  *          OI_ERR_GEOMETRY   a position read farther than OI_POSITION_MAX_KM
  *          OI_ERR_BELOW_SURFACE  |target| or |observer| <= earth_radius_km
+ *          OI_ERR_NONFINITE  with OI_TERM_EARTH: epoch_jd (OI_ALBEDO_KNOCKE)
+ *                            or earth_rotation_rad (OI_ALBEDO_MAP) NaN or
+ *                            infinite
+ *          OI_ERR_INPUT      with OI_TERM_EARTH: epoch_jd outside
+ *                            [OI_EPOCH_JD_MIN, OI_EPOCH_JD_MAX] (knocke),
+ *                            |earth_rotation_rad| > OI_EARTH_ROTATION_MAX_RAD
+ *                            (map)
  *          then the Sun seen from the target (oi_sun_fraction's statuses:
  *          OI_ERR_GEOMETRY for a Sun touching the Earth or the target inside
  *          the Sun), the Sun seen from the Moon (the same; the Moon below the
@@ -468,6 +524,8 @@ typedef struct oi_illum {
  *                            (its position given)
  *          OI_ERR_OBSERVER_AT_TARGET  the observer inside the target's sphere
  *                            (range <= target_radius_m)
+ *          OI_ERR_ALBEDO     OI_ALBEDO_MAP: a map value the call reads is NaN
+ *                            or outside [0, 1]
  * Notes:   e_sun = TSI (AU / |sun - target|)^2 fraction_atm;
  *          e_earth = earth_albedo TSI (AU / |sun|)^2 phi(theta, h);
  *          e_moon from the lunar phase law (or a Lambert Moon), times the
@@ -482,7 +540,14 @@ typedef struct oi_illum {
  *          distribution instead (model earth_reflection,
  *          oi_earthshine_sphere: e_earth albedo (a / range)^2 S, S = F / phi);
  *          phase_earth stays the angle from the mean direction.
- *          src/illuminate.c.
+ *          Albedo models (model albedo_model; docs/earthshine-albedo.md):
+ *          with OI_ALBEDO_KNOCKE or OI_ALBEDO_MAP, e_earth = A TSI (AU /
+ *          |sun|)^2 phi, A = earth_albedo_eff the earthshine-weighted mean
+ *          albedo over the lit visible Earth, and dir_earth and the sphere's
+ *          angular distribution (flux_earth) carry the field's first-order
+ *          change, all from a fixed cubature used as a control variate on the
+ *          uniform tables (earth_phi, earth_psi stay the uniform sphere's).
+ *          src/illuminate.c, src/earthshine_albedo.c.
  */
 int oi_illuminate(const oi_scene *scene, const oi_model *model, oi_illum *out);
 

@@ -61,6 +61,19 @@ static int check_scene(const oi_scene *s, const oi_model *m)
     if (n_sun > far || n_target > far || n_moon > far || n_obs > far) return OI_ERR_GEOMETRY;
     if (n_target <= m->earth_radius_km || n_obs <= m->earth_radius_km)
         return OI_ERR_BELOW_SURFACE;
+    /* what the albedo model reads of the scene (model.c refuses the models
+     * when they are compiled out) */
+    if (s->terms & OI_TERM_EARTH) {
+        if (m->albedo_model == OI_ALBEDO_KNOCKE) {
+            if (!OI_ISFINITE(s->epoch_jd)) return OI_ERR_NONFINITE;
+            if (!(s->epoch_jd >= (oi_real)OI_EPOCH_JD_MIN && s->epoch_jd <= (oi_real)OI_EPOCH_JD_MAX))
+                return OI_ERR_INPUT;
+        } else if (m->albedo_model == OI_ALBEDO_MAP) {
+            if (!OI_ISFINITE(s->earth_rotation_rad)) return OI_ERR_NONFINITE;
+            if (OI_FABS(s->earth_rotation_rad) > (oi_real)OI_EARTH_ROTATION_MAX_RAD)
+                return OI_ERR_INPUT;
+        }
+    }
     return OI_OK;
 }
 
@@ -232,8 +245,31 @@ static OI_NOINLINE int sun_term(const oi_scene *scene, const oi_model *m, oi_ill
     return st;
 }
 
-/* theta, h and the Earth's term: e_earth, dir_earth, earth_phi, earth_psi. */
-static OI_NOINLINE int earth_term(const oi_scene *scene, const oi_model *m, oi_illum *out)
+#ifndef OI_NO_ALBEDO_MODELS
+/* The albedo field's mean and its change of dir_earth and of the sphere's
+ * shape (*shape_add), src/earthshine_albedo.c. */
+static OI_NOINLINE int albedo_field_term(const oi_scene *scene, const oi_model *m,
+                                         const oi_real r_hat[3], const oi_real s_hat[3],
+                                         oi_real r_target, oi_illum *out, oi_real *shape_add)
+{
+    oi__albedo_field f;
+    oi_real obs_hat[3];
+    const oi_real *obs = NULL;
+    oi__albedo_field_init(m, scene, &f);
+    if (scene->has_observer) {
+        oi__sub(scene->observer_km, scene->target_km, obs_hat);
+        if (oi__unit(obs_hat, obs_hat) > (oi_real)0) obs = obs_hat;
+    }
+    return oi__earthshine_albedo(&f, r_hat, s_hat, m->earth_radius_km / r_target, obs,
+                                 &out->earth_albedo_eff, out->dir_earth, shape_add);
+}
+#endif
+
+/* theta, h and the Earth's term: e_earth, dir_earth, earth_phi, earth_psi,
+ * earth_albedo_eff; *shape_add the albedo field's change of the sphere's
+ * shape (0 when uniform). */
+static OI_NOINLINE int earth_term(const oi_scene *scene, const oi_model *m, oi_illum *out,
+                                  oi_real *shape_add)
 {
     oi_real s_hat[3], r_hat[3], c[3], cos_theta, sin_theta, phi, psi;
     int st = OI_OK;
@@ -250,8 +286,15 @@ static OI_NOINLINE int earth_term(const oi_scene *scene, const oi_model *m, oi_i
         if (st < 0) return st;
         out->earth_phi = phi;
         out->earth_psi = psi;
-        out->e_earth = scene->earth_albedo * solar_irradiance(m, d_sun) * phi;
+        out->earth_albedo_eff = scene->earth_albedo;
         earth_direction(r_hat, s_hat, psi, out->dir_earth);
+#ifndef OI_NO_ALBEDO_MODELS
+        if (m->albedo_model != OI_ALBEDO_UNIFORM) {
+            const int sa = albedo_field_term(scene, m, r_hat, s_hat, r_target, out, shape_add);
+            if (sa < 0) return sa;
+        }
+#endif
+        out->e_earth = out->earth_albedo_eff * solar_irradiance(m, d_sun) * phi;
     }
     return st;
 }
@@ -263,7 +306,7 @@ static OI_NOINLINE int earth_term(const oi_scene *scene, const oi_model *m, oi_i
 static OI_NOINLINE int earth_flux_moments(const oi_scene *scene, const oi_model *m,
                                           const oi_earth_angular_table *t,
                                           const oi_real obs_hat[3], oi_real ratio,
-                                          oi_illum *out)
+                                          oi_real shape_add, oi_illum *out)
 {
     oi_real r_hat[3], s_hat[3], x[3], y[3], o[3], c[3], along, cos_theta, sin_theta, shape;
     int i;
@@ -296,13 +339,17 @@ static OI_NOINLINE int earth_flux_moments(const oi_scene *scene, const oi_model 
     if (!oi__earth_sphere_shape(t, out->earth_theta, cos_theta, sin_theta, out->earth_h_km,
                                 m->earth_radius_km, o, &shape))
         return 0;
+    /* the albedo field's change (0 when uniform), the sum kept non-negative */
+    shape += shape_add;
+    if (shape < (oi_real)0) shape = (oi_real)0;
     out->flux_earth = out->e_earth * scene->target_albedo * ratio * ratio * shape;
     return 1;
 }
 #endif
 
 /* What the observer receives: range, phase angles, fluxes, magnitude. */
-static OI_NOINLINE int observer_term(const oi_scene *scene, const oi_model *m, oi_illum *out)
+static OI_NOINLINE int observer_term(const oi_scene *scene, const oi_model *m,
+                                     oi_real shape_add, oi_illum *out)
 {
     oi_real obs_hat[3], ratio;
     oi__sub(scene->observer_km, scene->target_km, obs_hat);
@@ -320,8 +367,10 @@ static OI_NOINLINE int observer_term(const oi_scene *scene, const oi_model *m, o
          * the mean direction's) */
         const oi_earth_angular_table *t = oi__earth_angular_of(m);
         if (t != NULL && out->e_earth > (oi_real)0)
-            (void)earth_flux_moments(scene, m, t, obs_hat, ratio, out);
+            (void)earth_flux_moments(scene, m, t, obs_hat, ratio, shape_add, out);
     }
+#else
+    (void)shape_add;
 #endif
     out->flux_moon = reflected_flux(out->e_moon, out->dir_moon, obs_hat, ratio,
                                     scene->target_albedo, &out->phase_moon);
@@ -375,6 +424,7 @@ int oi_illuminate(const oi_scene *scene, const oi_model *model, oi_illum *out)
 int oi__illuminate_resolved(const oi_scene *scene, const oi_model *m, oi_illum *out)
 {
     int st, warn = OI_OK;
+    oi_real shape_add = (oi_real)0;
 
     memset(out, 0, sizeof *out);
     st = check_scene(scene, m);
@@ -389,7 +439,7 @@ int oi__illuminate_resolved(const oi_scene *scene, const oi_model *m, oi_illum *
         if (st < 0) goto fail;
     }
 #endif
-    st = earth_term(scene, m, out);
+    st = earth_term(scene, m, out, &shape_add);
     if (st < 0) goto fail;
     if (st > 0) warn = st;
 #ifndef OI_NO_MOON
@@ -401,7 +451,7 @@ int oi__illuminate_resolved(const oi_scene *scene, const oi_model *m, oi_illum *
     }
 #endif
     if (scene->has_observer) {
-        st = observer_term(scene, m, out);
+        st = observer_term(scene, m, shape_add, out);
         if (st < 0) goto fail;
     }
     return warn;

@@ -379,6 +379,41 @@ int oi__earth_sphere_shape(const oi_earth_angular_table *t, oi_real theta, oi_re
                            oi_real *shape);
 #endif
 
+#ifndef OI_NO_ALBEDO_MODELS
+/* The Earth's albedo field of a resolved model and a scene, ready to be
+ * sampled (src/albedo_field.c): the Knocke model's degree-1 coefficient at
+ * the scene's epoch, or the map and the Greenwich meridian's cosine and
+ * sine. */
+typedef struct oi__albedo_field {
+    int model;           /* OI_ALBEDO_KNOCKE or OI_ALBEDO_MAP */
+    oi_real a1;          /* Knocke: a1(t) */
+    const float *map;    /* map: the caller's grid */
+    int n_lat, n_lon;
+    oi_real cos_rot, sin_rot; /* map: Greenwich meridian from the frame's x axis */
+} oi__albedo_field;
+
+/* Prepare f for the non-uniform model of m and scene s (its epoch_jd and
+ * earth_rotation_rad already checked by oi_illuminate). */
+void oi__albedo_field_init(const oi_model *m, const oi_scene *s, oi__albedo_field *f);
+
+/* The albedo at the unit surface point p (the scene's frame, z the rotation
+ * axis), in [0, 1]: OI_OK, or OI_ERR_ALBEDO for a map value read that is NaN
+ * or outside [0, 1] (*a then 0). */
+int oi__albedo_at(const oi__albedo_field *f, const oi_real p[3], oi_real *a);
+
+/* Earthshine under a non-uniform albedo field (src/earthshine_albedo.c), at
+ * the target of unit position r_hat and x = R / r, the Sun in the unit
+ * direction s_hat; obs_hat the unit direction to the observer or NULL.
+ * *albedo: the earthshine-weighted mean albedo over the lit visible cap;
+ * dir: given the uniform sphere's mean incidence direction, returned with
+ * the field's change; *shape_add: the change of the sphere's shape S(o) =
+ * F / phi per unit mean albedo (0 without observer). Returns OI_OK or
+ * OI_ERR_ALBEDO (outputs then 0, dir untouched). */
+int oi__earthshine_albedo(const oi__albedo_field *f, const oi_real r_hat[3],
+                          const oi_real s_hat[3], oi_real x, const oi_real *obs_hat,
+                          oi_real *albedo, oi_real dir[3], oi_real *shape_add);
+#endif
+
 /* oi_magnitude_v (src/magnitude.c) with the model's TSI already resolved. */
 oi_real oi__magnitude_v(oi_real flux_w_m2, oi_real tsi_w_m2);
 

@@ -66,6 +66,13 @@ OI_LIMB_UNIFORM = 0   # oi_model.limb_darkening
 OI_LIMB_DARKENED = 1
 OI_EARTH_REFLECT_MOMENTS = 0  # oi_model.earth_reflection
 OI_EARTH_REFLECT_MEAN = 1
+OI_ALBEDO_UNIFORM = 0  # oi_model.albedo_model
+OI_ALBEDO_KNOCKE = 1
+OI_ALBEDO_MAP = 2
+OI_ALBEDO_MAP_MAX_DIM = 32768
+OI_EPOCH_JD_MIN = 2415020.5
+OI_EPOCH_JD_MAX = 2488069.5
+OI_EARTH_ROTATION_MAX_RAD = 1.0e3
 
 OI_SHADOW_LIT = 0     # oi_shadow.region
 OI_SHADOW_PENUMBRA = 1
@@ -172,6 +179,8 @@ class oi_model(ctypes.Structure):
         ("earth_model", c_int), ("moon_model", c_int), ("limb_darkening", c_int),
         ("no_atmosphere", c_int), ("earth_table", POINTER(oi_earth_table)),
         ("atm_table", POINTER(oi_atm_table)), ("earth_reflection", c_int),
+        ("albedo_model", c_int), ("albedo_map", POINTER(ctypes.c_float)),
+        ("albedo_map_n_lat", c_int), ("albedo_map_n_lon", c_int),
     ]
 
 
@@ -190,6 +199,7 @@ class oi_scene(ctypes.Structure):
         ("earth_albedo", real), ("target_albedo", real), ("target_radius_m", real),
         ("has_moon", c_int),
         ("target_vel_km_s", real * 3), ("observer_vel_km_s", real * 3),
+        ("epoch_jd", real), ("earth_rotation_rad", real),
     ]
 
 
@@ -204,6 +214,7 @@ class oi_illum(ctypes.Structure):
         ("flux_sun", real), ("flux_earth", real), ("flux_moon", real),
         ("flux_obs", real), ("mag_v", real), ("range_km", real),
         ("sun_moon_hidden", real), ("moon_disc_visible", real),
+        ("earth_albedo_eff", real),
     ]
 
 
