@@ -158,6 +158,13 @@ static void local_frame(const oi_real r_hat[3], const oi_real s_hat[3], frame *g
         g->r[i] = r_hat[i];
         t[i] = s_hat[i] - g->cos_t * r_hat[i];
     }
+    /* near the Sun-Earth axis t is rounding noise that need not be normal to
+     * r: orthogonalised once more after scaling (the cap is then lit all
+     * round, so any normal does) */
+    if (oi__unit_bounded(t, t) > (oi_real)0) {
+        const oi_real dr = oi__dot(t, r_hat);
+        for (i = 0; i < 3; i++) t[i] -= dr * r_hat[i];
+    }
     if (oi__unit_bounded(t, t) == (oi_real)0) {
         const oi_real e[3] = {(oi_real)1, (oi_real)0, (oi_real)0};
         const oi_real n[3] = {(oi_real)0, (oi_real)1, (oi_real)0};
