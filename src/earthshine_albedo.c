@@ -9,9 +9,10 @@
 
 #define HALF_PI_R ((oi_real)(0.5 * OI_PI))
 
-/* Gauss-Legendre nodes (positive half) and weights on [-1, 1]
- * (Abramowitz & Stegun 1964, table 25.4; the digits of numpy's
- * polynomial.legendre.leggauss, checked by tests/c/test_albedo.c). */
+/* Gauss-Legendre nodes (positive half) and weights on [-1, 1] of 8, 16 and
+ * 32 points (Abramowitz & Stegun 1964, table 25.4; the digits of numpy's
+ * polynomial.legendre.leggauss; the rules' exactness on polynomials is
+ * tested through the uniform sphere, tests/python/test_albedo_models.py). */
 #define N_E 8
 static const oi_real gl8_x[N_E / 2] = {OI_R(0.18343464249564978), OI_R(0.52553240991632899),
                                        OI_R(0.79666647741362673), OI_R(0.96028985649753618)};
@@ -26,8 +27,42 @@ static const oi_real gl16_w[N_B / 2] = {
     OI_R(0.18945061045506864), OI_R(0.18260341504492364), OI_R(0.16915651939500265),
     OI_R(0.14959598881657671), OI_R(0.12462897125553407), OI_R(0.095158511682492605),
     OI_R(0.062253523938647456), OI_R(0.027152459411754176)};
-/* azimuths of the periodic trapezoid rule over a fully lit cap */
-#define N_RING 32
+static const oi_real gl32_x[16] = {
+    OI_R(0.048307665687738324), OI_R(0.14447196158279649), OI_R(0.23928736225213706),
+    OI_R(0.33186860228212767), OI_R(0.42135127613063533), OI_R(0.50689990893222936),
+    OI_R(0.5877157572407623), OI_R(0.66304426693021523), OI_R(0.73218211874028971),
+    OI_R(0.79448379596794239), OI_R(0.84936761373256997), OI_R(0.89632115576605209),
+    OI_R(0.93490607593773967), OI_R(0.96476225558750639), OI_R(0.98561151154526838),
+    OI_R(0.99726386184948157)};
+static const oi_real gl32_w[16] = {
+    OI_R(0.096540088514727659), OI_R(0.095638720079274708), OI_R(0.093844399080804511),
+    OI_R(0.09117387869576378), OI_R(0.087652093004403783), OI_R(0.083311924226946707),
+    OI_R(0.078193895787070228), OI_R(0.072345794108848338), OI_R(0.065822222776361683),
+    OI_R(0.058684093478535565), OI_R(0.050998059262376091), OI_R(0.042835898022226836),
+    OI_R(0.034273862913021765), OI_R(0.025392065309262024), OI_R(0.016274394730905743),
+    OI_R(0.0070186100094705058)};
+
+/* A rule: Gauss-Legendre of n nodes (the positive half x, w) in the
+ * emission angle and in each azimuth segment, and ring azimuths of the
+ * periodic trapezoid rule over a fully lit cap. The Knocke field is a
+ * quadratic in the height above the equator and needs few; a map's
+ * bilinear cells have kinks along every row and column of centres. */
+typedef struct rule {
+    const oi_real *ex, *ew, *bx, *bw;
+    int ne, nb, ring;
+} rule;
+static const rule rule_smooth = {gl8_x, gl8_w, gl16_x, gl16_w, N_E, N_B, 32};
+static const rule rule_map = {gl16_x, gl16_w, gl32_x, gl32_w, 16, 32, 64};
+
+/* node k of an n-point rule from its positive half */
+static oi_real node_x(const oi_real *x, int n, int k)
+{
+    return k < n / 2 ? -x[n / 2 - 1 - k] : x[k - n / 2];
+}
+static oi_real node_w(const oi_real *w, int n, int k)
+{
+    return k < n / 2 ? w[n / 2 - 1 - k] : w[k - n / 2];
+}
 
 /* Sums of the cubature: weights K (the uniform sphere's earthshine), K da
  * (da the albedo less the reference), the same times the direction omega
@@ -46,6 +81,7 @@ typedef struct frame {
     oi_real cos_t, sin_t, x, w;
     const oi_real *obs;
     oi_real a_ref;
+    const rule *q;
 } frame;
 
 /* emission angle (from the surface normal towards the target) of the cap
@@ -88,9 +124,9 @@ static int ray_fan(const oi__albedo_field *f, const frame *g, oi_real cb, oi_rea
     mid = OI_R(0.5) * (e_lo + e_hi);
     half = OI_R(0.5) * (e_hi - e_lo);
     for (i = 0; i < 3; i++) u[i] = cb * g->ex[i] + sb * g->ey[i];
-    for (k = 0; k < N_E; k++) {
-        const oi_real t = k < N_E / 2 ? -gl8_x[N_E / 2 - 1 - k] : gl8_x[k - N_E / 2];
-        const oi_real wt = k < N_E / 2 ? gl8_w[N_E / 2 - 1 - k] : gl8_w[k - N_E / 2];
+    for (k = 0; k < g->q->ne; k++) {
+        const oi_real t = node_x(g->q->ex, g->q->ne, k);
+        const oi_real wt = node_w(g->q->ew, g->q->ne, k);
         oi_real se, ce, sh, ch, ca, sa, ci, kw, a, da, p[3], om[3];
         int st;
         OI_SINCOS(mid + half * t, &se, &ce);
@@ -136,9 +172,9 @@ static int azimuth_segment(const oi__albedo_field *f, const frame *g, oi_real b0
 {
     const oi_real mid = OI_R(0.5) * (b0 + b1), half = OI_R(0.5) * (b1 - b0);
     int k;
-    for (k = 0; k < N_B; k++) {
-        const oi_real t = k < N_B / 2 ? -gl16_x[N_B / 2 - 1 - k] : gl16_x[k - N_B / 2];
-        const oi_real wt = k < N_B / 2 ? gl16_w[N_B / 2 - 1 - k] : gl16_w[k - N_B / 2];
+    for (k = 0; k < g->q->nb; k++) {
+        const oi_real t = node_x(g->q->bx, g->q->nb, k);
+        const oi_real wt = node_w(g->q->bw, g->q->nb, k);
         oi_real sb, cb;
         int st;
         OI_SINCOS(mid + half * t, &sb, &cb);
@@ -193,17 +229,19 @@ int oi__earthshine_albedo(const oi__albedo_field *f, const oi_real r_hat[3],
     sin_w = OI_SQRT(((oi_real)1 - x) * ((oi_real)1 + x));
     g.w = OI_ATAN2(sin_w, x);
     g.obs = obs_hat;
+    g.q = f->model == OI_ALBEDO_MAP ? &rule_map : &rule_smooth;
     st = oi__albedo_at(f, r_hat, &g.a_ref);
     if (st < 0) return st;
     memset(&acc, 0, sizeof acc);
 
     if (g.cos_t >= sin_w) {
         /* the whole cap is lit: a smooth periodic integrand in beta */
+        const oi_real step = OI_R(2.0) * OI_PI_R / (oi_real)g.q->ring;
         int k;
-        for (k = 0; k < N_RING; k++) {
+        for (k = 0; k < g.q->ring; k++) {
             oi_real sb, cb;
-            OI_SINCOS(OI_R(2.0) * OI_PI_R * (oi_real)k / (oi_real)N_RING, &sb, &cb);
-            st = ray_fan(f, &g, cb, sb, OI_R(2.0) * OI_PI_R / (oi_real)N_RING, &acc);
+            OI_SINCOS(step * (oi_real)k, &sb, &cb);
+            st = ray_fan(f, &g, cb, sb, step, &acc);
             if (st < 0) return st;
         }
     } else if (g.cos_t > -sin_w) {
