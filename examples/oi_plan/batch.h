@@ -6,6 +6,7 @@
 
 #include <stdio.h>
 
+#include "albedo_map.h"
 #include "orbillum.h"
 
 /* Status name of a row whose text could not be parsed (planner level, not a
@@ -24,5 +25,10 @@
  * (consecutive rows, labelled by id) at the end.
  * Returns a PLAN_EXIT_* code. */
 int batch_run(const char *path, const oi_camera *default_camera, FILE *out, FILE *summary);
+
+/* batch_run with the albedo map of --albedo-map (NULL: none given; rows with
+ * albedo_model map are then errors). */
+int batch_run_map(const char *path, const oi_camera *default_camera,
+                  const plan_albedo_map *albedo_map, FILE *out, FILE *summary);
 
 #endif

@@ -12,7 +12,7 @@ static void usage(FILE *fp)
 {
     fputs(
         "usage: oi-plan [--camera NAME] [--step SECONDS]\n"
-        "       oi-plan --csv FILE|- [--camera NAME] [--summary]\n"
+        "       oi-plan --csv FILE|- [--camera NAME] [--summary] [--albedo-map FILE]\n"
         "       oi-plan --list-cameras | --help\n"
         "\n"
         "How an object in orbit is lit by the Sun, the Earth and the Moon, and how a\n"
@@ -27,6 +27,10 @@ static void usage(FILE *fp)
         "  --csv FILE      batch mode: one output row per input row (FILE '-' = stdin)\n"
         "  --summary       with --csv: print the observation windows of the pass\n"
         "                  (runs of consecutive observable rows, named by id) on stderr\n"
+        "  --albedo-map FILE  with --csv: the latitude-longitude albedo grid of the rows\n"
+        "                  with albedo_model map (text: \"n_lat n_lon\", then n_lat rows\n"
+        "                  north to south of n_lon values in [0, 1] east from Greenwich;\n"
+        "                  '#' comments; docs/planner.md)\n"
         "  --camera NAME   default camera (built-in name; default: the first one)\n"
         "  --step SECONDS  table step of the built-in scenario (default 120)\n"
         "  --list-cameras  list the built-in cameras and their parameters\n"
@@ -41,7 +45,12 @@ static void usage(FILE *fp)
         "            atmosphere (1, or 0 = as if the Earth had none),\n"
         "            sky (none, zodiacal, moon, all; default none),\n"
         "            target_vx,target_vy,target_vz, observer_vx,observer_vy,observer_vz\n"
-        "            (km/s; default at rest)\n"
+        "            (km/s; default at rest),\n"
+        "            albedo_model (uniform: earth_albedo everywhere, the default; knocke;\n"
+        "            map: --albedo-map), epoch_jd (Julian date, UTC, 1900 to 2100; needed\n"
+        "            by knocke and map), earth_rotation_deg (Greenwich meridian from the\n"
+        "            frame's x axis; needed by map); the frame's z axis is the Earth's\n"
+        "            rotation axis (GCRS, J2000, TEME)\n"
         "Batch output (numbers with %.17g; empty when not computed):\n"
         "  id,status,sun_fraction,sun_fraction_atm,e_sun,e_earth,e_moon,earth_theta_deg,\n"
         "  earth_h_km,flux_obs,mag_v,exposure_s,gain,snr,flags\n"
@@ -113,7 +122,7 @@ static const char *option_value(int argc, char **argv, int *i, const char *name,
 
 int main(int argc, char **argv)
 {
-    const char *csv = NULL, *camera_name = NULL, *step_text = NULL;
+    const char *csv = NULL, *camera_name = NULL, *step_text = NULL, *map_path = NULL;
     const oi_camera *camera;
     double step = 120.0;
     int i, summary = 0;
@@ -135,6 +144,8 @@ int main(int argc, char **argv)
         }
         if ((v = option_value(argc, argv, &i, "--csv", &missing)) != NULL) {
             csv = v;
+        } else if ((v = option_value(argc, argv, &i, "--albedo-map", &missing)) != NULL) {
+            map_path = v;
         } else if ((v = option_value(argc, argv, &i, "--camera", &missing)) != NULL) {
             camera_name = v;
         } else if ((v = option_value(argc, argv, &i, "--step", &missing)) != NULL) {
@@ -169,6 +180,20 @@ int main(int argc, char **argv)
             return PLAN_EXIT_INPUT;
         }
     }
-    if (csv != NULL) return batch_run(csv, camera, stdout, summary ? stderr : NULL);
+    if (map_path != NULL && csv == NULL) {
+        fprintf(stderr, "oi-plan: --albedo-map needs --csv (see oi-plan --help)\n");
+        return PLAN_EXIT_INPUT;
+    }
+    if (csv != NULL) {
+        plan_albedo_map map;
+        int st;
+        if (map_path == NULL)
+            return batch_run_map(csv, camera, NULL, stdout, summary ? stderr : NULL);
+        st = albedo_map_load(map_path, &map);
+        if (st != 0) return st;
+        st = batch_run_map(csv, camera, &map, stdout, summary ? stderr : NULL);
+        albedo_map_free(&map);
+        return st;
+    }
     return scenario_run(stdout, camera, step);
 }
