@@ -114,6 +114,7 @@ _MODEL_WORDS = {
     "earth_model": {"table": 0, "lambert": 1},
     "moon_model": {"phase_law": 0, "lambert": 1},
     "limb_darkening": {"uniform": 0, "darkened": 1},
+    "albedo_model": {"uniform": 0, "knocke": 1, "map": 2},
 }
 
 
@@ -130,6 +131,19 @@ def _model(model):
     for k, v in model.items():
         if k in ("earth_table", "atm_table"):
             raise ValueError(f"model: {k} cannot be set from Python")
+        if k in ("albedo_map_n_lat", "albedo_map_n_lon"):
+            raise ValueError(f"model: {k} is the shape of albedo_map")
+        if k == "albedo_map":
+            # the caller's grid (rows north to south, cells east from Greenwich),
+            # kept alive by the structure for as long as it is used
+            grid = np.ascontiguousarray(_floats(v, "model['albedo_map']"), dtype=np.float32)
+            if grid.ndim != 2 or grid.size == 0:
+                raise ValueError(f"model['albedo_map']: a 2-D (n_lat, n_lon) array, got "
+                                 f"shape {grid.shape}")
+            m._albedo_map = grid
+            m.albedo_map = grid.ctypes.data_as(ctypes.POINTER(ctypes.c_float))
+            m.albedo_map_n_lat, m.albedo_map_n_lon = grid.shape
+            continue
         if k not in types:
             raise ValueError(f"model: unknown model field {k!r}")
         if isinstance(v, str):
@@ -197,7 +211,7 @@ def _scalar_rows(v, n, name):
 
 
 def _scenes(sun, moon, target, observer, terms, earth_albedo, target_albedo,
-            target_radius_m):
+            target_radius_m, epoch_jd=None, earth_rotation_rad=None):
     sun = _vec(sun, "sun")
     target = _vec(target, "target")
     moon = None if moon is None else _vec(moon, "moon")
@@ -228,6 +242,10 @@ def _scenes(sun, moon, target, observer, terms, earth_albedo, target_albedo,
                                        else target_albedo, n, "target_albedo")
     sc["target_radius_m"] = _scalar_rows(d.target_radius_m if target_radius_m is None
                                          else target_radius_m, n, "target_radius_m")
+    if epoch_jd is not None:
+        sc["epoch_jd"] = _scalar_rows(epoch_jd, n, "epoch_jd")
+    if earth_rotation_rad is not None:
+        sc["earth_rotation_rad"] = _scalar_rows(earth_rotation_rad, n, "earth_rotation_rad")
     return sc
 
 
@@ -271,7 +289,8 @@ def _illuminate_raw(sc, m):
 
 
 def illuminate(sun, moon, target, observer=None, *, terms=None, earth_albedo=None,
-               target_albedo=None, target_radius_m=None, model=None):
+               target_albedo=None, target_radius_m=None, model=None, epoch_jd=None,
+               earth_rotation_rad=None):
     """Light on the target from Sun, Earth and Moon, and what the observer sees.
 
     Given:
@@ -283,14 +302,22 @@ def illuminate(sun, moon, target, observer=None, *, terms=None, earth_albedo=Non
       earth_albedo, target_albedo, target_radius_m   scalars or (N,); None: the C
                        defaults (oi_scene_defaults: 0.30, 0.2, 1.0 m)
       model            None (defaults) or dict of oi_model fields, e.g.
-                       {"earth_model": "lambert", "limb_darkening": "darkened"}
+                       {"earth_model": "lambert", "limb_darkening": "darkened"};
+                       albedo models: {"albedo_model": "knocke"}, or {"albedo_model":
+                       "map", "albedo_map": grid}, grid (n_lat, n_lon) values in [0, 1],
+                       rows north to south, cells east from Greenwich
+                       (docs/earthshine-albedo.md; the frame's z axis the Earth's
+                       rotation axis)
+      epoch_jd         scalar or (N,): Julian date (UTC), read by "knocke"
+      earth_rotation_rad  scalar or (N,): the Greenwich meridian from the frame's
+                       x axis, read by "map"
     Returns: dict of arrays, one entry per oi_illum field (nested shadow fields as
       shadow_*; aliases sun_fraction, sun_fraction_ld, sun_fraction_atm;
       dir_* of shape (N, 3)), plus status (int32) and status_name.
     """
     m = _model(model)
     sc = _scenes(sun, moon, target, observer, terms, earth_albedo, target_albedo,
-                 target_radius_m)
+                 target_radius_m, epoch_jd, earth_rotation_rad)
     res, status = _illuminate_raw(sc, m)
     return _flatten(res, status)
 
@@ -376,7 +403,7 @@ def _exposure_dict(ex, st):
 
 def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None,
            target_albedo=None, target_radius_m=None, model=None, fill=None, snr_min=None,
-           sky=None):
+           sky=None, epoch_jd=None, earth_rotation_rad=None):
     """oi_illuminate then oi_expose_scene for each row: the suggested exposure.
 
     camera: a built-in camera name (see cameras()), a dict as camera() returns
@@ -386,6 +413,7 @@ def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None
     fill, snr_min: the oi_expose_goal (None: the C defaults).
     sky: oi_expose_goal.sky, OI_SKY_* bits (orbillum._lib; None or 0: no sky
     background but the sunlit Earth, as before).
+    epoch_jd, earth_rotation_rad: as illuminate() (the albedo models).
     Returns the dict of illuminate() plus the oi_exposure fields (exposure_s,
     gain, time_index, gain_index, signal_e, background_e, peak_e, saturation_e,
     fill, snr, sun_angle_rad, flags, background_w_m2_sr), flag_names, expose_status and
@@ -401,7 +429,7 @@ def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None
     m = _model(model)
     g = _goal(fill, snr_min, sky)
     sc = _scenes(sun, moon, target, observer, terms, earth_albedo, target_albedo,
-                 target_radius_m)
+                 target_radius_m, epoch_jd, earth_rotation_rad)
     res, status = _illuminate_raw(sc, m)
     n = sc.shape[0]
     ex = np.empty(n, dtype=EXPOSURE_DTYPE)  # the batch writes every row
