@@ -293,6 +293,8 @@ static OI_NOINLINE int earth_term(const oi_scene *scene, const oi_model *m, oi_i
             const int sa = albedo_field_term(scene, m, r_hat, s_hat, r_target, out, shape_add);
             if (sa < 0) return sa;
         }
+#else
+        (void)shape_add; /* the uniform albedo changes no shape */
 #endif
         out->e_earth = out->earth_albedo_eff * solar_irradiance(m, d_sun) * phi;
     }
