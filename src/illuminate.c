@@ -246,30 +246,35 @@ static OI_NOINLINE int sun_term(const oi_scene *scene, const oi_model *m, oi_ill
 }
 
 #ifndef OI_NO_ALBEDO_MODELS
-/* The albedo field's mean and its change of dir_earth and of the sphere's
- * shape (*shape_add), src/earthshine_albedo.c. */
+/* The albedo field's mean (earth_albedo_eff, then e_earth with it) and its
+ * change of dir_earth and of the sphere's shape (*shape_add),
+ * src/earthshine_albedo.c. Called after earth_term, in a frame of its own
+ * (make stack: the cubature's chain is the deepest of oi_illuminate). */
 static OI_NOINLINE int albedo_field_term(const oi_scene *scene, const oi_model *m,
-                                         const oi_real r_hat[3], const oi_real s_hat[3],
-                                         oi_real r_target, oi_illum *out, oi_real *shape_add)
+                                         oi_illum *out, oi_real *shape_add)
 {
     oi__albedo_field f;
-    oi_real obs_hat[3];
+    oi_real r_hat[3], s_hat[3], obs_hat[3], d_sun, r_target;
     const oi_real *obs = NULL;
+    int st;
+    d_sun = oi__unit_bounded(scene->sun_km, s_hat);
+    r_target = oi__unit_bounded(scene->target_km, r_hat);
     oi__albedo_field_init(m, scene, &f);
     if (scene->has_observer) {
         oi__sub(scene->observer_km, scene->target_km, obs_hat);
         if (oi__unit(obs_hat, obs_hat) > (oi_real)0) obs = obs_hat;
     }
-    return oi__earthshine_albedo(&f, r_hat, s_hat, m->earth_radius_km / r_target, obs,
-                                 &out->earth_albedo_eff, out->dir_earth, shape_add);
+    st = oi__earthshine_albedo(&f, r_hat, s_hat, m->earth_radius_km / r_target, obs,
+                               &out->earth_albedo_eff, out->dir_earth, shape_add);
+    if (st < 0) return st;
+    out->e_earth = out->earth_albedo_eff * solar_irradiance(m, d_sun) * out->earth_phi;
+    return OI_OK;
 }
 #endif
 
-/* theta, h and the Earth's term: e_earth, dir_earth, earth_phi, earth_psi,
- * earth_albedo_eff; *shape_add the albedo field's change of the sphere's
- * shape (0 when uniform). */
-static OI_NOINLINE int earth_term(const oi_scene *scene, const oi_model *m, oi_illum *out,
-                                  oi_real *shape_add)
+/* theta, h and the Earth's term of the uniform sphere: e_earth, dir_earth,
+ * earth_phi, earth_psi, earth_albedo_eff. */
+static OI_NOINLINE int earth_term(const oi_scene *scene, const oi_model *m, oi_illum *out)
 {
     oi_real s_hat[3], r_hat[3], c[3], cos_theta, sin_theta, phi, psi;
     int st = OI_OK;
@@ -288,14 +293,6 @@ static OI_NOINLINE int earth_term(const oi_scene *scene, const oi_model *m, oi_i
         out->earth_psi = psi;
         out->earth_albedo_eff = scene->earth_albedo;
         earth_direction(r_hat, s_hat, psi, out->dir_earth);
-#ifndef OI_NO_ALBEDO_MODELS
-        if (m->albedo_model != OI_ALBEDO_UNIFORM) {
-            const int sa = albedo_field_term(scene, m, r_hat, s_hat, r_target, out, shape_add);
-            if (sa < 0) return sa;
-        }
-#else
-        (void)shape_add; /* the uniform albedo changes no shape */
-#endif
         out->e_earth = out->earth_albedo_eff * solar_irradiance(m, d_sun) * phi;
     }
     return st;
@@ -441,9 +438,15 @@ int oi__illuminate_resolved(const oi_scene *scene, const oi_model *m, oi_illum *
         if (st < 0) goto fail;
     }
 #endif
-    st = earth_term(scene, m, out, &shape_add);
+    st = earth_term(scene, m, out);
     if (st < 0) goto fail;
     if (st > 0) warn = st;
+#ifndef OI_NO_ALBEDO_MODELS
+    if ((scene->terms & OI_TERM_EARTH) && m->albedo_model != OI_ALBEDO_UNIFORM) {
+        st = albedo_field_term(scene, m, out, &shape_add);
+        if (st < 0) goto fail;
+    }
+#endif
 #ifndef OI_NO_MOON
     if (scene->terms & OI_TERM_MOON) {
         st = moon_sun_fraction(scene, m, &out->moon_sun_fraction);
