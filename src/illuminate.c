@@ -414,8 +414,35 @@ int oi_illuminate(const oi_scene *scene, const oi_model *model, oi_illum *out)
     memset(out, 0, sizeof *out);
     if (scene == NULL) return OI_ERR_NULL;
     st = oi__model_resolve(model, &m);
+    if (st == OI_OK) st = oi__albedo_resolve(model, &m);
     if (st < 0) return st;
     return oi__illuminate_resolved(scene, &m, out);
+}
+
+/* The albedo model's fields, checked and copied (src/oi_internal.h). Here,
+ * not in oi__model_resolve: the functions without an albedo model (the
+ * Sun-only build's among them) carry none of it. */
+int oi__albedo_resolve(const oi_model *in, oi_model *out)
+{
+    if (in == NULL) return OI_OK;
+#ifdef OI_NO_ALBEDO_MODELS
+    (void)out;
+    return in->albedo_model == OI_ALBEDO_UNIFORM ? OI_OK : OI_ERR_MODEL; /* oi_config.h */
+#else
+    if (in->albedo_model != OI_ALBEDO_UNIFORM && in->albedo_model != OI_ALBEDO_KNOCKE &&
+        in->albedo_model != OI_ALBEDO_MAP)
+        return OI_ERR_MODEL;
+    if (in->albedo_model == OI_ALBEDO_MAP &&
+        (in->albedo_map == NULL || in->albedo_map_n_lat < 1 ||
+         in->albedo_map_n_lat > OI_ALBEDO_MAP_MAX_DIM || in->albedo_map_n_lon < 1 ||
+         in->albedo_map_n_lon > OI_ALBEDO_MAP_MAX_DIM))
+        return OI_ERR_MODEL;
+    out->albedo_model = in->albedo_model;
+    out->albedo_map = in->albedo_map;
+    out->albedo_map_n_lat = in->albedo_map_n_lat;
+    out->albedo_map_n_lon = in->albedo_map_n_lon;
+    return OI_OK;
+#endif
 }
 
 /* oi_illuminate after the model's resolution (the batch calls it once per

@@ -71,21 +71,6 @@ int oi__model_resolve(const oi_model *in, oi_model *out)
     /* the limb-darkened disc is compiled out (include/oi_config.h) */
     if (in->limb_darkening == OI_LIMB_DARKENED) return OI_ERR_MODEL;
 #endif
-    /* the albedo model: uniform, or (compiled in) Knocke's or a map of
-     * dimensions in range */
-    if (in->albedo_model != OI_ALBEDO_UNIFORM) {
-#ifdef OI_NO_ALBEDO_MODELS
-        return OI_ERR_MODEL; /* compiled out (include/oi_config.h) */
-#else
-        if (in->albedo_model != OI_ALBEDO_KNOCKE && in->albedo_model != OI_ALBEDO_MAP)
-            return OI_ERR_MODEL;
-        if (in->albedo_model == OI_ALBEDO_MAP &&
-            (in->albedo_map == NULL || in->albedo_map_n_lat < 1 ||
-             in->albedo_map_n_lat > OI_ALBEDO_MAP_MAX_DIM || in->albedo_map_n_lon < 1 ||
-             in->albedo_map_n_lon > OI_ALBEDO_MAP_MAX_DIM))
-            return OI_ERR_MODEL;
-#endif
-    }
 #ifndef OI_NO_ATMOSPHERE
     /* a caller's atmosphere table, where it would be used (the default is
      * trusted; the earthshine table is checked by oi_earthshine) */
@@ -100,12 +85,6 @@ int oi__model_resolve(const oi_model *in, oi_model *out)
     out->no_atmosphere = in->no_atmosphere != 0;
     out->earth_table = in->earth_table;
     out->atm_table = in->atm_table;
-    out->albedo_model = in->albedo_model;
-    if (in->albedo_model == OI_ALBEDO_MAP) {
-        out->albedo_map = in->albedo_map;
-        out->albedo_map_n_lat = in->albedo_map_n_lat;
-        out->albedo_map_n_lon = in->albedo_map_n_lon;
-    }
     return OI_OK;
 }
 

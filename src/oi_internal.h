@@ -342,6 +342,15 @@ int oi__sun_shadow_want(const oi_real sun_km[3], const oi_real point_km[3],
                         const oi_model *resolved, unsigned want, oi_shadow *out,
                         oi_real light_dir[3]);
 
+/* The albedo model of a caller's model (albedo_model, albedo_map and its
+ * dimensions), checked and copied into the resolved one (oi__model_resolve
+ * leaves the uniform default): OI_OK, or OI_ERR_MODEL for an unknown model,
+ * a map without its array or with a dimension outside 1..OI_ALBEDO_MAP_MAX_DIM,
+ * or any model but the uniform one with OI_NO_ALBEDO_MODELS
+ * (src/illuminate.c; called by oi_illuminate and its batch, the functions
+ * that read it). */
+int oi__albedo_resolve(const oi_model *in, oi_model *out);
+
 /* oi_illuminate (src/illuminate.c) with a resolved model and non-NULL
  * scene and out: the model is not validated again. */
 int oi__illuminate_resolved(const oi_scene *scene, const oi_model *m, oi_illum *out);

@@ -313,10 +313,44 @@ static void test_hostile_inputs(void **state)
     check_int(OI_OK, run(&m, &s, &out), "the map ignores the epoch");
 }
 
+/* the batch: each row the single call's, bit for bit; a bad albedo model is
+ * the batch's error (every row's status) */
+static void test_batch(void **state)
+{
+    static const float map[2 * 3] = {0.1f, 0.5f, 0.9f, 0.3f, 0.3f, 0.7f};
+    oi_scene s[3];
+    oi_illum out[3], one;
+    int status[3], i;
+    oi_model m;
+    (void)state;
+    memset(&m, 0, sizeof m);
+    m.albedo_model = OI_ALBEDO_MAP;
+    m.albedo_map = map;
+    m.albedo_map_n_lat = 2;
+    m.albedo_map_n_lon = 3;
+    for (i = 0; i < 3; i++) {
+        scene_at(&s[i], 0.3 * i, 0.4 + 0.5 * i, 0.2, 500.0 + 9000.0 * i);
+        add_observer(&s[i]);
+        s[i].earth_rotation_rad = (oi_real)(0.7 * i);
+    }
+    check_int(0, oi_illuminate_batch(3, s, &m, out, status), "batch");
+    for (i = 0; i < 3; i++) {
+        check_int(status[i], oi_illuminate(&s[i], &m, &one), "row status");
+        if (memcmp(&one, &out[i], sizeof one) != 0) {
+            print_error("row %d differs from the single call\n", i);
+            fail();
+        }
+    }
+    m.albedo_map_n_lon = 0;
+    check_int(OI_ERR_MODEL, oi_illuminate_batch(3, s, &m, out, status), "bad map");
+    check_int(OI_ERR_MODEL, status[2], "row status of a bad map");
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_one_value_map_is_uniform),
+        cmocka_unit_test(test_batch),
         cmocka_unit_test(test_knocke_small_cap),
         cmocka_unit_test(test_knocke_far_pole),
         cmocka_unit_test(test_knocke_direction_tilts),
