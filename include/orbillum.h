@@ -483,7 +483,8 @@ typedef struct oi_illum {
     oi_real earth_albedo_eff;  /* the albedo e_earth is formed with: earth_albedo
                                   (OI_ALBEDO_UNIFORM), else the mean of the model's
                                   albedo over the lit visible Earth weighted by its
-                                  earthshine (with OI_TERM_EARTH; else 0) */
+                                  earthshine, the value under the target where none
+                                  is lit (with OI_TERM_EARTH; else 0) */
 } oi_illum;
 
 /*
