@@ -23,6 +23,10 @@
 #define J2000 2451545.0
 #define KNOCKE_T0 2444960.5
 
+/* computed: OK, or the table-range warning of a build without the
+ * earthshine table (the Lambert far field; the albedo's mean is the same) */
+#define check_ok(st, what) check_int(1, (st) == OI_OK || (st) == OI_WARN_TABLE_RANGE, what)
+
 #ifndef OI_NO_ALBEDO_MODELS
 
 /* Sun in the x-z plane at latitude sun_lat; target at angle theta from it
@@ -119,7 +123,7 @@ static void test_knocke_small_cap(void **state)
             /* the Sun over the target's latitude plus 0.3 rad */
             scene_at(&s, lats[j] + 0.3, 0.3, 0.0, 0.01);
             s.epoch_jd = (oi_real)jds[i];
-            check_int(OI_OK, oi_illuminate(&s, &m, &out), "status");
+            check_ok(oi_illuminate(&s, &m, &out), "status");
             check_close(knocke((double)s.target_km[2] / (R_E + 0.01), jds[i]),
                         (double)out.earth_albedo_eff, 2e-5, 0.0, "small-cap mean albedo");
         }
@@ -140,7 +144,7 @@ static void test_knocke_far_pole(void **state)
     m.albedo_model = OI_ALBEDO_KNOCKE;
     scene_at(&s, 1.5707963267948966, 0.0, 0.0, h);
     s.epoch_jd = (oi_real)(J2000 + 10.0);
-    check_int(OI_OK, oi_illuminate(&s, &m, &out), "status");
+    check_ok(oi_illuminate(&s, &m, &out), "status");
     check_close(0.34 + 0.75 * a1 + 0.4 * 0.29, (double)out.earth_albedo_eff, 1e-5, 0.0,
                 "far polar mean albedo");
 }
@@ -158,8 +162,8 @@ static void test_knocke_direction_tilts(void **state)
     m.albedo_model = OI_ALBEDO_KNOCKE;
     scene_at(&s, 0.0, 0.0, 0.0, 5000.0);
     s.epoch_jd = (oi_real)KNOCKE_T0;
-    check_int(OI_OK, oi_illuminate(&s, &u, &a), "uniform");
-    check_int(OI_OK, oi_illuminate(&s, &m, &b), "knocke");
+    check_ok(oi_illuminate(&s, &u, &a), "uniform");
+    check_ok(oi_illuminate(&s, &m, &b), "knocke");
     if (!(b.dir_earth[2] > a.dir_earth[2] + (oi_real)1e-3)) {
         print_error("dir_earth z: knocke %g, uniform %g\n", (double)b.dir_earth[2],
                     (double)a.dir_earth[2]);
@@ -199,9 +203,9 @@ static void test_continuity(void **state)
             m.albedo_map_n_lat = 4;
             m.albedo_map_n_lon = 8;
             scene_at(&s, 0.2, 0.5 * 3.14159265358979323846 - w - eps, 0.9, heights[i]);
-            check_int(OI_OK, oi_illuminate(&s, &m, &lo), "inside");
+            check_ok(oi_illuminate(&s, &m, &lo), "inside");
             scene_at(&s, 0.2, 0.5 * 3.14159265358979323846 - w + eps, 0.9, heights[i]);
-            check_int(OI_OK, oi_illuminate(&s, &m, &hi), "outside");
+            check_ok(oi_illuminate(&s, &m, &hi), "outside");
             check_close((double)lo.e_earth / (double)lo.earth_albedo_eff, (double)hi.e_earth / (double)hi.earth_albedo_eff, 0.0, tol, "lit edge e_earth per unit mean albedo (the uniform table)");
             printf("lit edge h %g model %d: mean albedo jumps by %.2e relative\n", heights[i],
                    models[k], fabs((double)hi.earth_albedo_eff / (double)lo.earth_albedo_eff - 1.0));
@@ -223,10 +227,13 @@ static void test_continuity(void **state)
                     fail();
                 }
                 prev = (double)out.earth_albedo_eff;
+#ifndef OI_NO_EARTH_TABLE
+                /* (without the table the Lambert far field does not vanish there) */
                 if (th > 0.5 * 3.14159265358979323846 + 0.98 * w &&
                     !((double)out.e_earth < 2e-5 * (double)lo.e_earth / cos(0.5 * 3.14159265358979323846 - w)))
                     print_error("h %g theta %g: e_earth %g near the far edge\n", heights[i], th,
                                 (double)out.e_earth), fail();
+#endif
             }
         }
 }
@@ -255,7 +262,7 @@ static void test_hostile_inputs(void **state)
     m.albedo_map_n_lat = 2;
     m.albedo_map_n_lon = 4;
     scene_at(&s, 0.0, 0.2, 0.0, 3000.0);
-    check_int(OI_OK, run(&m, &s, &out), "good map");
+    check_ok(run(&m, &s, &out), "good map");
     /* a cell the cubature reads: every cell of a 2 x 4 map from 3000 km */
     for (i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         map[5] = bad[i];
@@ -270,7 +277,7 @@ static void test_hostile_inputs(void **state)
     s.earth_rotation_rad = (oi_real)(2.0 * OI_EARTH_ROTATION_MAX_RAD);
     check_int(OI_ERR_INPUT, run(&m, &s, &out), "rotation too large");
     s.earth_rotation_rad = (oi_real)-3.0;
-    check_int(OI_OK, run(&m, &s, &out), "negative rotation");
+    check_ok(run(&m, &s, &out), "negative rotation");
     /* the map's description */
     m.albedo_map = NULL;
     check_int(OI_ERR_MODEL, run(&m, &s, &out), "NULL map");
@@ -300,17 +307,17 @@ static void test_hostile_inputs(void **state)
     /* not read without the Earth's term */
     s.terms = OI_TERM_SUN;
     s.epoch_jd = (oi_real)NAN;
-    check_int(OI_OK, run(&m, &s, &out), "epoch unread without the Earth");
+    check_ok(run(&m, &s, &out), "epoch unread without the Earth");
     check_int(0, out.earth_albedo_eff != (oi_real)0, "no mean albedo without the Earth");
     /* the map does not read the epoch, Knocke not the rotation */
     s.terms = OI_TERM_SUN | OI_TERM_EARTH;
     s.epoch_jd = (oi_real)J2000;
     s.earth_rotation_rad = (oi_real)NAN;
-    check_int(OI_OK, run(&m, &s, &out), "knocke ignores the rotation");
+    check_ok(run(&m, &s, &out), "knocke ignores the rotation");
     m.albedo_model = OI_ALBEDO_MAP;
     s.earth_rotation_rad = (oi_real)0;
     s.epoch_jd = (oi_real)NAN;
-    check_int(OI_OK, run(&m, &s, &out), "the map ignores the epoch");
+    check_ok(run(&m, &s, &out), "the map ignores the epoch");
 }
 
 /* the batch: each row the single call's, bit for bit; a bad albedo model is
@@ -374,7 +381,7 @@ static void test_refused(void **state)
     set3(s.sun_km, SUN_KM, 0.0, 0.0);
     set3(s.target_km, R_E + 500.0, 0.0, 0.0);
     s.terms = OI_TERM_SUN | OI_TERM_EARTH;
-    check_int(OI_OK, oi_illuminate(&s, &m, &out), "uniform");
+    check_ok(oi_illuminate(&s, &m, &out), "uniform");
     m.albedo_model = OI_ALBEDO_KNOCKE;
     s.epoch_jd = (oi_real)J2000;
     check_int(OI_ERR_MODEL, oi_illuminate(&s, &m, &out), "knocke compiled out");
