@@ -73,7 +73,7 @@ enum { C_ALL, C_SUN, C_SUN_EARTH, C_ALL_EXPOSE, C_SUN_FRACTION, C_EARTHSHINE, C_
        C_SUN_MOON, C_SUN_EARTH_MEAN, C_SHAPE_PLATE, C_SHAPE_BOX_WING, C_SHAPE_CYLINDER,
        C_SUN_FRACTION_WGS84, C_ALL_WGS84,
        C_SUN_FRACTION_BATCH, C_SUN_FRACTION_BATCH_ALL, C_ALL_BATCH, C_EARTHSHINE_BATCH,
-       C_N };
+       C_SUN_EARTH_KNOCKE, C_SUN_EARTH_MAP, C_N };
 static const char *const config_name[C_N] = {"all",          "sun",        "sun_earth",
                                              "all_expose",   "sun_fraction", "earthshine",
                                              "earthshine_lambert", "sun_moon", "sun_earth_mean",
@@ -82,7 +82,14 @@ static const char *const config_name[C_N] = {"all",          "sun",        "sun_
                                              "sun_fraction_wgs84", "all_wgs84",
                                              "sun_fraction_batch",
                                              "sun_fraction_batch_all", "all_batch",
-                                             "earthshine_batch"};
+                                             "earthshine_batch", "sun_earth_knocke",
+                                             "sun_earth_map"};
+
+/* the albedo map of sun_earth_map: 1-degree cells (a CERES grid's size),
+ * a smooth zonal and tesseral pattern (filled by setup) */
+#define MAP_LAT 180
+#define MAP_LON 360
+static float albedo_map[MAP_LAT * MAP_LON];
 
 /* The batch configurations' arrays: the scenes of the mix (or of one
  * lighting class), packed (pack()). */
@@ -99,6 +106,13 @@ static void setup(void)
 {
     int i, k;
     bench_make_scenes(raw);
+    for (i = 0; i < MAP_LAT; i++)
+        for (k = 0; k < MAP_LON; k++) {
+            const double lat = 1.5707963267948966 - (i + 0.5) * 3.14159265358979323846 / MAP_LAT;
+            const double lon = (k + 0.5) * 6.283185307179586 / MAP_LON;
+            albedo_map[i * MAP_LON + k] =
+                (float)(0.3 + 0.2 * sin(lat) * sin(lat) + 0.1 * cos(lat) * cos(lon - 1.0));
+        }
     for (i = 0; i < BENCH_NSCENES; i++) {
         oi_scene *s = &scenes[i];
         double t[3], r, d, c[3], cn;
@@ -111,6 +125,9 @@ static void setup(void)
             t[k] = raw[i].target[k];
         }
         s->has_observer = 1;
+        /* the albedo models' epoch and Earth rotation (read only by them) */
+        s->epoch_jd = (oi_real)(2451545.0 + 3.7 * i);
+        s->earth_rotation_rad = (oi_real)(0.1 * i);
         /* theta and h of the earthshine-only configurations, in double */
         r = sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
         d = raw[i].sun[0] * t[0] + raw[i].sun[1] * t[1] + raw[i].sun[2] * t[2];
@@ -174,7 +191,7 @@ static double run_config(int cfg)
 {
     static oi_illum il;
     static oi_exposure ex;
-    oi_model lambert, mean, wgs84;
+    oi_model lambert, mean, wgs84, knocke, map;
     oi_real phi, psi;
     double acc = 0.0;
     int i;
@@ -182,13 +199,20 @@ static double run_config(int cfg)
 #ifndef OI_NO_EXPOSURE
     cam = oi_camera_builtin(0);
 #endif
-    if (cfg >= C_SUN_FRACTION_BATCH) return run_batch(cfg);
+    if (cfg >= C_SUN_FRACTION_BATCH && cfg <= C_EARTHSHINE_BATCH) return run_batch(cfg);
     memset(&lambert, 0, sizeof lambert);
     lambert.earth_model = OI_EARTH_LAMBERT;
     memset(&mean, 0, sizeof mean);
     mean.earth_reflection = OI_EARTH_REFLECT_MEAN;
     memset(&wgs84, 0, sizeof wgs84);
     wgs84.earth_shape = OI_EARTH_WGS84;
+    memset(&knocke, 0, sizeof knocke);
+    knocke.albedo_model = OI_ALBEDO_KNOCKE;
+    memset(&map, 0, sizeof map);
+    map.albedo_model = OI_ALBEDO_MAP;
+    map.albedo_map = albedo_map;
+    map.albedo_map_n_lat = MAP_LAT;
+    map.albedo_map_n_lon = MAP_LON;
     for (i = 0; i < BENCH_NSCENES; i++) {
         oi_scene *s = &scenes[i];
         if (only_light >= 0 && raw[i].light != only_light) continue;
@@ -213,6 +237,12 @@ static double run_config(int cfg)
         case C_SUN_EARTH:
             s->terms = OI_TERM_SUN | OI_TERM_EARTH;
             (void)oi_illuminate(s, NULL, &il);
+            acc += (double)il.flux_obs;
+            break;
+        case C_SUN_EARTH_KNOCKE:
+        case C_SUN_EARTH_MAP:
+            s->terms = OI_TERM_SUN | OI_TERM_EARTH;
+            (void)oi_illuminate(s, cfg == C_SUN_EARTH_KNOCKE ? &knocke : &map, &il);
             acc += (double)il.flux_obs;
             break;
         case C_SUN_EARTH_MEAN:

@@ -83,6 +83,19 @@ static void fz_model(fz_in *in, oi_model *m)
         m->earth_shape = (o >> 4) & 1; /* the sphere or the WGS-84 ellipsoid */
     }
     m->earth_table = NULL; /* a pointer cannot be fuzzed; NULL is the default table */
+    if (flags & 128) {
+        /* an albedo model: Knocke, or a map of fuzzed values (NaN and out of
+         * range included) and dimensions within the array, or an unknown one */
+        static float map[8 * 16];
+        uint8_t o = fz_u8(in);
+        unsigned i;
+        m->albedo_model = (o & 0x80) ? (int)(int8_t)fz_u8(in) : 1 + (o & 1);
+        for (i = 0; i < sizeof map / sizeof map[0]; i++)
+            map[i] = (o & 0x40) ? (float)fz_real(in) : 0.3f;
+        m->albedo_map = (o & 0x20) ? NULL : map;
+        m->albedo_map_n_lat = 1 + (o >> 1) % 8;
+        m->albedo_map_n_lon = 1 + (o >> 2) % 16;
+    }
 }
 
 static void do_scalars(fz_in *in)
@@ -220,6 +233,11 @@ static void fz_scene(fz_in *in, oi_scene *s)
 #ifndef OI_NO_FACETS
     if (flags & 64) fz_shape(in, s);
 #endif
+    if (flags & 128) {
+        /* the albedo models' epoch and Earth rotation (read only by them) */
+        s->epoch_jd = (flags & 64) ? fz_real(in) : (oi_real)2451545.0 + fz_real(in);
+        s->earth_rotation_rad = fz_real(in);
+    }
 }
 
 /* On a violation, the scene and the result are printed before the abort. */
@@ -463,7 +481,12 @@ static void do_illuminate(fz_in *in)
         e_max = tsi * inv_sq_scaled(au, d);
         e0 = tsi * inv_sq_scaled(au, sv);
         FZ_CHECK((double)o.e_sun <= e_max * (1 + 1e-5) + tiny);
-        FZ_CHECK((double)o.e_earth <= (double)s.earth_albedo * e0 * 2.02 + tiny);
+        /* the albedo e_earth is formed with: earth_albedo, or the albedo
+         * model's weighted mean, in [0, 1] */
+        FZ_CHECK(fz_frac(o.earth_albedo_eff));
+        FZ_CHECK((double)o.e_earth <= (double)o.earth_albedo_eff * e0 * 2.02 + tiny);
+        if (!((use_model & 1) && m.albedo_model != OI_ALBEDO_UNIFORM) && (s.terms & OI_TERM_EARTH))
+            FZ_CHECK(o.earth_albedo_eff == s.earth_albedo);
     }
     g_dump_illum = NULL;
 #ifndef OI_NO_EXPOSURE

@@ -40,6 +40,13 @@
  *                        with earth_shape = OI_EARTH_WGS84 is rejected with
  *                        OI_ERR_MODEL (src/model.c); the field and its
  *                        constants stay, as with OI_NO_LIMB_DARKENING.
+ *   OI_NO_ALBEDO_MODELS  no albedo models but the uniform one: removes the
+ *                        Knocke model, the albedo map and their cubature
+ *                        (src/albedo_field.c, src/earthshine_albedo.c); a
+ *                        model with albedo_model other than OI_ALBEDO_UNIFORM
+ *                        is rejected with OI_ERR_MODEL (the fields and
+ *                        constants stay: they belong to the model's ABI, as
+ *                        with OI_NO_LIMB_DARKENING). docs/earthshine-albedo.md.
  * An option that removes a feature removes its declarations too, so code that
  * still uses the feature fails to compile.
  */

@@ -131,6 +131,22 @@ const char *oi_status_name(int status);
                                  1/OI_WGS84_INV_FLATTENING, the frame's z axis
                                  the rotation axis (GCRS, J2000, TEME);
                                  docs/shadow.md section 10 */
+/* oi_model.albedo_model: the Earth's albedo over the globe, read by
+ * oi_illuminate (and its batch) only (docs/earthshine-albedo.md). Positions
+ * are then taken in a frame whose z axis is the Earth's rotation axis (GCRS,
+ * J2000 or TEME), latitudes above its equator. */
+#define OI_ALBEDO_UNIFORM (0) /* oi_scene.earth_albedo everywhere (default) */
+#define OI_ALBEDO_KNOCKE  (1) /* zonal and seasonal, Knocke, Ries & Tapley 1988;
+                                 needs oi_scene.epoch_jd */
+#define OI_ALBEDO_MAP     (2) /* the caller's latitude-longitude grid (oi_model.albedo_map);
+                                 needs oi_scene.earth_rotation_rad */
+/* Largest number of rows (latitudes) or columns (longitudes) of an albedo map. */
+#define OI_ALBEDO_MAP_MAX_DIM (32768)
+/* Valid range of oi_scene.epoch_jd (Julian date, UTC): 1900-01-01 0h to 2100-01-01 0h. */
+#define OI_EPOCH_JD_MIN (2415020.5)
+#define OI_EPOCH_JD_MAX (2488069.5)
+/* Largest accepted |oi_scene.earth_rotation_rad| (rad). */
+#define OI_EARTH_ROTATION_MAX_RAD (1.0e3)
 
 /* oi_model.limb_darkening */
 #define OI_LIMB_UNIFORM (0)   /* uniform solar disc (default) */
@@ -161,7 +177,32 @@ typedef struct oi_model {
     int earth_reflection;     /* OI_EARTH_REFLECT_MOMENTS or OI_EARTH_REFLECT_MEAN */
     int earth_shape;          /* OI_EARTH_SPHERE or OI_EARTH_WGS84 (OI_ERR_MODEL with
                                  OI_NO_OBLATE) */
+    int albedo_model;         /* OI_ALBEDO_UNIFORM, OI_ALBEDO_KNOCKE or OI_ALBEDO_MAP */
+    const float *albedo_map;  /* OI_ALBEDO_MAP: n_lat rows from north to south, each of
+                                 n_lon cells from the Greenwich meridian eastwards,
+                                 values in [0, 1] (see "Albedo map" below) */
+    int albedo_map_n_lat;     /* rows, 1..OI_ALBEDO_MAP_MAX_DIM */
+    int albedo_map_n_lon;     /* cells per row, 1..OI_ALBEDO_MAP_MAX_DIM */
 } oi_model;
+
+/*
+ * Albedo map (oi_model.albedo_map, read with albedo_model = OI_ALBEDO_MAP):
+ * a caller-owned const array of n_lat * n_lon floats, row-major. Row i
+ * covers the latitudes from 90 - 180 i / n_lat to 90 - 180 (i + 1) / n_lat
+ * degrees (north to south), cell j of a row the east longitudes from
+ * 360 j / n_lon to 360 (j + 1) / n_lon degrees from the Greenwich meridian;
+ * map[i * n_lon + j] is the cell's albedo, in [0, 1] (e.g. a CERES monthly
+ * mean resampled to the grid). The field between cell centres is bilinear,
+ * periodic in longitude and constant in latitude beyond the first and last
+ * rows' centres. The Greenwich meridian lies at oi_scene.earth_rotation_rad
+ * from the frame's x axis, about its z axis (the Earth's rotation angle,
+ * or the Greenwich sidereal time for a TEME frame). Every value a call
+ * reads is checked (NaN or outside [0, 1]: OI_ERR_ALBEDO); the array is
+ * never written. albedo_model and the map's description are checked by the
+ * functions that read them, oi_illuminate and oi_illuminate_batch (an
+ * unknown model, a NULL map or a dimension out of range: OI_ERR_MODEL);
+ * the others ignore them.
+ */
 
 /*
  * Baked tables of a model (include/oi_table.h, docs/tables.md).
@@ -522,6 +563,12 @@ typedef struct oi_scene {
                                 (w, x, y, z), read with a shape only; all zero: the
                                 identity; a norm off 1 by more than 1e-6 or a
                                 non-finite component: OI_ERR_SHAPE; else normalised */
+    oi_real epoch_jd;        /* Julian date (UTC) of the scene, in [OI_EPOCH_JD_MIN,
+                                OI_EPOCH_JD_MAX]; read only by the albedo model
+                                OI_ALBEDO_KNOCKE (with OI_TERM_EARTH) */
+    oi_real earth_rotation_rad; /* angle of the Greenwich meridian from the frame's x axis
+                                   about its z axis (rad, |value| <= OI_EARTH_ROTATION_MAX_RAD);
+                                   read only by OI_ALBEDO_MAP (with OI_TERM_EARTH) */
 } oi_scene;
 
 /* oi_scene_defaults: fill a scene with the defaults: zero positions, no
@@ -560,6 +607,11 @@ typedef struct oi_illum {
                                   seen from the target (with OI_TERM_MOON; else 0) */
     oi_real flux_specular;   /* part of flux_obs from the facets' specular lobes (W/m^2;
                                 0 for a sphere) */
+    oi_real earth_albedo_eff;  /* the albedo e_earth is formed with: earth_albedo
+                                  (OI_ALBEDO_UNIFORM), else the mean of the model's
+                                  albedo over the lit visible Earth weighted by its
+                                  earthshine, the value under the target where none
+                                  is lit (with OI_TERM_EARTH; else 0) */
 } oi_illum;
 
 /*
@@ -591,6 +643,13 @@ typedef struct oi_illum {
  *                            albedo_specular above 1 (diffuse_from_scene),
  *                            or a bad attitude_q (see oi_scene); any shape
  *                            in a build with OI_NO_FACETS
+ *          OI_ERR_NONFINITE  with OI_TERM_EARTH: epoch_jd (OI_ALBEDO_KNOCKE)
+ *                            or earth_rotation_rad (OI_ALBEDO_MAP) NaN or
+ *                            infinite
+ *          OI_ERR_INPUT      with OI_TERM_EARTH: epoch_jd outside
+ *                            [OI_EPOCH_JD_MIN, OI_EPOCH_JD_MAX] (knocke),
+ *                            |earth_rotation_rad| > OI_EARTH_ROTATION_MAX_RAD
+ *                            (map)
  *          then the Sun seen from the target (oi_sun_fraction's statuses:
  *          OI_ERR_GEOMETRY for a Sun touching the Earth or the target inside
  *          the Sun), the Sun seen from the Moon (the same; the Moon below the
@@ -602,6 +661,8 @@ typedef struct oi_illum {
  *                            (its position given)
  *          OI_ERR_OBSERVER_AT_TARGET  the observer inside the target's sphere
  *                            (range <= target_radius_m)
+ *          OI_ERR_ALBEDO     OI_ALBEDO_MAP: a map value the call reads is NaN
+ *                            or outside [0, 1]
  * Notes:   e_sun = TSI (AU / |sun - target|)^2 fraction_atm;
  *          e_earth = earth_albedo TSI (AU / |sun|)^2 phi(theta, h);
  *          e_moon from the lunar phase law (or a Lambert Moon), times the
@@ -627,6 +688,14 @@ typedef struct oi_illum {
  *          flux_moon are the facets' sums per source, flux_specular their
  *          specular part; target_radius_m is then used for the
  *          observer-at-target check only. src/illuminate.c, src/facet.c.
+ *          Albedo models (model albedo_model; docs/earthshine-albedo.md):
+ *          with OI_ALBEDO_KNOCKE or OI_ALBEDO_MAP, e_earth = A TSI (AU /
+ *          |sun|)^2 phi, A = earth_albedo_eff the earthshine-weighted mean
+ *          albedo over the lit visible Earth, and dir_earth and the sphere's
+ *          angular distribution (flux_earth) carry the field's first-order
+ *          change, all from a fixed cubature used as a control variate on the
+ *          uniform tables (earth_phi, earth_psi stay the uniform sphere's).
+ *          src/illuminate.c, src/earthshine_albedo.c.
  */
 int oi_illuminate(const oi_scene *scene, const oi_model *model, oi_illum *out);
 

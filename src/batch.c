@@ -254,6 +254,7 @@ int oi_illuminate_batch(long n, const oi_scene *scenes, const oi_model *model, o
         check_overlap(in, 1, o, 2) != OI_OK)
         return batch_fail(OI_ERR_INPUT, n, status, NULL, 0, 0);
     st = oi__model_resolve(model, &m);
+    if (st == OI_OK) st = oi__albedo_resolve(model, &m);
     if (st < 0) return batch_fail(st, n, status, out, sizeof *out, 1);
     for (i = 0; i < n; i++) {
         status[i] = oi__illuminate_resolved(&scenes[i], &m, &out[i]);

@@ -65,11 +65,23 @@ static int check_scene(const oi_scene *s, const oi_model *m)
         if (!oi__oblate_outside(s->target_km, m->earth_radius_km) ||
             (obs && !oi__oblate_outside(s->observer_km, m->earth_radius_km)))
             return OI_ERR_BELOW_SURFACE;
-        return OI_OK;
-    }
+    } else
 #endif
     if (n_target <= m->earth_radius_km || n_obs <= m->earth_radius_km)
         return OI_ERR_BELOW_SURFACE;
+    /* what the albedo model reads of the scene (model.c refuses the models
+     * when they are compiled out) */
+    if (s->terms & OI_TERM_EARTH) {
+        if (m->albedo_model == OI_ALBEDO_KNOCKE) {
+            if (!OI_ISFINITE(s->epoch_jd)) return OI_ERR_NONFINITE;
+            if (!(s->epoch_jd >= (oi_real)OI_EPOCH_JD_MIN && s->epoch_jd <= (oi_real)OI_EPOCH_JD_MAX))
+                return OI_ERR_INPUT;
+        } else if (m->albedo_model == OI_ALBEDO_MAP) {
+            if (!OI_ISFINITE(s->earth_rotation_rad)) return OI_ERR_NONFINITE;
+            if (OI_FABS(s->earth_rotation_rad) > (oi_real)OI_EARTH_ROTATION_MAX_RAD)
+                return OI_ERR_INPUT;
+        }
+    }
     if (s->shape != NULL) {
 #ifdef OI_NO_FACETS
         return OI_ERR_SHAPE;
@@ -253,7 +265,35 @@ static OI_NOINLINE int sun_term(const oi_scene *scene, const oi_model *m, oi_ill
     return st;
 }
 
-/* theta, h and the Earth's term: e_earth, dir_earth, earth_phi, earth_psi. */
+#ifndef OI_NO_ALBEDO_MODELS
+/* The albedo field's mean (earth_albedo_eff, then e_earth with it) and its
+ * change of dir_earth and of the sphere's shape (*shape_add),
+ * src/earthshine_albedo.c. Called after earth_term, in a frame of its own
+ * (make stack: the cubature's chain is the deepest of oi_illuminate). */
+static OI_NOINLINE int albedo_field_term(const oi_scene *scene, const oi_model *m,
+                                         oi_illum *out, oi_real *shape_add)
+{
+    oi__albedo_field f;
+    oi_real r_hat[3], s_hat[3], obs_hat[3], d_sun, r_target;
+    const oi_real *obs = NULL;
+    int st;
+    d_sun = oi__unit_bounded(scene->sun_km, s_hat);
+    r_target = oi__unit_bounded(scene->target_km, r_hat);
+    oi__albedo_field_init(m, scene, &f);
+    if (scene->has_observer) {
+        oi__sub(scene->observer_km, scene->target_km, obs_hat);
+        if (oi__unit(obs_hat, obs_hat) > (oi_real)0) obs = obs_hat;
+    }
+    st = oi__earthshine_albedo(&f, r_hat, s_hat, m->earth_radius_km / r_target, obs,
+                               &out->earth_albedo_eff, out->dir_earth, shape_add);
+    if (st < 0) return st;
+    out->e_earth = out->earth_albedo_eff * solar_irradiance(m, d_sun) * out->earth_phi;
+    return OI_OK;
+}
+#endif
+
+/* theta, h and the Earth's term of the uniform sphere: e_earth, dir_earth,
+ * earth_phi, earth_psi, earth_albedo_eff. */
 static OI_NOINLINE int earth_term(const oi_scene *scene, const oi_model *m, oi_illum *out)
 {
     oi_real s_hat[3], r_hat[3], c[3], cos_theta, sin_theta, phi, psi;
@@ -278,8 +318,9 @@ static OI_NOINLINE int earth_term(const oi_scene *scene, const oi_model *m, oi_i
         if (st < 0) return st;
         out->earth_phi = phi;
         out->earth_psi = psi;
-        out->e_earth = scene->earth_albedo * solar_irradiance(m, d_sun) * phi;
+        out->earth_albedo_eff = scene->earth_albedo;
         earth_direction(r_hat, s_hat, psi, out->dir_earth);
+        out->e_earth = out->earth_albedo_eff * solar_irradiance(m, d_sun) * phi;
     }
     return st;
 }
@@ -291,7 +332,7 @@ static OI_NOINLINE int earth_term(const oi_scene *scene, const oi_model *m, oi_i
 static OI_NOINLINE int earth_flux_moments(const oi_scene *scene, const oi_model *m,
                                           const oi_earth_angular_table *t,
                                           const oi_real obs_hat[3], oi_real ratio,
-                                          oi_illum *out)
+                                          oi_real shape_add, oi_illum *out)
 {
     oi_real r_hat[3], s_hat[3], x[3], y[3], o[3], c[3], cos_theta, sin_theta, shape;
     oi__local_frame(scene->target_km, scene->sun_km, r_hat, s_hat, x, y);
@@ -304,13 +345,17 @@ static OI_NOINLINE int earth_flux_moments(const oi_scene *scene, const oi_model 
     if (!oi__earth_sphere_shape(t, out->earth_theta, cos_theta, sin_theta, out->earth_h_km,
                                 m->earth_radius_km, o, &shape))
         return 0;
+    /* the albedo field's change (0 when uniform), the sum kept non-negative */
+    shape += shape_add;
+    if (shape < (oi_real)0) shape = (oi_real)0;
     out->flux_earth = out->e_earth * scene->target_albedo * ratio * ratio * shape;
     return 1;
 }
 #endif
 
 /* What the observer receives: range, phase angles, fluxes, magnitude. */
-static OI_NOINLINE int observer_term(const oi_scene *scene, const oi_model *m, oi_illum *out)
+static OI_NOINLINE int observer_term(const oi_scene *scene, const oi_model *m,
+                                     oi_real shape_add, oi_illum *out)
 {
     oi_real obs_hat[3], ratio;
     oi__sub(scene->observer_km, scene->target_km, obs_hat);
@@ -328,8 +373,10 @@ static OI_NOINLINE int observer_term(const oi_scene *scene, const oi_model *m, o
          * the mean direction's) */
         const oi_earth_angular_table *t = oi__earth_angular_of(m);
         if (t != NULL && out->e_earth > (oi_real)0)
-            (void)earth_flux_moments(scene, m, t, obs_hat, ratio, out);
+            (void)earth_flux_moments(scene, m, t, obs_hat, ratio, shape_add, out);
     }
+#else
+    (void)shape_add;
 #endif
     out->flux_moon = reflected_flux(out->e_moon, out->dir_moon, obs_hat, ratio,
                                     scene->target_albedo, &out->phase_moon);
@@ -381,8 +428,35 @@ int oi_illuminate(const oi_scene *scene, const oi_model *model, oi_illum *out)
     memset(out, 0, sizeof *out);
     if (scene == NULL) return OI_ERR_NULL;
     st = oi__model_resolve(model, &m);
+    if (st == OI_OK) st = oi__albedo_resolve(model, &m);
     if (st < 0) return st;
     return oi__illuminate_resolved(scene, &m, out);
+}
+
+/* The albedo model's fields, checked and copied (src/oi_internal.h). Here,
+ * not in oi__model_resolve: the functions without an albedo model (the
+ * Sun-only build's among them) carry none of it. */
+int oi__albedo_resolve(const oi_model *in, oi_model *out)
+{
+    if (in == NULL) return OI_OK;
+#ifdef OI_NO_ALBEDO_MODELS
+    (void)out;
+    return in->albedo_model == OI_ALBEDO_UNIFORM ? OI_OK : OI_ERR_MODEL; /* oi_config.h */
+#else
+    if (in->albedo_model != OI_ALBEDO_UNIFORM && in->albedo_model != OI_ALBEDO_KNOCKE &&
+        in->albedo_model != OI_ALBEDO_MAP)
+        return OI_ERR_MODEL;
+    if (in->albedo_model == OI_ALBEDO_MAP &&
+        (in->albedo_map == NULL || in->albedo_map_n_lat < 1 ||
+         in->albedo_map_n_lat > OI_ALBEDO_MAP_MAX_DIM || in->albedo_map_n_lon < 1 ||
+         in->albedo_map_n_lon > OI_ALBEDO_MAP_MAX_DIM))
+        return OI_ERR_MODEL;
+    out->albedo_model = in->albedo_model;
+    out->albedo_map = in->albedo_map;
+    out->albedo_map_n_lat = in->albedo_map_n_lat;
+    out->albedo_map_n_lon = in->albedo_map_n_lon;
+    return OI_OK;
+#endif
 }
 
 /* oi_illuminate after the model's resolution (the batch calls it once per
@@ -390,6 +464,7 @@ int oi_illuminate(const oi_scene *scene, const oi_model *model, oi_illum *out)
 int oi__illuminate_resolved(const oi_scene *scene, const oi_model *m, oi_illum *out)
 {
     int st, warn = OI_OK;
+    oi_real shape_add = (oi_real)0;
 
     memset(out, 0, sizeof *out);
     st = check_scene(scene, m);
@@ -407,6 +482,12 @@ int oi__illuminate_resolved(const oi_scene *scene, const oi_model *m, oi_illum *
     st = earth_term(scene, m, out);
     if (st < 0) goto fail;
     if (st > 0) warn = st;
+#ifndef OI_NO_ALBEDO_MODELS
+    if ((scene->terms & OI_TERM_EARTH) && m->albedo_model != OI_ALBEDO_UNIFORM) {
+        st = albedo_field_term(scene, m, out, &shape_add);
+        if (st < 0) goto fail;
+    }
+#endif
 #ifndef OI_NO_MOON
     if (scene->terms & OI_TERM_MOON) {
         st = moon_sun_fraction(scene, m, &out->moon_sun_fraction);
@@ -416,7 +497,7 @@ int oi__illuminate_resolved(const oi_scene *scene, const oi_model *m, oi_illum *
     }
 #endif
     if (scene->has_observer) {
-        st = observer_term(scene, m, out);
+        st = observer_term(scene, m, shape_add, out);
         if (st < 0) goto fail;
     }
     return warn;

@@ -360,6 +360,15 @@ int oi__sun_shadow_want(const oi_real sun_km[3], const oi_real point_km[3],
                         const oi_model *resolved, unsigned want, oi_shadow *out,
                         oi_real light_dir[3]);
 
+/* The albedo model of a caller's model (albedo_model, albedo_map and its
+ * dimensions), checked and copied into the resolved one (oi__model_resolve
+ * leaves the uniform default): OI_OK, or OI_ERR_MODEL for an unknown model,
+ * a map without its array or with a dimension outside 1..OI_ALBEDO_MAP_MAX_DIM,
+ * or any model but the uniform one with OI_NO_ALBEDO_MODELS
+ * (src/illuminate.c; called by oi_illuminate and its batch, the functions
+ * that read it). */
+int oi__albedo_resolve(const oi_model *in, oi_model *out);
+
 /* oi_illuminate (src/illuminate.c) with a resolved model and non-NULL
  * scene and out: the model is not validated again. */
 int oi__illuminate_resolved(const oi_scene *scene, const oi_model *m, oi_illum *out);
@@ -424,6 +433,39 @@ int oi__shape_scene_check(const oi_scene *s);
 void oi__shape_flux(const oi_scene *s, const oi_model *m, const oi_real obs_hat[3],
                     oi_illum *out);
 oi_real oi__shape_peak(const oi_scene *s);
+#ifndef OI_NO_ALBEDO_MODELS
+/* The Earth's albedo field of a resolved model and a scene, ready to be
+ * sampled (src/albedo_field.c): the Knocke model's degree-1 coefficient at
+ * the scene's epoch, or the map and the Greenwich meridian's cosine and
+ * sine. */
+typedef struct oi__albedo_field {
+    int model;           /* OI_ALBEDO_KNOCKE or OI_ALBEDO_MAP */
+    oi_real a1;          /* Knocke: a1(t) */
+    const float *map;    /* map: the caller's grid */
+    int n_lat, n_lon;
+    oi_real cos_rot, sin_rot; /* map: Greenwich meridian from the frame's x axis */
+} oi__albedo_field;
+
+/* Prepare f for the non-uniform model of m and scene s (its epoch_jd and
+ * earth_rotation_rad already checked by oi_illuminate). */
+void oi__albedo_field_init(const oi_model *m, const oi_scene *s, oi__albedo_field *f);
+
+/* The albedo at the unit surface point p (the scene's frame, z the rotation
+ * axis), in [0, 1]: OI_OK, or OI_ERR_ALBEDO for a map value read that is NaN
+ * or outside [0, 1] (*a then 0). */
+int oi__albedo_at(const oi__albedo_field *f, const oi_real p[3], oi_real *a);
+
+/* Earthshine under a non-uniform albedo field (src/earthshine_albedo.c), at
+ * the target of unit position r_hat and x = R / r, the Sun in the unit
+ * direction s_hat; obs_hat the unit direction to the observer or NULL.
+ * *albedo: the earthshine-weighted mean albedo over the lit visible cap;
+ * dir: given the uniform sphere's mean incidence direction, returned with
+ * the field's change; *shape_add: the change of the sphere's shape S(o) =
+ * F / phi per unit mean albedo (0 without observer). Returns OI_OK or
+ * OI_ERR_ALBEDO (outputs then 0, dir untouched). */
+int oi__earthshine_albedo(const oi__albedo_field *f, const oi_real r_hat[3],
+                          const oi_real s_hat[3], oi_real x, const oi_real *obs_hat,
+                          oi_real *albedo, oi_real dir[3], oi_real *shape_add);
 #endif
 
 /* oi_magnitude_v (src/magnitude.c) with the model's TSI already resolved. */

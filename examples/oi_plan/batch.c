@@ -32,6 +32,7 @@ enum column {
     C_TARGET_VX, C_TARGET_VY, C_TARGET_VZ,
     C_OBSERVER_VX, C_OBSERVER_VY, C_OBSERVER_VZ,
     C_TARGET_SHAPE, C_Q_W, C_Q_X, C_Q_Y, C_Q_Z, C_EARTH_SHAPE,
+    C_ALBEDO_MODEL, C_EPOCH_JD, C_EARTH_ROTATION_DEG,
     C_COUNT
 };
 
@@ -45,7 +46,8 @@ static const char *const column_name[C_COUNT] = {
     "sky",
     "target_vx", "target_vy", "target_vz",
     "observer_vx", "observer_vy", "observer_vz",
-    "target_shape", "q_w", "q_x", "q_y", "q_z", "earth_shape"
+    "target_shape", "q_w", "q_x", "q_y", "q_z", "earth_shape",
+    "albedo_model", "epoch_jd", "earth_rotation_deg"
 };
 
 typedef struct batch {
@@ -53,6 +55,7 @@ typedef struct batch {
     size_t header_fields;
     const oi_camera *default_camera;
     const plan_shapes *shapes; /* --shapes, or NULL */
+    const plan_albedo_map *albedo_map; /* --albedo-map, or NULL */
     const char *path;
     int warned_extra;
     unsigned long messages;   /* row messages printed so far */
@@ -472,6 +475,49 @@ static int run_row(batch *b, const csv_reader *r, plan_row *row)
         return 0;
     }
 
+    /* the albedo model: uniform (default), knocke (needs epoch_jd) or map
+     * (needs --albedo-map, epoch_jd and earth_rotation_deg) */
+    s = field_of(b, r, C_ALBEDO_MODEL, &short_row);
+    if (s != NULL && s[0] != '\0' && !same_nocase(s, "uniform")) {
+        int has_epoch, has_rotation;
+        double jd = 0, rot = 0;
+        if (same_nocase(s, "knocke")) {
+            model.albedo_model = OI_ALBEDO_KNOCKE;
+        } else if (same_nocase(s, "map")) {
+            model.albedo_model = OI_ALBEDO_MAP;
+        } else {
+            row_error(b, r->rec_line, b->col[C_ALBEDO_MODEL],
+                      "albedo_model must be uniform, knocke or map; got", s);
+            return 0;
+        }
+        if ((has_epoch = parse_opt(b, r, C_EPOCH_JD, &jd)) < 0) return 0;
+        if ((has_rotation = parse_opt(b, r, C_EARTH_ROTATION_DEG, &rot)) < 0) return 0;
+        if (!has_epoch) {
+            row_error(b, r->rec_line, b->col[C_ALBEDO_MODEL],
+                      "albedo_model knocke and map need epoch_jd (Julian date, UTC)", NULL);
+            return 0;
+        }
+        sc.epoch_jd = (oi_real)jd;
+        if (model.albedo_model == OI_ALBEDO_MAP) {
+            if (b->albedo_map == NULL) {
+                row_error(b, r->rec_line, b->col[C_ALBEDO_MODEL],
+                          "albedo_model map needs --albedo-map FILE", NULL);
+                return 0;
+            }
+            if (!has_rotation) {
+                row_error(b, r->rec_line, b->col[C_ALBEDO_MODEL],
+                          "albedo_model map needs earth_rotation_deg (the Greenwich "
+                          "meridian's angle from the frame's x axis)", NULL);
+                return 0;
+            }
+            /* degrees to radians: the range check is the library's */
+            sc.earth_rotation_rad = (oi_real)(rot * (3.14159265358979323846 / 180.0));
+            model.albedo_map = b->albedo_map->values;
+            model.albedo_map_n_lat = b->albedo_map->n_lat;
+            model.albedo_map_n_lon = b->albedo_map->n_lon;
+        }
+    }
+
     memset(&goal, 0, sizeof goal);
     s = field_of(b, r, C_SKY, &short_row);
     if (s != NULL && parse_sky(s, &goal.sky) < 0) {
@@ -541,6 +587,12 @@ static void progress(unsigned long rows, time_t *last, int tty)
 int batch_run(const char *path, const oi_camera *default_camera, const plan_shapes *shapes,
               FILE *out, FILE *summary)
 {
+    return batch_run_map(path, default_camera, shapes, NULL, out, summary);
+}
+
+int batch_run_map(const char *path, const oi_camera *default_camera, const plan_shapes *shapes,
+                  const plan_albedo_map *albedo_map, FILE *out, FILE *summary)
+{
     batch b;
     window_list wins;
     csv_reader r;
@@ -553,6 +605,7 @@ int batch_run(const char *path, const oi_camera *default_camera, const plan_shap
     windows_init(&wins, 5.0); /* the default SNR goal of oi_expose */
     b.default_camera = default_camera;
     b.shapes = shapes;
+    b.albedo_map = albedo_map;
     b.path = strcmp(path, "-") == 0 ? "<stdin>" : path;
     fp = strcmp(path, "-") == 0 ? stdin : fopen(path, "rb");
     if (fp == NULL) {

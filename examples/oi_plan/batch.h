@@ -6,6 +6,7 @@
 
 #include <stdio.h>
 
+#include "albedo_map.h"
 #include "orbillum.h"
 #include "shapes.h"
 
@@ -28,5 +29,10 @@
  * Returns a PLAN_EXIT_* code. */
 int batch_run(const char *path, const oi_camera *default_camera, const plan_shapes *shapes,
               FILE *out, FILE *summary);
+
+/* batch_run with the albedo map of --albedo-map (NULL: none given; rows with
+ * albedo_model map are then errors). */
+int batch_run_map(const char *path, const oi_camera *default_camera, const plan_shapes *shapes,
+                  const plan_albedo_map *albedo_map, FILE *out, FILE *summary);
 
 #endif

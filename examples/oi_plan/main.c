@@ -13,7 +13,7 @@ static void usage(FILE *fp)
 {
     fputs(
         "usage: oi-plan [--camera NAME] [--step SECONDS]\n"
-        "       oi-plan --csv FILE|- [--camera NAME] [--shapes FILE] [--summary]\n"
+        "       oi-plan --csv FILE|- [--camera NAME] [--shapes FILE] [--albedo-map FILE] [--summary]\n"
         "       oi-plan --list-cameras | --help\n"
         "\n"
         "How an object in orbit is lit by the Sun, the Earth and the Moon, and how a\n"
@@ -32,6 +32,10 @@ static void usage(FILE *fp)
         "                  (lines 'shape NAME', then one facet a line: nx ny nz area_m2\n"
         "                  sided(1|2) albedo_diffuse albedo_specular shininess; '#'\n"
         "                  comments; docs/planner.md)\n"
+        "  --albedo-map FILE  with --csv: the latitude-longitude albedo grid of the rows\n"
+        "                  with albedo_model map (text: \"n_lat n_lon\", then n_lat rows\n"
+        "                  north to south of n_lon values in [0, 1] east from Greenwich;\n"
+        "                  '#' comments; docs/planner.md)\n"
         "  --camera NAME   default camera (built-in name; default: the first one)\n"
         "  --step SECONDS  table step of the built-in scenario (default 120)\n"
         "  --list-cameras  list the built-in cameras and their parameters\n"
@@ -50,6 +54,11 @@ static void usage(FILE *fp)
         "            target_shape (sphere, plate, box-wing, cylinder or a --shapes name;\n"
         "            default sphere), q_w,q_x,q_y,q_z (attitude, body to input frame;\n"
         "            default identity; |norm - 1| > 1e-6 is ERR_SHAPE)\n"
+        "            albedo_model (uniform: earth_albedo everywhere, the default; knocke;\n"
+        "            map: --albedo-map), epoch_jd (Julian date, UTC, 1900 to 2100; needed\n"
+        "            by knocke and map), earth_rotation_deg (Greenwich meridian from the\n"
+        "            frame's x axis; needed by map); the frame's z axis is the Earth's\n"
+        "            rotation axis (GCRS, J2000, TEME)\n"
         "Batch output (numbers with %.17g; empty when not computed):\n"
         "  id,status,sun_fraction,sun_fraction_atm,e_sun,e_earth,e_moon,earth_theta_deg,\n"
         "  earth_h_km,flux_obs,mag_v,exposure_s,gain,snr,flags\n"
@@ -125,6 +134,7 @@ int main(int argc, char **argv)
 {
     static plan_shapes shapes; /* fixed storage: the planner allocates no facets */
     const char *csv = NULL, *camera_name = NULL, *step_text = NULL, *shapes_path = NULL;
+    const char *map_path = NULL;
     const oi_camera *camera;
     double step = 120.0;
     int i, summary = 0;
@@ -146,6 +156,8 @@ int main(int argc, char **argv)
         }
         if ((v = option_value(argc, argv, &i, "--csv", &missing)) != NULL) {
             csv = v;
+        } else if ((v = option_value(argc, argv, &i, "--albedo-map", &missing)) != NULL) {
+            map_path = v;
         } else if ((v = option_value(argc, argv, &i, "--camera", &missing)) != NULL) {
             camera_name = v;
         } else if ((v = option_value(argc, argv, &i, "--shapes", &missing)) != NULL) {
@@ -190,9 +202,21 @@ int main(int argc, char **argv)
         }
         if (shapes_load(&shapes, shapes_path, stderr) != 0) return PLAN_EXIT_INPUT;
     }
+    if (map_path != NULL && csv == NULL) {
+        fprintf(stderr, "oi-plan: --albedo-map needs --csv (see oi-plan --help)\n");
+        return PLAN_EXIT_INPUT;
+    }
     if (csv != NULL) {
-        return batch_run(csv, camera, shapes_path != NULL ? &shapes : NULL, stdout,
-                         summary ? stderr : NULL);
+        const plan_shapes *sh = shapes_path != NULL ? &shapes : NULL;
+        plan_albedo_map map;
+        int st;
+        if (map_path == NULL)
+            return batch_run_map(csv, camera, sh, NULL, stdout, summary ? stderr : NULL);
+        st = albedo_map_load(map_path, &map);
+        if (st != 0) return st;
+        st = batch_run_map(csv, camera, sh, &map, stdout, summary ? stderr : NULL);
+        albedo_map_free(&map);
+        return st;
     }
     return scenario_run(stdout, camera, step);
 }

@@ -142,6 +142,7 @@ _MODEL_WORDS = {
     "moon_model": {"phase_law": 0, "lambert": 1},
     "limb_darkening": {"uniform": 0, "darkened": 1},
     "earth_shape": {"sphere": 0, "wgs84": 1},
+    "albedo_model": {"uniform": 0, "knocke": 1, "map": 2},
 }
 
 
@@ -158,6 +159,19 @@ def _model(model):
     for k, v in model.items():
         if k in ("earth_table", "atm_table"):
             raise ValueError(f"model: {k} cannot be set from Python")
+        if k in ("albedo_map_n_lat", "albedo_map_n_lon"):
+            raise ValueError(f"model: {k} is the shape of albedo_map")
+        if k == "albedo_map":
+            # the caller's grid (rows north to south, cells east from Greenwich),
+            # kept alive by the structure for as long as it is used
+            grid = np.ascontiguousarray(_floats(v, "model['albedo_map']"), dtype=np.float32)
+            if grid.ndim != 2 or grid.size == 0:
+                raise ValueError(f"model['albedo_map']: a 2-D (n_lat, n_lon) array, got "
+                                 f"shape {grid.shape}")
+            m._albedo_map = grid
+            m.albedo_map = grid.ctypes.data_as(ctypes.POINTER(ctypes.c_float))
+            m.albedo_map_n_lat, m.albedo_map_n_lon = grid.shape
+            continue
         if k not in types:
             raise ValueError(f"model: unknown model field {k!r}")
         if isinstance(v, str):
@@ -460,7 +474,8 @@ def _attitudes(q):
 
 def _scenes(sun, moon, target, observer, terms, earth_albedo, target_albedo,
             target_radius_m, target_velocity=None, observer_velocity=None,
-            target_shape=None, attitude_q=None, keep=None):
+            target_shape=None, attitude_q=None, keep=None, epoch_jd=None,
+            earth_rotation_rad=None):
     """The scenes' structured array. keep: a list that receives the Shape
     objects the rows point to (the caller holds it while the C calls run)."""
     sun = _vec(sun, "sun")
@@ -517,6 +532,10 @@ def _scenes(sun, moon, target, observer, terms, earth_albedo, target_albedo,
     elif any(k is not None for k in held):
         raise ValueError("target_shape: internal: a shape without a keep list")
     sc["attitude_q"] = 0.0 if q is None else q  # all zero: the identity
+    if epoch_jd is not None:
+        sc["epoch_jd"] = _scalar_rows(epoch_jd, n, "epoch_jd")
+    if earth_rotation_rad is not None:
+        sc["earth_rotation_rad"] = _scalar_rows(earth_rotation_rad, n, "earth_rotation_rad")
     return sc
 
 
@@ -561,7 +580,7 @@ def _illuminate_raw(sc, m):
 
 def illuminate(sun, moon, target, observer=None, *, terms=None, earth_albedo=None,
                target_albedo=None, target_radius_m=None, target_shape=None, attitude_q=None,
-               model=None):
+               model=None, epoch_jd=None, earth_rotation_rad=None):
     """Light on the target from Sun, Earth and Moon, and what the observer sees.
 
     Given:
@@ -582,7 +601,15 @@ def illuminate(sun, moon, target, observer=None, *, terms=None, earth_albedo=Non
                        frame, (4,) or (N, 4); a norm off 1 by more than 1e-6 (NaN
                        too) is the row's status ERR_SHAPE, else it is normalised
       model            None (defaults) or dict of oi_model fields, e.g.
-                       {"earth_model": "lambert", "limb_darkening": "darkened"}
+                       {"earth_model": "lambert", "limb_darkening": "darkened"};
+                       albedo models: {"albedo_model": "knocke"}, or {"albedo_model":
+                       "map", "albedo_map": grid}, grid (n_lat, n_lon) values in [0, 1],
+                       rows north to south, cells east from Greenwich
+                       (docs/earthshine-albedo.md; the frame's z axis the Earth's
+                       rotation axis)
+      epoch_jd         scalar or (N,): Julian date (UTC), read by "knocke"
+      earth_rotation_rad  scalar or (N,): the Greenwich meridian from the frame's
+                       x axis, read by "map"
     Returns: dict of arrays, one entry per oi_illum field (nested shadow fields as
       shadow_*; aliases sun_fraction, sun_fraction_ld, sun_fraction_atm;
       dir_* of shape (N, 3); flux_specular, the facets' specular part of
@@ -591,7 +618,8 @@ def illuminate(sun, moon, target, observer=None, *, terms=None, earth_albedo=Non
     m = _model(model)
     keep = []
     sc = _scenes(sun, moon, target, observer, terms, earth_albedo, target_albedo,
-                 target_radius_m, target_shape=target_shape, attitude_q=attitude_q, keep=keep)
+                 target_radius_m, target_shape=target_shape, attitude_q=attitude_q, keep=keep,
+                 epoch_jd=epoch_jd, earth_rotation_rad=earth_rotation_rad)
     res, status = _illuminate_raw(sc, m)
     return _flatten(res, status)
 
@@ -678,7 +706,7 @@ def _exposure_dict(ex, st):
 def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None,
            target_albedo=None, target_radius_m=None, target_shape=None, attitude_q=None,
            model=None, fill=None, snr_min=None, sky=None, target_velocity=None,
-           observer_velocity=None):
+           observer_velocity=None, epoch_jd=None, earth_rotation_rad=None):
     """oi_illuminate then oi_expose_scene for each row: the suggested exposure.
 
     camera: a built-in camera name (see cameras()), a dict as camera() returns
@@ -693,6 +721,7 @@ def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None
     target_v*, observer_v* columns; docs/camera.md, "Motion").
     target_shape, attitude_q: as illuminate(); a shape whose specular part is
     more than half of flux_obs sets OI_FLAG_GLINT ('glint').
+    epoch_jd, earth_rotation_rad: as illuminate() (the albedo models).
     Returns the dict of illuminate() plus the oi_exposure fields (exposure_s,
     gain, time_index, gain_index, signal_e, background_e, peak_e, saturation_e,
     fill, snr, sun_angle_rad, flags, background_w_m2_sr), flag_names, expose_status and
@@ -710,7 +739,8 @@ def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None
     keep = []
     sc = _scenes(sun, moon, target, observer, terms, earth_albedo, target_albedo,
                  target_radius_m, target_velocity, observer_velocity, target_shape=target_shape,
-                 attitude_q=attitude_q, keep=keep)
+                 attitude_q=attitude_q, keep=keep, epoch_jd=epoch_jd,
+                 earth_rotation_rad=earth_rotation_rad)
     res, status = _illuminate_raw(sc, m)
     n = sc.shape[0]
     ex = np.empty(n, dtype=EXPOSURE_DTYPE)  # the batch writes every row

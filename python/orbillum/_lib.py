@@ -69,6 +69,13 @@ OI_EARTH_REFLECT_MOMENTS = 0  # oi_model.earth_reflection
 OI_EARTH_REFLECT_MEAN = 1
 OI_EARTH_SPHERE = 0   # oi_model.earth_shape
 OI_EARTH_WGS84 = 1
+OI_ALBEDO_UNIFORM = 0  # oi_model.albedo_model
+OI_ALBEDO_KNOCKE = 1
+OI_ALBEDO_MAP = 2
+OI_ALBEDO_MAP_MAX_DIM = 32768
+OI_EPOCH_JD_MIN = 2415020.5
+OI_EPOCH_JD_MAX = 2488069.5
+OI_EARTH_ROTATION_MAX_RAD = 1.0e3
 
 OI_SHADOW_LIT = 0     # oi_shadow.region
 OI_SHADOW_PENUMBRA = 1
@@ -180,6 +187,8 @@ class oi_model(ctypes.Structure):
         ("no_atmosphere", c_int), ("earth_table", POINTER(oi_earth_table)),
         ("atm_table", POINTER(oi_atm_table)), ("earth_reflection", c_int),
         ("earth_shape", c_int),
+        ("albedo_model", c_int), ("albedo_map", POINTER(ctypes.c_float)),
+        ("albedo_map_n_lat", c_int), ("albedo_map_n_lon", c_int),
     ]
 
 
@@ -213,6 +222,7 @@ class oi_scene(ctypes.Structure):
         ("has_moon", c_int),
         ("target_vel_km_s", real * 3), ("observer_vel_km_s", real * 3),
         ("shape", c_void_p), ("attitude_q", real * 4),
+        ("epoch_jd", real), ("earth_rotation_rad", real),
     ]
 
 
@@ -228,6 +238,7 @@ class oi_illum(ctypes.Structure):
         ("flux_obs", real), ("mag_v", real), ("range_km", real),
         ("sun_moon_hidden", real), ("moon_disc_visible", real),
         ("flux_specular", real),
+        ("earth_albedo_eff", real),
     ]
 
 

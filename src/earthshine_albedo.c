@@ -1,0 +1,285 @@
+/* SPDX-License-Identifier: MIT */
+/* earthshine_albedo.c: earthshine under a non-uniform albedo field, the
+ * weighted mean albedo of the lit visible cap and the field's change of the
+ * mean direction and of a sphere's reflection, from a fixed cubature used
+ * as a control variate on the uniform tables (docs/earthshine-albedo.md). */
+#include "oi_internal.h"
+
+#ifndef OI_NO_ALBEDO_MODELS
+
+#define HALF_PI_R ((oi_real)(0.5 * OI_PI))
+
+/* Gauss-Legendre nodes (positive half) and weights on [-1, 1] of 8, 16 and
+ * 32 points (Abramowitz & Stegun 1964, table 25.4; the digits of numpy's
+ * polynomial.legendre.leggauss; the rules' exactness on polynomials is
+ * tested through the uniform sphere, tests/python/test_albedo_models.py). */
+#define N_E 8
+static const oi_real gl8_x[N_E / 2] = {OI_R(0.18343464249564978), OI_R(0.52553240991632899),
+                                       OI_R(0.79666647741362673), OI_R(0.96028985649753618)};
+static const oi_real gl8_w[N_E / 2] = {OI_R(0.36268378337836166), OI_R(0.31370664587788688),
+                                       OI_R(0.22238103445337443), OI_R(0.10122853629037706)};
+#define N_B 16
+static const oi_real gl16_x[N_B / 2] = {
+    OI_R(0.095012509837637441), OI_R(0.28160355077925892), OI_R(0.45801677765722737),
+    OI_R(0.61787624440264377), OI_R(0.755404408355003), OI_R(0.86563120238783176),
+    OI_R(0.9445750230732326), OI_R(0.98940093499164994)};
+static const oi_real gl16_w[N_B / 2] = {
+    OI_R(0.18945061045506864), OI_R(0.18260341504492364), OI_R(0.16915651939500265),
+    OI_R(0.14959598881657671), OI_R(0.12462897125553407), OI_R(0.095158511682492605),
+    OI_R(0.062253523938647456), OI_R(0.027152459411754176)};
+static const oi_real gl32_x[16] = {
+    OI_R(0.048307665687738324), OI_R(0.14447196158279649), OI_R(0.23928736225213706),
+    OI_R(0.33186860228212767), OI_R(0.42135127613063533), OI_R(0.50689990893222936),
+    OI_R(0.5877157572407623), OI_R(0.66304426693021523), OI_R(0.73218211874028971),
+    OI_R(0.79448379596794239), OI_R(0.84936761373256997), OI_R(0.89632115576605209),
+    OI_R(0.93490607593773967), OI_R(0.96476225558750639), OI_R(0.98561151154526838),
+    OI_R(0.99726386184948157)};
+static const oi_real gl32_w[16] = {
+    OI_R(0.096540088514727659), OI_R(0.095638720079274708), OI_R(0.093844399080804511),
+    OI_R(0.09117387869576378), OI_R(0.087652093004403783), OI_R(0.083311924226946707),
+    OI_R(0.078193895787070228), OI_R(0.072345794108848338), OI_R(0.065822222776361683),
+    OI_R(0.058684093478535565), OI_R(0.050998059262376091), OI_R(0.042835898022226836),
+    OI_R(0.034273862913021765), OI_R(0.025392065309262024), OI_R(0.016274394730905743),
+    OI_R(0.0070186100094705058)};
+
+/* A rule: Gauss-Legendre of n nodes (the positive half x, w) in the
+ * emission angle and in each azimuth segment, and ring azimuths of the
+ * periodic trapezoid rule over a fully lit cap. The Knocke field is a
+ * quadratic in the height above the equator and needs few; a map's
+ * bilinear cells have kinks along every row and column of centres. */
+typedef struct rule {
+    const oi_real *ex, *ew, *bx, *bw;
+    int ne, nb, ring;
+} rule;
+static const rule rule_smooth = {gl8_x, gl8_w, gl16_x, gl16_w, N_E, N_B, 32};
+static const rule rule_map = {gl16_x, gl16_w, gl32_x, gl32_w, 16, 32, 64};
+
+/* node k of an n-point rule from its positive half */
+static oi_real node_x(const oi_real *x, int n, int k)
+{
+    return k < n / 2 ? -x[n / 2 - 1 - k] : x[k - n / 2];
+}
+static oi_real node_w(const oi_real *w, int n, int k)
+{
+    return k < n / 2 ? w[n / 2 - 1 - k] : w[k - n / 2];
+}
+
+/* Sums of the cubature: weights K (the uniform sphere's earthshine), K da
+ * (da the albedo less the reference), the same times the direction omega
+ * and times the sphere's phase towards the observer. */
+typedef struct sums {
+    oi_real s0, s1, q, p;
+    oi_real w[3], v[3];
+    int varies;
+} sums;
+
+/* The geometry fixed for one call: the local frame (r the zenith, ex
+ * towards the Sun's side, ey normal), theta's cosine and sine, x = R / r
+ * and the cap's half-angle w. */
+typedef struct frame {
+    oi_real r[3], ex[3], ey[3];
+    oi_real cos_t, sin_t, x, w;
+    const oi_real *obs;
+    oi_real a_ref;
+    const rule *q;
+} frame;
+
+/* emission angle (from the surface normal towards the target) of the cap
+ * point at central angle alpha from the sub-target point, given its cosine
+ * and sine */
+static oi_real emission(const frame *g, oi_real alpha, oi_real ca, oi_real sa)
+{
+    return alpha + OI_ATAN2(g->x * sa, (oi_real)1 - g->x * ca);
+}
+
+/* One azimuth beta (cosine cb, sine sb) of weight wb: the lit part of its
+ * great circle through the cap, in emission angle, by Gauss-Legendre. */
+static int ray_fan(const oi__albedo_field *f, const frame *g, oi_real cb, oi_real sb, oi_real wb,
+                   sums *acc)
+{
+    const oi_real b = g->sin_t * cb;
+    const oi_real c = OI_SQRT(g->cos_t * g->cos_t + b * b);
+    oi_real delta, lo, hi, e_lo, e_hi, mid, half, u[3];
+    int k, i;
+    if (!(c > (oi_real)0)) return OI_OK;
+    /* lit where cos(alpha) cos(theta) + sin(alpha) cos(beta) sin(theta) >= 0,
+     * i.e. |alpha - delta| <= pi/2, alpha in [0, w] */
+    delta = OI_ATAN2(b, g->cos_t);
+    lo = delta - HALF_PI_R;
+    hi = delta + HALF_PI_R;
+    if (lo <= (oi_real)0) {
+        lo = (oi_real)0;
+        e_lo = (oi_real)0;
+    } else {
+        /* cos(lo) = sin(delta), sin(lo) = -cos(delta) */
+        e_lo = emission(g, lo, b / c, -g->cos_t / c);
+    }
+    if (hi >= g->w) {
+        hi = g->w;
+        e_hi = HALF_PI_R; /* the horizon */
+    } else {
+        e_hi = emission(g, hi, -b / c, g->cos_t / c);
+    }
+    if (!(hi > lo) || !(e_hi > e_lo)) return OI_OK;
+    mid = OI_R(0.5) * (e_lo + e_hi);
+    half = OI_R(0.5) * (e_hi - e_lo);
+    for (i = 0; i < 3; i++) u[i] = cb * g->ex[i] + sb * g->ey[i];
+    for (k = 0; k < g->q->ne; k++) {
+        const oi_real t = node_x(g->q->ex, g->q->ne, k);
+        const oi_real wt = node_w(g->q->ew, g->q->ne, k);
+        oi_real se, ce, sh, ch, ca, sa, ci, kw, a, da, p[3], om[3];
+        int st;
+        OI_SINCOS(mid + half * t, &se, &ce);
+        sh = g->x * se; /* sin(eta), eta the nadir angle of the ray */
+        ch = OI_SQRT(((oi_real)1 - sh) * ((oi_real)1 + sh));
+        ca = ce * ch + se * sh; /* alpha = e - eta */
+        sa = se * ch - ce * sh;
+        ci = ca * g->cos_t + sa * cb * g->sin_t; /* cosine of the Sun's incidence */
+        if (!(ci > (oi_real)0)) continue;
+        /* scalar irradiance: radiance cos(i) over the solid angle
+         * sin(eta) d eta d beta, d eta = x cos(e) / cos(eta) de */
+        kw = wb * half * wt * ci * sh * g->x * ce / ch;
+        for (i = 0; i < 3; i++) {
+            p[i] = ca * g->r[i] + sa * u[i];
+            om[i] = sh * u[i] - ch * g->r[i];
+        }
+        st = oi__albedo_at(f, p, &a);
+        if (st < 0) return st;
+        da = a - g->a_ref;
+        acc->s0 += kw;
+        acc->s1 += kw * da;
+        for (i = 0; i < 3; i++) {
+            acc->w[i] += kw * om[i];
+            acc->v[i] += kw * da * om[i];
+        }
+        if (da != (oi_real)0) acc->varies = 1;
+        if (g->obs != NULL) {
+            oi_real cr[3], sx, cx, ph;
+            oi__cross(om, g->obs, cr);
+            sx = oi__norm_bounded(cr);
+            cx = oi__dot(om, g->obs);
+            ph = oi__lambert_phase_cs(OI_ATAN2(sx, cx), cx, sx);
+            acc->q += kw * ph;
+            acc->p += kw * da * ph;
+        }
+    }
+    return OI_OK;
+}
+
+/* Gauss-Legendre over the azimuths [b0, b1]. */
+static int azimuth_segment(const oi__albedo_field *f, const frame *g, oi_real b0, oi_real b1,
+                           sums *acc)
+{
+    const oi_real mid = OI_R(0.5) * (b0 + b1), half = OI_R(0.5) * (b1 - b0);
+    int k;
+    for (k = 0; k < g->q->nb; k++) {
+        const oi_real t = node_x(g->q->bx, g->q->nb, k);
+        const oi_real wt = node_w(g->q->bw, g->q->nb, k);
+        oi_real sb, cb;
+        int st;
+        OI_SINCOS(mid + half * t, &sb, &cb);
+        st = ray_fan(f, g, cb, sb, half * wt, acc);
+        if (st < 0) return st;
+    }
+    return OI_OK;
+}
+
+/* The local frame; ex along the Sun's side (any normal on the Sun-Earth axis). */
+static void local_frame(const oi_real r_hat[3], const oi_real s_hat[3], frame *g)
+{
+    oi_real t[3];
+    int i;
+    g->cos_t = oi__dot(s_hat, r_hat);
+    for (i = 0; i < 3; i++) {
+        g->r[i] = r_hat[i];
+        t[i] = s_hat[i] - g->cos_t * r_hat[i];
+    }
+    /* near the Sun-Earth axis t is rounding noise that need not be normal to
+     * r: orthogonalised once more after scaling (the cap is then lit all
+     * round, so any normal does) */
+    if (oi__unit_bounded(t, t) > (oi_real)0) {
+        const oi_real dr = oi__dot(t, r_hat);
+        for (i = 0; i < 3; i++) t[i] -= dr * r_hat[i];
+    }
+    if (oi__unit_bounded(t, t) == (oi_real)0) {
+        const oi_real e[3] = {(oi_real)1, (oi_real)0, (oi_real)0};
+        const oi_real n[3] = {(oi_real)0, (oi_real)1, (oi_real)0};
+        oi__cross(r_hat, (r_hat[0] * r_hat[0] < OI_R(0.5)) ? e : n, t);
+        (void)oi__unit_bounded(t, t);
+    }
+    for (i = 0; i < 3; i++) g->ex[i] = t[i];
+    oi__cross(r_hat, t, g->ey);
+    g->sin_t = oi__dot(s_hat, t);
+    if (g->sin_t < (oi_real)0) g->sin_t = (oi_real)0;
+}
+
+int oi__earthshine_albedo(const oi__albedo_field *f, const oi_real r_hat[3],
+                          const oi_real s_hat[3], oi_real x, const oi_real *obs_hat,
+                          oi_real *albedo, oi_real dir[3], oi_real *shape_add)
+{
+    frame g;
+    sums acc;
+    oi_real sin_w, d, m[3], len;
+    int st, i;
+
+    *albedo = (oi_real)0;
+    *shape_add = (oi_real)0;
+    local_frame(r_hat, s_hat, &g);
+    g.x = x;
+    sin_w = OI_SQRT(((oi_real)1 - x) * ((oi_real)1 + x));
+    g.w = OI_ATAN2(sin_w, x);
+    g.obs = obs_hat;
+    g.q = f->model == OI_ALBEDO_MAP ? &rule_map : &rule_smooth;
+    st = oi__albedo_at(f, r_hat, &g.a_ref);
+    if (st < 0) return st;
+    memset(&acc, 0, sizeof acc);
+
+    if (g.cos_t >= sin_w) {
+        /* the whole cap is lit: a smooth periodic integrand in beta */
+        const oi_real step = OI_R(2.0) * OI_PI_R / (oi_real)g.q->ring;
+        int k;
+        for (k = 0; k < g.q->ring; k++) {
+            oi_real sb, cb;
+            OI_SINCOS(step * (oi_real)k, &sb, &cb);
+            st = ray_fan(f, &g, cb, sb, step, &acc);
+            if (st < 0) return st;
+        }
+    } else if (g.cos_t > -sin_w) {
+        /* the terminator crosses the cap: it meets the horizon at the
+         * azimuths +-beta_k, cos(beta_k) = -x cos(theta) / (sin(w) sin(theta));
+         * the lit length changes its law there, so each side is a segment */
+        oi_real ck = g.sin_t > (oi_real)0 ? -x * g.cos_t / (sin_w * g.sin_t) : (oi_real)0;
+        oi_real bk;
+        if (ck > (oi_real)1) ck = (oi_real)1;
+        if (ck < (oi_real)-1) ck = (oi_real)-1;
+        bk = OI_ATAN2(OI_SQRT(((oi_real)1 - ck) * ((oi_real)1 + ck)), ck);
+        st = azimuth_segment(f, &g, -bk, bk, &acc);
+        if (st == OI_OK && g.cos_t > (oi_real)0)
+            st = azimuth_segment(f, &g, bk, OI_R(2.0) * OI_PI_R - bk, &acc);
+        if (st < 0) return st;
+    }
+    /* nothing lit, or a uniform field where the cubature looked: the uniform
+     * sphere's answer with the reference albedo, bit for bit */
+    if (!(acc.s0 > (oi_real)0) || !acc.varies) {
+        *albedo = g.a_ref;
+        return OI_OK;
+    }
+    d = acc.s1 / acc.s0; /* mean albedo less the reference */
+    *albedo = g.a_ref + d;
+    if (*albedo < (oi_real)0) *albedo = (oi_real)0;
+    if (*albedo > (oi_real)1) *albedo = (oi_real)1;
+    if (!(*albedo > (oi_real)0)) return OI_OK;
+    /* mean direction: the uniform one at the cubature's length, plus the
+     * field's first moment sum((a - mean) K omega) / (mean sum K) */
+    len = oi__norm_bounded(acc.w) / acc.s0;
+    for (i = 0; i < 3; i++)
+        m[i] = len * dir[i] + (acc.v[i] - d * acc.w[i]) / (*albedo * acc.s0);
+    if (oi__unit_bounded(m, m) > (oi_real)0)
+        for (i = 0; i < 3; i++) dir[i] = m[i];
+    if (obs_hat != NULL) *shape_add = (acc.p - d * acc.q) / (*albedo * acc.s0);
+    return OI_OK;
+}
+
+#else
+typedef int oi__earthshine_albedo_compiled_out; /* ISO C: no empty translation unit */
+#endif /* OI_NO_ALBEDO_MODELS */
