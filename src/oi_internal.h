@@ -433,6 +433,8 @@ int oi__shape_scene_check(const oi_scene *s);
 void oi__shape_flux(const oi_scene *s, const oi_model *m, const oi_real obs_hat[3],
                     oi_illum *out);
 oi_real oi__shape_peak(const oi_scene *s);
+#endif
+
 #ifndef OI_NO_ALBEDO_MODELS
 /* The Earth's albedo field of a resolved model and a scene, ready to be
  * sampled (src/albedo_field.c): the Knocke model's degree-1 coefficient at
