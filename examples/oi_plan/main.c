@@ -44,7 +44,7 @@ static void usage(FILE *fp)
         "            (km/s; default at rest)\n"
         "Batch output (numbers with %.17g; empty when not computed):\n"
         "  id,status,sun_fraction,sun_fraction_atm,e_sun,e_earth,e_moon,earth_theta_deg,\n"
-        "  earth_h_km,flux_obs,mag_v,exposure_s,gain,snr,flags\n"
+        "  earth_h_km,flux_obs,mag_v,exposure_s,gain,snr,flags,detect_margin_mag\n"
         "  status: OK, WARN_* (computed), ERR_* (row failed; ERR_PARSE: bad text).\n"
         "  flags: sun_exclusion, earth_in_fov, eclipsed, penumbra, occulted, resolved,\n"
         "         too_faint, saturated, moon_shadow, moon_in_fov, trailed, joined by '+'.\n"
