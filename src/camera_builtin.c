@@ -53,7 +53,12 @@ static const oi_camera builtin[] = {
         { OI_R(13.0), OI_R(13.0), OI_R(13.0), OI_R(13.0) },
         OI_R(3.0),          /* longest acceptable trail: about twice the PSF's FWHM (1.6 px
                                for its peak fraction 0.30) (assumption) */
-        0, 0                /* detection: the SNR rule of the goal (docs/camera.md) */
+        0, 0,               /* detection: the SNR rule of the goal (docs/camera.md) */
+        /* sensor temperature: dark current 125 e-/s at 25 C (datasheet); it doubles
+           every 6.5 C (assumption: silicon sensors near room temperature double every
+           5-9 C, Janesick 2001, Scientific Charge-Coupled Devices, ch. 7); rated
+           -30 .. +70 C (assumption, an industrial range) */
+        OI_R(25.0), OI_R(6.5), OI_R(-30.0), OI_R(70.0)
     },
     /*
      * 1: "telescope-15cm": a 15 cm space telescope of the NEOSSat / MOST
@@ -85,7 +90,12 @@ static const oi_camera builtin[] = {
         { OI_R(6.0) },
         OI_R(3.0),          /* longest acceptable trail: about twice the PSF's FWHM (1.7 px
                                for its peak fraction 0.25) (assumption) */
-        0, 0                /* detection: the SNR rule of the goal (docs/camera.md) */
+        0, 0,               /* detection: the SNR rule of the goal (docs/camera.md) */
+        /* sensor temperature: the 1 e-/s above taken at -20 C (assumption); doubling
+           6.35 C, e2v's dark-current law for its CCDs, Q/Q(293 K) = 122 T^3
+           exp(-6400 / T) (CCD47-20 datasheet), at 253 K; rated -40 .. +20 C
+           (assumption) */
+        OI_R(-20.0), OI_R(6.35), OI_R(-40.0), OI_R(20.0)
     }
 };
 

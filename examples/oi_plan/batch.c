@@ -28,6 +28,7 @@ enum column {
     C_SKY,
     C_TARGET_VX, C_TARGET_VY, C_TARGET_VZ,
     C_OBSERVER_VX, C_OBSERVER_VY, C_OBSERVER_VZ,
+    C_SENSOR_TEMP,
     C_COUNT
 };
 
@@ -40,7 +41,8 @@ static const char *const column_name[C_COUNT] = {
     "terms", "earth_albedo", "target_albedo", "target_radius_m", "camera", "atmosphere",
     "sky",
     "target_vx", "target_vy", "target_vz",
-    "observer_vx", "observer_vy", "observer_vz"
+    "observer_vx", "observer_vy", "observer_vz",
+    "sensor_temp_c"
 };
 
 typedef struct batch {
@@ -389,6 +391,12 @@ static int run_row(batch *b, const csv_reader *r, plan_row *row)
         row_error(b, r->rec_line, b->col[C_SKY],
                   "sky must be none, zodiacal, moon or all, joined by +; got", s);
         return 0;
+    }
+    /* sensor temperature (deg C): absent or empty, the camera's dark current as it stands */
+    if ((st = parse_opt(b, r, C_SENSOR_TEMP, &x)) < 0) return 0;
+    if (st == 1) {
+        goal.has_sensor_temp = 1u;
+        goal.sensor_temp_c = (oi_real)x;
     }
 
     s = field_of(b, r, C_CAMERA, &short_row);

@@ -41,7 +41,8 @@ static void usage(FILE *fp)
         "            atmosphere (1, or 0 = as if the Earth had none),\n"
         "            sky (none, zodiacal, moon, all; default none),\n"
         "            target_vx,target_vy,target_vz, observer_vx,observer_vy,observer_vz\n"
-        "            (km/s; default at rest)\n"
+        "            (km/s; default at rest), sensor_temp_c (deg C; default: the\n"
+        "            camera's dark current as listed)\n"
         "Batch output (numbers with %.17g; empty when not computed):\n"
         "  id,status,sun_fraction,sun_fraction_atm,e_sun,e_earth,e_moon,earth_theta_deg,\n"
         "  earth_h_km,flux_obs,mag_v,exposure_s,gain,snr,flags,detect_margin_mag\n"
@@ -82,8 +83,14 @@ static void list_cameras(FILE *fp)
                 (double)c->transmission, (double)c->quantum_efficiency,
                 (double)c->band_fraction, (double)c->photon_energy_j,
                 (double)c->psf_peak_fraction);
-        fprintf(fp, "  full well %.0f e-, dark %.3g e-/s\n", (double)c->full_well_e,
+        fprintf(fp, "  full well %.0f e-, dark %.3g e-/s", (double)c->full_well_e,
                 (double)c->dark_current_e_s);
+        if (c->dark_doubling_c != 0) {
+            fprintf(fp, " at %g C, doubling every %g C, rated %g .. %g C",
+                    (double)c->dark_ref_temp_c, (double)c->dark_doubling_c,
+                    (double)c->temp_min_c, (double)c->temp_max_c);
+        }
+        fprintf(fp, "\n");
         fprintf(fp, "  exposures [s]:");
         for (k = 0; k < c->n_times; k++) fprintf(fp, " %g", (double)c->times_s[k]);
         fprintf(fp, "\n  gains (read noise e-):");

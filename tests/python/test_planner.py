@@ -242,6 +242,28 @@ def test_detect_margin_column():
     assert "occulted" in got[-1]["flags"] and float(got[-1]["detect_margin_mag"]) == -100
 
 
+def test_sensor_temp_column():
+    """sensor_temp_c: absent, empty and the camera's reference temperature
+    (25 C for the star tracker) give the same row to the byte; 20 C warmer
+    the dark current is 2^(20/6.5) times larger and the SNR lower; outside
+    the rated range (-30 .. 70 C) or NaN the row fails with ERR_INPUT or
+    ERR_NONFINITE and empty numbers; text is ERR_PARSE."""
+    base = dict(LIT, observer_x=0, observer_y=7000 + 3e5, observer_z=0, camera="star-tracker")
+    rows = [dict(base), dict(base, sensor_temp_c=""), dict(base, sensor_temp_c="25"),
+            dict(base, sensor_temp_c="45"), dict(base, sensor_temp_c="-30"),
+            dict(base, sensor_temp_c="70.5"), dict(base, sensor_temp_c="nan"),
+            dict(base, sensor_temp_c="warm")]
+    code, out, err = run_csv(table(rows))
+    assert code == 1
+    absent, empty, ref, warm, cold, hot, nan, text = parse(out)
+    assert empty == dict(absent, id=empty["id"]) and ref == dict(absent, id=ref["id"])
+    assert float(warm["snr"]) < float(absent["snr"]) < float(cold["snr"])
+    assert hot["status"] == "ERR_INPUT" and nan["status"] == "ERR_NONFINITE"
+    assert text["status"] == "ERR_PARSE"
+    for r in (hot, nan, text):
+        assert all(r[c] == "" for c in NUMERIC) and r["flags"] == ""
+
+
 def test_velocity_columns():
     """Velocities: absent and zero are at rest, to the byte; a target
     crossing the telescope's field at 1 km/s, 1000 km away (1e-3 rad/s,
