@@ -419,14 +419,14 @@ static void test_builtin_cameras(void **state)
     assert_null(oi_camera_find("star-trackerx"));
 
     /* The 15 cm telescope on a V = 10 star: F = 1361 10^(-0.4 (10 + 26.74)),
-     * S = F pi 0.075^2 0.70 0.5356 0.75 / 3.1825e-19 0.25 (values written
+     * S = F pi 0.075^2 0.70 0.5356 0.75 / 3.1825e-19 0.1361 (values written
      * out from the camera's documented sources). */
     tel = oi_camera_find("telescope-15cm");
     assert_non_null(tel);
     in = input(TSI * pow(10.0, -0.4 * (10.0 + 26.74)), 0);
     check_int(OI_OK, oi_expose(tel, &in, NULL, &out), "telescope status");
     area = PI * 0.075 * 0.075;
-    s_rate = in.flux_w_m2 * area * 0.70 * 0.5356 * 0.75 / 3.1825e-19 * 0.25;
+    s_rate = in.flux_w_m2 * area * 0.70 * 0.5356 * 0.75 / 3.1825e-19 * 0.1361;
     check_rel(s_rate * out.exposure_s, out.signal_e, 1e-5, "telescope signal");
     check_rel(1.0 * out.exposure_s, out.background_e, 1e-5, "telescope dark");
 }
