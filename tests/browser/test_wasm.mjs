@@ -37,6 +37,13 @@ const RUNS = [
   { what: "glibc's default libm: within 1 ulp", env: process.env, maxUlp: 1n },
 ];
 
+// detect_margin_mag is 2.5 log10(signal / signal_min): where a libm result (exp, log) is 1 ulp
+// apart, the margin's magnitude (about 1 to 10) carries it times 2.5 plus the product's own
+// rounding, up to 3 ulp; bit for bit with the generic libm all the same.
+function maxUlpOf(column, run) {
+  return column === 'detect_margin_mag' && run.maxUlp > 0n ? 3n : run.maxUlp;
+}
+
 for (const name of CASES) for (const run of RUNS) {
   test(`${name}: wasm through the JavaScript module vs build/oi-plan --csv, ${run.what}`, () => {
     const input = path.join(ROOT, 'tests/golden', name);
@@ -64,7 +71,7 @@ for (const name of CASES) for (const run of RUNS) {
         numbers++;
         if (bits(g) === bits(Number(w))) return;
         const d = ulps(g, Number(w));
-        (d <= run.maxUlp ? near : differ).push(`row ${i + 1} ${c}: ${g} vs ${w} (${d} ulp)`);
+        (d <= maxUlpOf(c, run) ? near : differ).push(`row ${i + 1} ${c}: ${g} vs ${w} (${d} ulp)`);
       });
     });
     assert.deepEqual(differ, [], `${differ.length} of ${numbers} numbers differ by more than ${run.maxUlp} ulp`);
