@@ -754,7 +754,8 @@ int oi_expose(const oi_camera *camera, const oi_expose_in *in,
  *   then oi_expose's statuses for the goal and the derived flux
  *   (OI_ERR_INPUT for a goal out of range, OI_ERR_FLAGS for unknown
  *   goal->sky bits, OI_ERR_MAGNITUDE for a flux brighter than magnitude
- *   OI_MAG_MIN).
+ *   OI_MAG_MIN, OI_ERR_NONFINITE or OI_ERR_INPUT for the goal's sensor
+ *   temperature, oi_expose Note 9).
  * Notes:
  *   1. Boresight b = target - observer. sun_angle_rad = angle(sun - observer,
  *      b) (as oi_angle); OI_FLAG_SUN_EXCLUSION when it is below
