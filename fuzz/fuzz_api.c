@@ -336,6 +336,8 @@ static void fz_camera(fz_in *in, oi_camera *c)
         if (base & 0x10) c->full_well_e = fz_real(in);
         if (base & 0x20) c->times_s[fz_u8(in) % OI_CAMERA_MAX_TIMES] = fz_real(in);
         if (base & 0x40) c->n_times = (int)(int8_t)fz_u8(in);
+        if (base & 0x04) c->dark_doubling_c = fz_real(in); /* the temperature model */
+        if (base & 0x08) c->temp_max_c = fz_real(in);
         return;
     }
     memset(c, 0, sizeof *c);
@@ -402,6 +404,8 @@ static void do_expose(fz_in *in)
     g.fill = fz_real(in);
     g.snr_min = fz_real(in);
     g.sky = 0u;
+    g.has_sensor_temp = (which & 8) ? 1u : 0u;
+    g.sensor_temp_c = (which & 8) ? fz_real(in) : 0;
     NAN_FILL(e);
     st = oi_expose((which & 1) ? NULL : &cam, &x, (which & 2) ? NULL : &g, &e);
     check_exposure(st, &cam, &e);
@@ -419,6 +423,8 @@ static void do_expose_scene(fz_in *in, const oi_scene *s, oi_illum *il, const oi
     g.fill = fz_real(in);
     g.snr_min = fz_real(in);
     g.sky = 0u;
+    g.has_sensor_temp = (which & 8) ? 1u : 0u;
+    g.sensor_temp_c = (which & 8) ? fz_real(in) : 0;
     if (which & 4) {
         /* corrupted telemetry: an illumination record that oi_illuminate did
          * not produce */

@@ -741,6 +741,14 @@ typedef struct oi_camera {
     oi_real detect_false_alarm; /* detection rule: per-pixel false-alarm probability of its
                                    threshold, [1e-15, 0.5); 0: the SNR rule (goal.snr_min) */
     oi_real detect_probability; /* detection probability required, [0.5, 0.999999]; 0: 0.5 */
+    /* Sensor temperature (docs/camera.md, "Sensor temperature"): the dark current is
+     * dark_current_e_s * 2^((T - dark_ref_temp_c) / dark_doubling_c) at a sensor
+     * temperature T given in oi_expose_goal (has_sensor_temp); all four 0: no
+     * temperature model (dark_current_e_s at any temperature, none may be given). */
+    oi_real dark_ref_temp_c;    /* temperature of dark_current_e_s (deg C), [-150, 150] */
+    oi_real dark_doubling_c;    /* rise that doubles the dark current (deg C), [1, 100] */
+    oi_real temp_min_c;         /* rated sensor temperature range (deg C), [-150, 150], */
+    oi_real temp_max_c;         /* min <= max, within 30 doublings of dark_ref_temp_c */
 } oi_camera;
 
 /* oi_camera_builtin: built-in camera number index (0 is the default,
@@ -787,6 +795,10 @@ typedef struct oi_expose_goal {
     oi_real fill;            /* brightest-pixel fill as a fraction of saturation (0.5) */
     oi_real snr_min;         /* SNR below which TOO_FAINT is raised (5) */
     unsigned sky;            /* OI_SKY_* backgrounds oi_expose_scene adds (0: none) */
+    unsigned has_sensor_temp; /* nonzero: sensor_temp_c is given; 0: the camera's
+                                 dark_current_e_s as it stands */
+    oi_real sensor_temp_c;   /* sensor temperature (deg C), within the camera's rated
+                                range (camera temp_min_c .. temp_max_c) */
 } oi_expose_goal;
 
 /* Photometric input of the exposure choice. */
@@ -853,6 +865,11 @@ typedef struct oi_exposure {
  *   OI_ERR_FLAGS      in->flags has bits outside the OI_FLAG_* set
  *   OI_ERR_NONFINITE  in->rate_rad_s NaN or infinite
  *   OI_ERR_INPUT      in->rate_rad_s outside [0, 1e3] rad/s
+ *   OI_ERR_NONFINITE  goal->has_sensor_temp and goal->sensor_temp_c NaN or
+ *                     infinite
+ *   OI_ERR_INPUT      goal->has_sensor_temp and the camera has no temperature
+ *                     model (dark_doubling_c 0) or sensor_temp_c is outside
+ *                     its rated range [temp_min_c, temp_max_c]
  * Notes:
  *   1. Rates of photo-electrons (e-/s) in the brightest pixel, with
  *      A = pi (D/2)^2 and k = transmission * band_fraction * QE / photon_energy:
@@ -877,7 +894,11 @@ typedef struct oi_exposure {
  *      ascending, 1..OI_CAMERA_MAX_GAINS gains in (0, 1e3] strictly
  *      ascending, read noise [0, 1e6] e-, max_trail_px [0, 1e6],
  *      detect_false_alarm 0 or [1e-15, 0.5), detect_probability 0 or
- *      [0.5, 0.999999]. name is not used (may be NULL).
+ *      [0.5, 0.999999]; temperature model (Note 9): dark_doubling_c 0 with
+ *      dark_ref_temp_c, temp_min_c and temp_max_c 0, or dark_doubling_c
+ *      [1, 100], the three temperatures in [-150, 150] deg C, temp_min_c <=
+ *      temp_max_c, both within 30 doublings of dark_ref_temp_c.
+ *      name is not used (may be NULL).
  *      Every camera is checked, the built-in ones too.
  *   5. The target is treated as a point source: a resolved target puts less
  *      than psf_peak_fraction of its light in one pixel (oi_expose_scene
@@ -904,6 +925,10 @@ typedef struct oi_exposure {
  *      smallest such S at the chosen setting, detect_margin_mag =
  *      2.5 log10(signal_e / signal_min_e) (within +-100;
  *      OI_DETECT_MARGIN_NONE without signal).
+ *   9. Sensor temperature (docs/camera.md, "Sensor temperature"): with
+ *      goal->has_sensor_temp the dark current is dark_current_e_s *
+ *      2^((sensor_temp_c - dark_ref_temp_c) / dark_doubling_c); without it
+ *      (0, a NULL goal) dark_current_e_s, as in earlier versions, bit for bit.
  */
 int oi_expose(const oi_camera *camera, const oi_expose_in *in,
               const oi_expose_goal *goal, oi_exposure *out);
@@ -947,7 +972,8 @@ int oi_expose(const oi_camera *camera, const oi_expose_in *in,
  *   then oi_expose's statuses for the goal and the derived flux
  *   (OI_ERR_INPUT for a goal out of range, OI_ERR_FLAGS for unknown
  *   goal->sky bits, OI_ERR_MAGNITUDE for a flux brighter than magnitude
- *   OI_MAG_MIN).
+ *   OI_MAG_MIN, OI_ERR_NONFINITE or OI_ERR_INPUT for the goal's sensor
+ *   temperature, oi_expose Note 9).
  * Notes:
  *   1. Boresight b = target - observer. sun_angle_rad = angle(sun - observer,
  *      b) (as oi_angle); OI_FLAG_SUN_EXCLUSION when it is below

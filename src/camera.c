@@ -27,6 +27,31 @@
 #define CAM_TRAIL_MAX_PX     OI_R(1e6)
 #define CAM_FALSE_ALARM_MIN  OI_R(1e-15) /* a threshold of 7.9 sigma */
 #define CAM_DETECT_P_MAX     OI_R(0.999999)
+#define CAM_TEMP_ABS_MAX_C   OI_R(150.0)  /* sensor temperatures (deg C) */
+#define CAM_DOUBLING_MIN_C   OI_R(1.0)
+#define CAM_DOUBLING_MAX_C   OI_R(100.0)
+#define CAM_DOUBLINGS_MAX    OI_R(30.0)   /* dark factor within 2^+-30 over the rated range */
+
+/* The temperature model (include/orbillum.h, oi_expose Note 4): all four
+ * fields 0 (none), or a doubling in [1, 100] deg C, temperatures in
+ * [-150, 150] deg C, min <= max, the range within CAM_DOUBLINGS_MAX
+ * doublings of the reference (so the dark current stays within 2^30 of
+ * dark_current_e_s: no overflow in single precision). */
+static int temperature_valid(const oi_camera *c)
+{
+    const oi_real t = CAM_TEMP_ABS_MAX_C;
+    oi_real span;
+    if (c->dark_doubling_c == 0) {
+        return c->dark_ref_temp_c == 0 && c->temp_min_c == 0 && c->temp_max_c == 0;
+    }
+    if (!oi__in_closed(c->dark_doubling_c, CAM_DOUBLING_MIN_C, CAM_DOUBLING_MAX_C) ||
+        !oi__in_closed(c->dark_ref_temp_c, -t, t) || !oi__in_closed(c->temp_min_c, -t, t) ||
+        !oi__in_closed(c->temp_max_c, c->temp_min_c, t)) {
+        return 0;
+    }
+    span = CAM_DOUBLINGS_MAX * c->dark_doubling_c;
+    return c->temp_max_c - c->dark_ref_temp_c <= span && c->dark_ref_temp_c - c->temp_min_c <= span;
+}
 
 /*
  * oi__camera_valid: nonzero when every field of the camera is in range (the
@@ -59,6 +84,7 @@ int oi__camera_valid(const oi_camera *c)
           (c->detect_false_alarm >= CAM_FALSE_ALARM_MIN && c->detect_false_alarm < OI_R(0.5))) ||
         !(c->detect_probability == 0 ||
           oi__in_closed(c->detect_probability, OI_R(0.5), CAM_DETECT_P_MAX)) ||
+        !temperature_valid(c) ||
         c->n_times < 1 || c->n_times > OI_CAMERA_MAX_TIMES ||
         c->n_gains < 1 || c->n_gains > OI_CAMERA_MAX_GAINS) {
         return 0;

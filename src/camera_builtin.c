@@ -40,7 +40,11 @@ static const oi_camera builtin[] = {
         PHOTON_ENERGY_SI_400_900,
         OI_R(13500.0),      /* full well (datasheet: 13.5 ke-) */
         OI_R(125.0),        /* dark current at 25 C (datasheet: 125 e-/s) */
-        OI_R(0.30),         /* brightest-pixel fraction, defocused PSF (assumption, Liebe 2002) */
+        OI_R(0.1415),       /* brightest-pixel fraction, source centred: tools/psf_peak.py, the
+                               Airy pattern of this pupil over 400-900 nm, with a defocus
+                               Gaussian of sigma 1.0 px (assumption: a star spread over about
+                               3 x 3 pixels, Liebe 2002), over a 5.5 um pixel; 0.1129 at a
+                               pixel's corner */
         OI_R(0.44751311938737), /* diagonal FOV: 2 atan(15.93 mm / 2 / 35 mm) = 25.64 deg */
         OI_R(0.6108652381980153), /* Sun exclusion half-angle 35 deg (assumption, baffle) */
         11,
@@ -51,9 +55,14 @@ static const oi_camera builtin[] = {
         4,
         { OI_R(1.0), OI_R(1.2), OI_R(1.4), OI_R(1.6) },
         { OI_R(13.0), OI_R(13.0), OI_R(13.0), OI_R(13.0) },
-        OI_R(3.0),          /* longest acceptable trail: about twice the PSF's FWHM (1.6 px
-                               for its peak fraction 0.30) (assumption) */
-        0, 0                /* detection: the SNR rule of the goal (docs/camera.md) */
+        OI_R(3.0),          /* longest acceptable trail: about 1.2 times the PSF's FWHM (2.4 px
+                               for its peak fraction) (assumption) */
+        0, 0,               /* detection: the SNR rule of the goal (docs/camera.md) */
+        /* sensor temperature: dark current 125 e-/s at 25 C (datasheet); it doubles
+           every 6.5 C (assumption: silicon sensors near room temperature double every
+           5-9 C, Janesick 2001, Scientific Charge-Coupled Devices, ch. 7); rated
+           -30 .. +70 C (assumption, an industrial range) */
+        OI_R(25.0), OI_R(6.5), OI_R(-30.0), OI_R(70.0)
     },
     /*
      * 1: "telescope-15cm": a 15 cm space telescope of the NEOSSat / MOST
@@ -73,7 +82,10 @@ static const oi_camera builtin[] = {
         PHOTON_ENERGY_SI_400_900,
         OI_R(100000.0),     /* full well (datasheet peak signal 100 ke-) */
         OI_R(1.0),          /* dark current, passively cooled CCD (assumption) */
-        OI_R(0.25),         /* brightest-pixel fraction, PSF FWHM ~2 px (assumption) */
+        OI_R(0.1361),       /* brightest-pixel fraction, source centred: tools/psf_peak.py, the
+                               Airy pattern of the 15 cm f/5.88 pupil over 400-900 nm, with an
+                               optics, focus and jitter Gaussian of sigma 1.0 px = 3.0 arcsec
+                               (assumption), over a 13 um pixel; 0.1091 at a pixel's corner */
         OI_R(0.021343873284922172), /* diagonal FOV: 1.223 deg (0.865 deg side) */
         OI_R(0.7853981633974483),   /* Sun exclusion 45 deg (Wallace et al. 2006) */
         9,
@@ -83,9 +95,14 @@ static const oi_camera builtin[] = {
         1,
         { OI_R(1.0) },
         { OI_R(6.0) },
-        OI_R(3.0),          /* longest acceptable trail: about twice the PSF's FWHM (1.7 px
-                               for its peak fraction 0.25) (assumption) */
-        0, 0                /* detection: the SNR rule of the goal (docs/camera.md) */
+        OI_R(3.0),          /* longest acceptable trail: about 1.2 times the PSF's FWHM (2.5 px
+                               for its peak fraction) (assumption) */
+        0, 0,               /* detection: the SNR rule of the goal (docs/camera.md) */
+        /* sensor temperature: the 1 e-/s above taken at -20 C (assumption); doubling
+           6.35 C, e2v's dark-current law for its CCDs, Q/Q(293 K) = 122 T^3
+           exp(-6400 / T) (CCD47-20 datasheet), at 253 K; rated -40 .. +20 C
+           (assumption) */
+        OI_R(-20.0), OI_R(6.35), OI_R(-40.0), OI_R(20.0)
     }
 };
 

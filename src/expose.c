@@ -178,8 +178,31 @@ static int check_input(const oi_expose_in *in, const oi_expose_goal *goal, expos
     return OI_OK;
 }
 
-/* Rates of the brightest pixel (oi_expose, Note 1). */
-static void pixel_rates(const oi_camera *camera, const oi_expose_in *in, expose_rates *r)
+/* The dark current at the goal's sensor temperature (docs/camera.md,
+ * "Sensor temperature"): dark_current_e_s * 2^((T - T_ref) / T_double);
+ * without a temperature, dark_current_e_s itself (bit for bit). The camera's
+ * check keeps the factor within 2^+-30. OI_ERR_NONFINITE for a NaN or
+ * infinite temperature, OI_ERR_INPUT when the camera has no temperature
+ * model or T is outside its rated range. */
+static int sensor_dark(const oi_camera *c, const oi_expose_goal *goal, oi_real *dark)
+{
+    oi_real t;
+    *dark = c->dark_current_e_s;
+    if (goal == NULL || goal->has_sensor_temp == 0u) return OI_OK;
+    t = goal->sensor_temp_c;
+    if (!OI_ISFINITE(t)) return OI_ERR_NONFINITE;
+    if (c->dark_doubling_c == 0 || !oi__in_closed(t, c->temp_min_c, c->temp_max_c)) {
+        return OI_ERR_INPUT;
+    }
+    *dark = c->dark_current_e_s *
+            OI_EXP(OI_R(0.6931471805599453) * ((t - c->dark_ref_temp_c) / c->dark_doubling_c));
+    return OI_OK;
+}
+
+/* Rates of the brightest pixel (oi_expose, Note 1); dark: the dark current
+ * at the sensor's temperature (sensor_dark). */
+static void pixel_rates(const oi_camera *camera, const oi_expose_in *in, oi_real dark,
+                        expose_rates *r)
 {
     oi_real area, k, ifov;
     area = OI_PI_R * OI_R(0.25) * camera->aperture_m * camera->aperture_m;
@@ -187,7 +210,7 @@ static void pixel_rates(const oi_camera *camera, const oi_expose_in *in, expose_
         camera->photon_energy_j;
     ifov = camera->pixel_pitch_m / camera->focal_length_m;
     r->rate_s = in->flux_w_m2 * (area * k * camera->psf_peak_fraction); /* no underflow of flux * area */
-    r->rate_b = in->background_w_m2_sr * area * (ifov * ifov) * k + camera->dark_current_e_s;
+    r->rate_b = in->background_w_m2_sr * area * (ifov * ifov) * k + dark;
 }
 
 /* Signal-to-noise ratio of signal s over background b (electrons) with
@@ -440,12 +463,15 @@ int oi__expose_valid(const oi_camera *camera, const oi_expose_in *in,
                      const oi_expose_goal *goal, oi_exposure *out)
 {
     expose_rates r;
+    oi_real dark;
     int kk, best_t, best_g, st;
     unsigned flags;
 
     st = check_input(in, goal, &r);
     if (st != OI_OK) return st;
-    pixel_rates(camera, in, &r);
+    st = sensor_dark(camera, goal, &dark);
+    if (st != OI_OK) return st;
+    pixel_rates(camera, in, dark, &r);
     detect_rule(camera, &r);
     flags = in->flags & (unsigned)FLAGS_GEOMETRIC;
     if (in->rate_rad_s > 0) {

@@ -33,6 +33,7 @@ enum column {
     C_OBSERVER_VX, C_OBSERVER_VY, C_OBSERVER_VZ,
     C_TARGET_SHAPE, C_Q_W, C_Q_X, C_Q_Y, C_Q_Z, C_EARTH_SHAPE,
     C_ALBEDO_MODEL, C_EPOCH_JD, C_EARTH_ROTATION_DEG,
+    C_SENSOR_TEMP,
     C_COUNT
 };
 
@@ -47,7 +48,8 @@ static const char *const column_name[C_COUNT] = {
     "target_vx", "target_vy", "target_vz",
     "observer_vx", "observer_vy", "observer_vz",
     "target_shape", "q_w", "q_x", "q_y", "q_z", "earth_shape",
-    "albedo_model", "epoch_jd", "earth_rotation_deg"
+    "albedo_model", "epoch_jd", "earth_rotation_deg",
+    "sensor_temp_c"
 };
 
 typedef struct batch {
@@ -524,6 +526,12 @@ static int run_row(batch *b, const csv_reader *r, plan_row *row)
         row_error(b, r->rec_line, b->col[C_SKY],
                   "sky must be none, zodiacal, moon or all, joined by +; got", s);
         return 0;
+    }
+    /* sensor temperature (deg C): absent or empty, the camera's dark current as it stands */
+    if ((st = parse_opt(b, r, C_SENSOR_TEMP, &x)) < 0) return 0;
+    if (st == 1) {
+        goal.has_sensor_temp = 1u;
+        goal.sensor_temp_c = (oi_real)x;
     }
 
     s = field_of(b, r, C_CAMERA, &short_row);

@@ -50,10 +50,11 @@ static void usage(FILE *fp)
         "            atmosphere (1, or 0 = as if the Earth had none),\n"
         "            sky (none, zodiacal, moon, all; default none),\n"
         "            target_vx,target_vy,target_vz, observer_vx,observer_vy,observer_vz\n"
-        "            (km/s; default at rest),\n"
+        "            (km/s; default at rest), sensor_temp_c (deg C; default: the\n"
+        "            camera's dark current as listed),\n"
         "            target_shape (sphere, plate, box-wing, cylinder or a --shapes name;\n"
         "            default sphere), q_w,q_x,q_y,q_z (attitude, body to input frame;\n"
-        "            default identity; |norm - 1| > 1e-6 is ERR_SHAPE)\n"
+        "            default identity; |norm - 1| > 1e-6 is ERR_SHAPE),\n"
         "            albedo_model (uniform: earth_albedo everywhere, the default; knocke;\n"
         "            map: --albedo-map), epoch_jd (Julian date, UTC, 1900 to 2100; needed\n"
         "            by knocke and map), earth_rotation_deg (Greenwich meridian from the\n"
@@ -61,7 +62,7 @@ static void usage(FILE *fp)
         "            rotation axis (GCRS, J2000, TEME)\n"
         "Batch output (numbers with %.17g; empty when not computed):\n"
         "  id,status,sun_fraction,sun_fraction_atm,e_sun,e_earth,e_moon,earth_theta_deg,\n"
-        "  earth_h_km,flux_obs,mag_v,exposure_s,gain,snr,flags\n"
+        "  earth_h_km,flux_obs,mag_v,exposure_s,gain,snr,flags,detect_margin_mag\n"
         "  status: OK, WARN_* (computed), ERR_* (row failed; ERR_PARSE: bad text).\n"
         "  flags: sun_exclusion, earth_in_fov, eclipsed, penumbra, occulted, resolved,\n"
         "         too_faint, saturated, moon_shadow, moon_in_fov, trailed, glint,\n"
@@ -69,7 +70,7 @@ static void usage(FILE *fp)
         "\n"
         "exit status: 0 all rows OK (warnings included), 1 some rows had errors,\n"
         "             2 unusable input (no header, missing required column,\n"
-        "             unreadable file, a bad --shapes file) or bad options.\n"
+        "             unreadable file, a bad --shapes or --albedo-map file) or bad options.\n"
         "\n"
         "examples:\n"
         "  oi-plan                                 # built-in scenario\n"
@@ -101,8 +102,14 @@ static void list_cameras(FILE *fp)
                 (double)c->transmission, (double)c->quantum_efficiency,
                 (double)c->band_fraction, (double)c->photon_energy_j,
                 (double)c->psf_peak_fraction);
-        fprintf(fp, "  full well %.0f e-, dark %.3g e-/s\n", (double)c->full_well_e,
+        fprintf(fp, "  full well %.0f e-, dark %.3g e-/s", (double)c->full_well_e,
                 (double)c->dark_current_e_s);
+        if (c->dark_doubling_c != 0) {
+            fprintf(fp, " at %g C, doubling every %g C, rated %g .. %g C",
+                    (double)c->dark_ref_temp_c, (double)c->dark_doubling_c,
+                    (double)c->temp_min_c, (double)c->temp_max_c);
+        }
+        fprintf(fp, "\n");
         fprintf(fp, "  exposures [s]:");
         for (k = 0; k < c->n_times; k++) fprintf(fp, " %g", (double)c->times_s[k]);
         fprintf(fp, "\n  gains (read noise e-):");

@@ -685,13 +685,16 @@ def _camera_ptr(cam):
                     "orbillum._lib.oi_camera")
 
 
-def _goal(fill, snr_min, sky=None):
-    if fill is None and snr_min is None and sky is None:
+def _goal(fill, snr_min, sky=None, sensor_temp_c=None):
+    if fill is None and snr_min is None and sky is None and sensor_temp_c is None:
         return None
     g = L.oi_expose_goal()
     g.fill = 0.0 if fill is None else fill
     g.snr_min = 0.0 if snr_min is None else snr_min
     g.sky = 0 if sky is None else int(sky)
+    if sensor_temp_c is not None:
+        g.has_sensor_temp = 1
+        g.sensor_temp_c = float(sensor_temp_c)
     return g
 
 
@@ -706,7 +709,7 @@ def _exposure_dict(ex, st):
 def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None,
            target_albedo=None, target_radius_m=None, target_shape=None, attitude_q=None,
            model=None, fill=None, snr_min=None, sky=None, target_velocity=None,
-           observer_velocity=None, epoch_jd=None, earth_rotation_rad=None):
+           observer_velocity=None, epoch_jd=None, earth_rotation_rad=None, sensor_temp_c=None):
     """oi_illuminate then oi_expose_scene for each row: the suggested exposure.
 
     camera: a built-in camera name (see cameras()), a dict as camera() returns
@@ -722,6 +725,8 @@ def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None
     target_shape, attitude_q: as illuminate(); a shape whose specular part is
     more than half of flux_obs sets OI_FLAG_GLINT ('glint').
     epoch_jd, earth_rotation_rad: as illuminate() (the albedo models).
+    sensor_temp_c: the sensor's temperature (deg C; oi_expose_goal.has_sensor_temp,
+    sensor_temp_c; None: the camera's dark_current_e_s as it stands).
     Returns the dict of illuminate() plus the oi_exposure fields (exposure_s,
     gain, time_index, gain_index, signal_e, background_e, peak_e, saturation_e,
     fill, snr, sun_angle_rad, flags, background_w_m2_sr), flag_names, expose_status and
@@ -735,7 +740,7 @@ def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None
                          "alone call illuminate()")
     cp, _ = _camera_ptr(camera)
     m = _model(model)
-    g = _goal(fill, snr_min, sky)
+    g = _goal(fill, snr_min, sky, sensor_temp_c)
     keep = []
     sc = _scenes(sun, moon, target, observer, terms, earth_albedo, target_albedo,
                  target_radius_m, target_velocity, observer_velocity, target_shape=target_shape,
@@ -763,9 +768,10 @@ def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None
 
 
 def expose_flux(camera, flux_w_m2, background_w_m2_sr=0.0, flags=0, *, fill=None,
-                snr_min=None):
+                snr_min=None, sensor_temp_c=None):
     """oi_expose per row from a flux at the aperture (W/m^2), a background
-    radiance (W/m^2/sr) and known flags. Returns the oi_exposure fields."""
+    radiance (W/m^2/sr) and known flags; sensor_temp_c as in expose().
+    Returns the oi_exposure fields."""
     cp, _ = _camera_ptr(camera)
     flux = np.atleast_1d(_floats(flux_w_m2, "flux_w_m2"))
     if flux.ndim != 1:
@@ -776,7 +782,7 @@ def expose_flux(camera, flux_w_m2, background_w_m2_sr=0.0, flags=0, *, fill=None
         fl = np.broadcast_to(np.asarray(flags, dtype=np.uint32), (n,))
     except (TypeError, ValueError, OverflowError) as e:
         raise ValueError(f"flags: a mask of OI_FLAG_* or one per row ({n}): {e}") from None
-    g = _goal(fill, snr_min)
+    g = _goal(fill, snr_min, sensor_temp_c=sensor_temp_c)
     inp = np.zeros(n, dtype=np.dtype(L.oi_expose_in))
     inp["flux_w_m2"] = flux
     inp["background_w_m2_sr"] = bg

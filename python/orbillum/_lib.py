@@ -253,11 +253,14 @@ class oi_camera(ctypes.Structure):
         ("n_gains", c_int), ("gains", real * OI_CAMERA_MAX_GAINS),
         ("read_noise_e", real * OI_CAMERA_MAX_GAINS),
         ("max_trail_px", real), ("detect_false_alarm", real), ("detect_probability", real),
+        ("dark_ref_temp_c", real), ("dark_doubling_c", real), ("temp_min_c", real),
+        ("temp_max_c", real),
     ]
 
 
 class oi_expose_goal(ctypes.Structure):
-    _fields_ = [("fill", real), ("snr_min", real), ("sky", c_uint)]
+    _fields_ = [("fill", real), ("snr_min", real), ("sky", c_uint), ("has_sensor_temp", c_uint),
+                ("sensor_temp_c", real)]
 
 
 class oi_expose_in(ctypes.Structure):

@@ -65,6 +65,13 @@ function planner(input, env) {
   return r.stdout;
 }
 
+// detect_margin_mag is 2.5 log10(signal / signal_min): where a libm result (exp, log) is 1 ulp
+// apart, the margin's magnitude (about 1 to 10) carries it times 2.5 plus the product's own
+// rounding, up to 3 ulp; bit for bit with the generic libm all the same.
+function maxUlpOf(column, run) {
+  return column === 'detect_margin_mag' && run.maxUlp > 0n && run.maxUlp < 3n ? 3n : run.maxUlp;
+}
+
 /* [name, file, ulp allowed beyond the run's]: the facets' earthshine calls libm's acos and asin
  * (src/facet_earth.c), which glibc and wasi-libc round differently for some arguments: a facet
  * target's flux_obs then differs by an ulp, its V magnitude by a few (docs/viewer.md). */
@@ -99,7 +106,7 @@ for (const [name, input, extraUlp] of INPUTS) for (const run0 of RUNS) {
         numbers++;
         if (bits(g) === bits(Number(w))) return;
         const d = ulps(g, Number(w));
-        (d <= run.maxUlp ? near : differ).push(`row ${i + 1} ${c}: ${g} vs ${w} (${d} ulp)`);
+        (d <= maxUlpOf(c, run) ? near : differ).push(`row ${i + 1} ${c}: ${g} vs ${w} (${d} ulp)`);
       });
     });
     assert.deepEqual(differ, [], `${differ.length} of ${numbers} numbers differ by more than ${run.maxUlp} ulp`);

@@ -334,7 +334,7 @@ static void test_expose(void **state)
 {
     static oi_expose_in in[NRAND];
     const oi_camera *cam = oi_camera_builtin(0);
-    oi_expose_goal goal = {OI_R(0.4), OI_R(7.0), 0u};
+    oi_expose_goal goal = {OI_R(0.4), OI_R(7.0), 0u, 0u, 0};
     uint64_t rng = 5;
     long i;
     int bad, want_bad = 0;

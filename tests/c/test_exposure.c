@@ -114,7 +114,7 @@ static void test_choice_custom_goal(void **state)
 {
     oi_camera c = synth();
     oi_expose_in in = input(1e-15, 0);
-    oi_expose_goal goal = {(oi_real)0.05, (oi_real)200, 0u};
+    oi_expose_goal goal = {(oi_real)0.05, (oi_real)200, 0u, 0u, 0};
     oi_exposure out;
     (void)state;
     check_int(OI_OK, oi_expose(&c, &in, &goal, &out), "status");
@@ -355,7 +355,7 @@ static void test_input_errors(void **state)
     in = input(1e-15, 2e8);
     expect_status(OI_ERR_INPUT, &c, &in, NULL, "background too bright");
     in = input(1e-15, 0);
-    goal.sky = 0u;
+    memset(&goal, 0, sizeof goal);
     goal.fill = (oi_real)1.5;
     goal.snr_min = 0;
     expect_status(OI_ERR_INPUT, &c, &in, &goal, "goal fill 1.5");
@@ -419,14 +419,14 @@ static void test_builtin_cameras(void **state)
     assert_null(oi_camera_find("star-trackerx"));
 
     /* The 15 cm telescope on a V = 10 star: F = 1361 10^(-0.4 (10 + 26.74)),
-     * S = F pi 0.075^2 0.70 0.5356 0.75 / 3.1825e-19 0.25 (values written
+     * S = F pi 0.075^2 0.70 0.5356 0.75 / 3.1825e-19 0.1361 (values written
      * out from the camera's documented sources). */
     tel = oi_camera_find("telescope-15cm");
     assert_non_null(tel);
     in = input(TSI * pow(10.0, -0.4 * (10.0 + 26.74)), 0);
     check_int(OI_OK, oi_expose(tel, &in, NULL, &out), "telescope status");
     area = PI * 0.075 * 0.075;
-    s_rate = in.flux_w_m2 * area * 0.70 * 0.5356 * 0.75 / 3.1825e-19 * 0.25;
+    s_rate = in.flux_w_m2 * area * 0.70 * 0.5356 * 0.75 / 3.1825e-19 * 0.1361;
     check_rel(s_rate * out.exposure_s, out.signal_e, 1e-5, "telescope signal");
     check_rel(1.0 * out.exposure_s, out.background_e, 1e-5, "telescope dark");
 }
@@ -1068,6 +1068,8 @@ static void test_search_matches_bruteforce(void **state)
             goal.fill = u < 0.5 ? 0 : (u < 0.55 ? 1 : (oi_real)(0.01 + 0.99 * urand()));
             goal.snr_min = urand() < 0.3 ? 0 : (oi_real)log_uniform(0.1, 1e4);
             goal.sky = 0u;
+            goal.has_sensor_temp = 0u;
+            goal.sensor_temp_c = 0;
             gp = &goal;
         }
         /* one case in five: a setting's fill exactly at 1 or at the goal

@@ -22,8 +22,8 @@ ROOT = Path(__file__).resolve().parents[2]
 PLAN = Path(os.environ.get("OI_PLAN", ROOT / "build" / "oi-plan"))
 
 HEADER = ("id,status,sun_fraction,sun_fraction_atm,e_sun,e_earth,e_moon,earth_theta_deg,"
-          "earth_h_km,flux_obs,mag_v,exposure_s,gain,snr,flags")
-NUMERIC = HEADER.split(",")[2:14]
+          "earth_h_km,flux_obs,mag_v,exposure_s,gain,snr,flags,detect_margin_mag")
+NUMERIC = HEADER.split(",")[2:14] + ["detect_margin_mag"]
 FLAG_NAMES = {"sun_exclusion", "earth_in_fov", "eclipsed", "too_faint", "saturated",
               "penumbra", "occulted", "resolved", "moon_in_fov", "trailed"}
 AU = 149597870.7
@@ -238,6 +238,53 @@ def test_sky_column():
     with_moon, without = parse(out)
     assert "moon_in_fov" in with_moon["flags"].split("+")
     assert "moon_in_fov" not in without["flags"].split("+")
+
+
+def test_detect_margin_column():
+    """detect_margin_mag: empty without an observer; with the default SNR
+    rule its sign is that of snr - 5 over targets from far above to far
+    below the limit (the margin is 2.5 log10 of the signal over the
+    smallest signal with SNR 5, and the SNR rises with the signal); an
+    occulted target (no signal) gets -100."""
+    rows = [dict(LIT, id="noobs")]
+    for k, d in enumerate([10, 1e3, 1e4, 1e5, 3e5, 1e6, 3e6, 1e7]):
+        rows.append(dict(LIT, id=f"d{k}", observer_x=0, observer_y=7000 + d, observer_z=0,
+                         camera="star-tracker"))
+    # observer on the far side of the Earth: the Earth hides the target
+    rows.append(dict(LIT, id="hidden", observer_x=0, observer_y=-7010, observer_z=0))
+    code, out, err = run_csv(table(rows))
+    assert code == 0, err
+    got = parse(out)
+    assert got[0]["detect_margin_mag"] == ""
+    signs = set()
+    for r in got[1:-1]:
+        snr, m = float(r["snr"]), float(r["detect_margin_mag"])
+        assert (m > 0) == (snr > 5), (r["id"], snr, m)
+        signs.add(m > 0)
+    assert signs == {True, False}
+    assert "occulted" in got[-1]["flags"] and float(got[-1]["detect_margin_mag"]) == -100
+
+
+def test_sensor_temp_column():
+    """sensor_temp_c: absent, empty and the camera's reference temperature
+    (25 C for the star tracker) give the same row to the byte; 20 C warmer
+    the dark current is 2^(20/6.5) times larger and the SNR lower; outside
+    the rated range (-30 .. 70 C) or NaN the row fails with ERR_INPUT or
+    ERR_NONFINITE and empty numbers; text is ERR_PARSE."""
+    base = dict(LIT, observer_x=0, observer_y=7000 + 3e5, observer_z=0, camera="star-tracker")
+    rows = [dict(base), dict(base, sensor_temp_c=""), dict(base, sensor_temp_c="25"),
+            dict(base, sensor_temp_c="45"), dict(base, sensor_temp_c="-30"),
+            dict(base, sensor_temp_c="70.5"), dict(base, sensor_temp_c="nan"),
+            dict(base, sensor_temp_c="warm")]
+    code, out, err = run_csv(table(rows))
+    assert code == 1
+    absent, empty, ref, warm, cold, hot, nan, text = parse(out)
+    assert empty == dict(absent, id=empty["id"]) and ref == dict(absent, id=ref["id"])
+    assert float(warm["snr"]) < float(absent["snr"]) < float(cold["snr"])
+    assert hot["status"] == "ERR_INPUT" and nan["status"] == "ERR_NONFINITE"
+    assert text["status"] == "ERR_PARSE"
+    for r in (hot, nan, text):
+        assert all(r[c] == "" for c in NUMERIC) and r["flags"] == ""
 
 
 def test_velocity_columns():

@@ -61,8 +61,8 @@ def test_limiting_magnitudes():
     for cam, name, m, t in rows:
         print(f"{cam:15s} {name:30s} V = {m:6.2f} at {t:g} s")
     tele = {name: m for cam, name, m, t in rows if cam == "telescope-15cm"}
-    # the zodiacal light costs the telescope 0.5-1 mag; black sky 20.4
-    assert abs(tele["black"] - 20.4) < 0.1
+    # the zodiacal light costs the telescope 0.4-0.9 mag; black sky 19.8 (peak fraction 0.136)
+    assert abs(tele["black"] - 19.8) < 0.1
     assert 0.3 < tele["black"] - tele["ecliptic pole"] < 1.0
     assert tele["ecliptic pole"] > tele["ecliptic, 90 deg from the Sun"]
     for cam, name, m, t in rows:

@@ -81,7 +81,7 @@ const COLUMNS = ['id', 'sun_x', 'sun_y', 'sun_z', 'target_x', 'target_y', 'targe
 /** The planner's output columns, in its order. */
 export const PLAN_COLUMNS = ['id', 'status', 'sun_fraction', 'sun_fraction_atm', 'e_sun',
   'e_earth', 'e_moon', 'earth_theta_deg', 'earth_h_km', 'flux_obs', 'mag_v', 'exposure_s',
-  'gain', 'snr', 'flags'];
+  'gain', 'snr', 'flags', 'detect_margin_mag'];
 
 export class Orbillum {
   constructor(instance) {
@@ -262,7 +262,7 @@ export class Orbillum {
     const E = 'oi_exposure';
     const out = {};
     for (const f of ['exposure_s', 'gain', 'signal_e', 'background_e', 'peak_e', 'saturation_e',
-      'fill', 'snr', 'sun_angle_rad']) out[f] = this.getR(p, E, f);
+      'fill', 'snr', 'sun_angle_rad', 'detect_margin_mag']) out[f] = this.getR(p, E, f);
     out.time_index = this.getI(p, E, 'time_index');
     out.gain_index = this.getI(p, E, 'gain_index');
     out.flags = this.getU(p, E, 'flags');
@@ -511,6 +511,7 @@ export class Orbillum {
       row.exposure_s = r.expo.exposure_s;
       row.gain = r.expo.gain;
       row.snr = r.expo.snr;
+      row.detect_margin_mag = r.expo.detect_margin_mag;
     }
     row.flagBits = flags;
     row.flags = this.flagNames(flags);

@@ -73,6 +73,7 @@ static const layout_entry layout[] = {
     OFF(oi_exposure, gain_index), OFF(oi_exposure, signal_e), OFF(oi_exposure, background_e),
     OFF(oi_exposure, peak_e), OFF(oi_exposure, saturation_e), OFF(oi_exposure, fill),
     OFF(oi_exposure, snr), OFF(oi_exposure, sun_angle_rad), OFF(oi_exposure, flags),
+    OFF(oi_exposure, detect_margin_mag),
     CONST(OI_TERM_SUN), CONST(OI_TERM_EARTH), CONST(OI_TERM_MOON), CONST(OI_TERM_ALL),
     CONST(OI_SHADOW_LIT), CONST(OI_SHADOW_PENUMBRA), CONST(OI_SHADOW_UMBRA),
     CONST(OI_SHADOW_ANNULAR),

@@ -1,0 +1,162 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+"""validation_table.py: limiting magnitudes of the built-in cameras against
+published on-orbit figures (docs/camera.md, "Validation").
+
+For each camera, exposure time, sky and sensor temperature: the faintest V
+(a solar-coloured point source, centred on a pixel) that is detected, by
+bisection in log flux on the runtime (orbillum.expose_flux on a copy of the
+built-in camera with that one exposure time and its lowest gain), under
+three rules:
+  - "SNR 5": the runtime's default rule, SNR 5 in the brightest pixel;
+  - "threshold": the runtime's threshold rule, a false-alarm rate of 1e-6
+    per pixel met with probability 0.9 (docs/camera.md, "Detection");
+  - "matched filter": not in the runtime, computed here from the runtime's
+    electrons: SNR 5 of the PSF-weighted sum over 9 x 9 pixels,
+    SNR^2 = sum_i (S p_i)^2 / (S p_i + B + R^2), p_i the pixel fractions of
+    the Gaussian with the camera's centred peak fraction (the runtime's
+    own PSF model, src/trail.c), S the whole PSF's electrons
+    (signal_e / psf_peak_fraction), B the background electrons per pixel,
+    R the read noise: what a detection that uses the whole PSF reaches.
+Prints the Markdown tables docs/camera.md quotes (the second: the star
+tracker's limit for a goal snr_min of 5, 20 and 50); tests/python/
+test_validation_table.py checks that the document holds this output.
+Usage: .venv/bin/python tools/validation_table.py
+"""
+import ctypes
+import math
+
+import orbillum
+
+L = orbillum.L
+LIB = orbillum._lib
+
+PUBLISHED = {
+    "telescope-15cm": "19.5-20 (NEOSSat, 100 s)",
+    "star-tracker": "4.9-7 (class ratings, 0.1-0.5 s)",
+}
+
+
+def camera_at(name, t, p_fa=0.0, p_d=0.0):
+    src = LIB.oi_camera_find(name.encode())
+    c = L.oi_camera()
+    ctypes.memmove(ctypes.addressof(c), ctypes.addressof(src.contents), ctypes.sizeof(c))
+    c.n_times = 1
+    c.times_s[0] = t
+    c.n_gains = 1
+    c.detect_false_alarm = p_fa
+    c.detect_probability = p_d
+    return c
+
+
+def mag_of(flux):
+    return L.OI_SUN_MAG_V - 2.5 * math.log10(flux / L.OI_TSI_W_M2)
+
+
+def gaussian_pixels(peak, half=4):
+    """Pixel fractions of a centred Gaussian whose centre pixel holds `peak`."""
+    lo, hi = 0.05, 20.0  # sigma by bisection: the centre fraction falls with sigma
+    for _ in range(200):
+        s = 0.5 * (lo + hi)
+        if math.erf(1.0 / (2.0 * math.sqrt(2.0) * s)) ** 2 > peak:
+            lo = s
+        else:
+            hi = s
+    s = 0.5 * (lo + hi)
+
+    def axis(k):
+        return 0.5 * (math.erf((k + 0.5) / (math.sqrt(2.0) * s)) -
+                      math.erf((k - 0.5) / (math.sqrt(2.0) * s)))
+    return [axis(i) * axis(j) for i in range(-half, half + 1) for j in range(-half, half + 1)]
+
+
+def detected(rule, cam, flux, bg, temp, pixels):
+    r = orbillum.expose_flux(cam, [flux], bg, sensor_temp_c=temp)
+    assert r["expose_status"][0] == 0, r["expose_status_name"][0]
+    if rule == "snr":
+        return r["snr"][0] >= 5.0
+    if rule == "threshold":
+        return r["detect_margin_mag"][0] >= 0.0
+    total = r["signal_e"][0] / cam.psf_peak_fraction
+    b = r["background_e"][0] + cam.read_noise_e[0] ** 2
+    snr2 = sum((total * p) ** 2 / (total * p + b) for p in pixels)
+    return math.sqrt(snr2) >= 5.0
+
+
+def limit(rule, name, t, bg, temp):
+    cam = camera_at(name, t, *((1e-6, 0.9) if rule == "threshold" else (0.0, 0.0)))
+    pixels = gaussian_pixels(cam.psf_peak_fraction)
+    lo, hi = math.log(1e-30), math.log(1e-3)
+    for _ in range(100):
+        mid = 0.5 * (lo + hi)
+        if detected(rule, cam, math.exp(mid), bg, temp, pixels):
+            hi = mid
+        else:
+            lo = mid
+    return mag_of(math.exp(hi))
+
+
+def rows():
+    zodi_pole = LIB.oi_zodiacal_radiance(1.0, math.pi / 2)
+    zodi_90 = LIB.oi_zodiacal_radiance(math.pi / 2, 0.0)
+    cases = [
+        ("telescope-15cm", 100.0, "black", 0.0, None),
+        ("telescope-15cm", 100.0, "zodiacal, ecliptic pole", zodi_pole, None),
+        ("telescope-15cm", 100.0, "zodiacal, ecliptic 90 deg from the Sun", zodi_90, None),
+        ("star-tracker", 0.1, "black", 0.0, None),
+        ("star-tracker", 0.1, "zodiacal, ecliptic 90 deg from the Sun", zodi_90, None),
+        ("star-tracker", 0.1, "black", 0.0, 45.0),
+        ("star-tracker", 0.5, "black", 0.0, None),
+        ("star-tracker", 0.5, "zodiacal, ecliptic 90 deg from the Sun", zodi_90, None),
+        ("star-tracker", 0.5, "black", 0.0, 45.0),
+    ]
+    out = []
+    for name, t, sky, bg, temp in cases:
+        cam = LIB.oi_camera_find(name.encode()).contents
+        temp_txt = f"{temp:g} C" if temp is not None else f"{cam.dark_ref_temp_c:g} C (reference)"
+        out.append((name, t, sky, temp_txt, limit("snr", name, t, bg, temp),
+                    limit("threshold", name, t, bg, temp), limit("mf", name, t, bg, temp),
+                    PUBLISHED[name]))
+    return out
+
+
+def table():
+    lines = ["| camera | time | sky | sensor | SNR 5, brightest pixel | threshold 1e-6, P_d 0.9 "
+             "| matched filter, SNR 5 | published |",
+             "|---|---|---|---|---|---|---|---|"]
+    for name, t, sky, temp, snr, thr, mf, pub in rows():
+        lines.append(f"| `{name}` | {t:g} s | {sky} | {temp} | {snr:.2f} | {thr:.2f} | {mf:.2f} "
+                     f"| {pub} |")
+    return "\n".join(lines)
+
+
+def snr_goal_limit(name, t, snr_min):
+    """The faintest V whose brightest pixel reaches snr_min (the goal's
+    snr_min, black sky, the reference temperature)."""
+    cam = camera_at(name, t)
+    lo, hi = math.log(1e-30), math.log(1e-3)
+    for _ in range(100):
+        mid = 0.5 * (lo + hi)
+        r = orbillum.expose_flux(cam, [math.exp(mid)], 0.0, snr_min=snr_min)
+        assert r["expose_status"][0] == 0
+        if r["snr"][0] >= snr_min:
+            hi = mid
+        else:
+            lo = mid
+    return mag_of(math.exp(hi))
+
+
+def goal_table():
+    """The star tracker's limit for the SNR a tracker's centroid needs."""
+    lines = ["| `star-tracker`, black sky | snr_min 5 | snr_min 20 | snr_min 50 |",
+             "|---|---|---|---|"]
+    for t in (0.1, 0.5):
+        v = [snr_goal_limit("star-tracker", t, k) for k in (5.0, 20.0, 50.0)]
+        lines.append(f"| {t:g} s | {v[0]:.2f} | {v[1]:.2f} | {v[2]:.2f} |")
+    return "\n".join(lines)
+
+
+if __name__ == "__main__":
+    print(table())
+    print()
+    print(goal_table())
