@@ -218,6 +218,38 @@ static oi_real sun_unit(const oi_real sun_km[3], oi_real s_hat[3])
     return oi__unit(sun_km, s_hat);
 }
 
+/* The uniform disc from the limb-darkened table: the shift sigma(F), in
+ * units of the disc's image radius a, that moves the lookup point along rho
+ * to where the limb-darkened disc's fraction equals the uniform disc's
+ * behind a straight edge, the edge's position taken from the table's own F
+ * (bake/atmosphere/disc_shift.py: sigma = sqrt(g) (1 - 2F) (C0 + C1 g + C2
+ * g^2), g = F (1 - F), fit error 7.0e-4 in the fraction). Zero at F = 0,
+ * 1/2 and 1. */
+#define OI_ATM_SHIFT_C0 OI_R(0.256474)
+#define OI_ATM_SHIFT_C1 OI_R(-1.25786)
+#define OI_ATM_SHIFT_C2 OI_R(3.00221)
+static oi_real uniform_shift(oi_real f)
+{
+    const oi_real g = f * ((oi_real)1 - f);
+    if (!(g > (oi_real)0)) return (oi_real)0;
+    return OI_SQRT(g) * ((oi_real)1 - (oi_real)2 * f) *
+           (OI_ATM_SHIFT_C0 + g * (OI_ATM_SHIFT_C1 + g * OI_ATM_SHIFT_C2));
+}
+
+/* The table's fraction (limb-darkened disc) at continuous indices iu, it,
+ * with the cells' floors and weights; iu, it >= 0 up to rounding (z >=
+ * z_min, rho >= rho_lo): the cells are clamped, the fractions not (a
+ * rounding's linear extrapolation); q = log10(F + f_floor). */
+static oi_real table_fraction(const oi_atm_table *t, oi_real iu, oi_real it, int *i, int *j,
+                              oi_real *fu, oi_real *ft)
+{
+    oi_real q;
+    *i = oi__cell_floor(iu, t->nz, fu);
+    *j = oi__cell_floor(it, t->nt, ft);
+    q = t->q_min + t->q_scale * oi__bilinear_u16(t->q, t->nt, *i, *j, *fu, *ft);
+    return clamp01(OI_EXP(q * t->ln10) - t->f_floor);
+}
+
 /* The table that serves a resolved model (a caller's was checked by
  * oi__model_resolve; the default is trusted); NULL: none. */
 static const oi_atm_table *table_of(const oi_model *m)
@@ -268,8 +300,13 @@ static const oi_atm_table *table_of(const oi_model *m)
  *     rho the nodes are uniform in a blend of the model ray altitude v and
  *     rho up to v = v_mid_km, then uniform in rho.
  *  2. The table holds the limb-darkened disc (Neckel & Labs 1994). With
- *     OI_LIMB_UNIFORM the geometric difference frac - frac_ld is added
- *     (exact outside the atmosphere's effect), and the sum clamped to [0, 1].
+ *     OI_LIMB_UNIFORM the table is read a second time, at the point moved
+ *     along rho by a uniform_shift(F) (at most 0.042 a) to where the
+ *     limb-darkened disc's fraction equals the uniform disc's behind an
+ *     equivalent straight edge placed by F itself: monotonic wherever the
+ *     table is, the geometric fraction outside the atmosphere's reach
+ *     (docs/atmosphere.md, "The uniform disc"); the direction is the
+ *     limb-darkened disc's.
  *  3. Accuracy: see the provenance of the table (tables/oi_atm_vband.c:
  *     maximum absolute error of the fraction against the baker's
  *     deterministic ray reference at random off-grid points). The model
@@ -297,7 +334,7 @@ int oi__atm_fraction(const oi_real sun_km[3], const oi_real point_km[3], const o
 {
     const oi_atm_table *t;
     oi_real s_hat[3], cr[3];
-    oi_real d, z, rho2, rho, rc, a, rho_hi, iu, it, fu, ft, q, f;
+    oi_real d, z, rho2, rho, rc, a, rho_hi, iu, it, fu, ft, f;
     int i, j;
 
     f = m->limb_darkening == OI_LIMB_DARKENED ? frac_ld : frac;
@@ -323,14 +360,19 @@ int oi__atm_fraction(const oi_real sun_km[3], const oi_real point_km[3], const o
         *fraction_atm = (oi_real)0;
         return OI_OK;
     }
-    /* iu, it >= 0 up to rounding (z >= z_min, rho >= rho_lo): the cells
-     * are clamped, the fractions not (a rounding's linear extrapolation) */
-    i = oi__cell_floor(iu, t->nz, &fu);
-    j = oi__cell_floor(it, t->nt, &ft);
-    /* the table's fraction (limb-darkened disc): q = log10(F + f_floor) */
-    q = t->q_min + t->q_scale * oi__bilinear_u16(t->q, t->nt, i, j, fu, ft);
-    f = clamp01(OI_EXP(q * t->ln10) - t->f_floor);
-    if (m->limb_darkening != OI_LIMB_DARKENED) f = clamp01(f + (frac - frac_ld));
+    f = table_fraction(t, iu, it, &i, &j, &fu, &ft);
+    if (m->limb_darkening != OI_LIMB_DARKENED) {
+        /* the uniform disc: the table read again at the shifted point
+         * (Note 2); the direction stays the limb-darkened disc's */
+        oi_real ds = a * uniform_shift(f);
+        if (ds != (oi_real)0) {
+            oi_real iu2, it2, fu2, ft2;
+            int i2, j2;
+            f = table_index(t, z, rho + ds, rc, a, &iu2, &it2) < 0
+                    ? (oi_real)0
+                    : table_fraction(t, iu2, it2, &i2, &j2, &fu2, &ft2);
+        }
+    }
     *fraction_atm = f;
     if (dir != NULL && f > (oi_real)0 && rho > (oi_real)0)
         tilt(t->psi_min_rad + t->psi_scale_rad * oi__bilinear_u16(t->psi, t->nt, i, j, fu, ft),

@@ -224,3 +224,41 @@ def test_table_lookup_against_reference(rays_default):
         meta = json.load(f)
     err, _ = am.measure(rays_default, q, psi, alpha_c, h_c, n=40, seed=99)
     assert err["max_abs_error"] < 1.5 * meta["measured"]["max_abs_error"] + 1e-3
+
+
+def test_uniform_disc_shift_coefficients():
+    """src/atmosphere.c's shift coefficients are the fit of bake/atmosphere/disc_shift.py,
+    and the fit's straight-edge error is the documented 7.0e-4."""
+    import re
+    from bake.atmosphere import disc_shift
+    root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    with open(os.path.join(root, "src", "atmosphere.c")) as fh:
+        src = fh.read()
+    got = [float(re.search(r"#define OI_ATM_SHIFT_C%d OI_R\(([-0-9.e]+)\)" % k, src).group(1))
+           for k in range(3)]
+    want = disc_shift.coefficients()
+    assert got == list(want)
+    assert disc_shift.fit_error(want) < 7.5e-4
+    # the shift is zero at F = 0, 1/2, 1 and below 0.042 disc radii
+    f = np.linspace(0.0, 1.0, 1001)
+    s = disc_shift.sigma(f, want)
+    assert s[0] == 0.0 and s[-1] == 0.0 and abs(s[500]) < 1e-15
+    assert np.max(np.abs(s)) < 0.042
+
+
+def test_uniform_disc_shift_matches_edge_model():
+    """The straight-edge model itself against an independent brute-force 2-D count
+    of the limb-darkened disc's pixels behind the edge."""
+    from bake.atmosphere import disc_shift
+    n = 1201
+    g = (np.arange(n) + 0.5) / n * 2 - 1
+    X, Y = np.meshgrid(g, g)
+    r2 = X * X + Y * Y
+    inside = r2 < 1
+    mu = np.sqrt(np.clip(1 - r2, 0, 1))
+    intensity = np.where(inside, np.polynomial.polynomial.polyval(mu, ar.NL94_559), 0.0)
+    for x in (-0.7, -0.2, 0.4, 0.9):
+        u, w = disc_shift._edge_fractions([x])
+        vis = Y < x
+        assert abs(u[0] - np.sum(inside & vis) / np.sum(inside)) < 2e-3
+        assert abs(w[0] - np.sum(intensity * vis) / np.sum(intensity)) < 2e-3
