@@ -115,7 +115,9 @@ static oi_real clamp01(oi_real x)
  * inside the window, -1 below it (no unblocked refracted ray: fraction
  * exactly 0). The coordinates of the baker's window:
  *   target = max(0, M(h_c) - 1.2 a); v_lo: M(v_lo) = target, in
- *   [h_c - 60, h_c] (the root is always inside: M(h_c - 60) < target);
+ *   [h_c - 60, h_c] (the root is inside: M(h_c - 60) < target), or in
+ *   [h_c - 60, v_mid] where M(h_c) - 1.2 a <= 0 (target the axis, z >~
+ *   R / alpha_c);
  *   rho_lo = M(v_lo) = target; rho_mid = M(v_mid).
  * Below the window costs no transcendental; segment B a log; segment A a
  * log and two solves (solve_x).
@@ -126,9 +128,15 @@ static int table_index(const oi_atm_table *t, oi_real z, oi_real rho, oi_real rc
     const oi_real ha = t->h_a_km, hc = t->h_c_km;
     oi_real k = z * t->alpha_c_rad;
     oi_real rho_lo, rho_mid, rho_hi;
+    oi_real x_top = (oi_real)0; /* upper end of v_lo's bracket, in x */
 
     rho_lo = rc + hc - k - OI_R(1.2) * a;
-    if (rho_lo < (oi_real)0) rho_lo = (oi_real)0;
+    if (!(rho_lo > (oi_real)0)) {
+        /* the lowest ray's image has crossed the axis: the window starts on
+         * the axis, v_lo (the ray landing there) above h_c */
+        rho_lo = (oi_real)0;
+        x_top = (t->v_mid_km - hc) / ha;
+    }
     if (rho < rho_lo) return -1;
     rho_hi = rc + a + t->top_km;
     rho_mid = rc + t->v_mid_km - k * t->e_mid;
@@ -139,7 +147,7 @@ static int table_index(const oi_atm_table *t, oi_real z, oi_real rho, oi_real rc
          * H: tv = (x - x_lo) / (x_mid - x_lo) */
         const oi_real x_mid = (t->v_mid_km - hc) / ha;
         oi_real tp_lo = rho_lo - rc - hc;
-        oi_real x_lo = solve_x(ha, tp_lo, k, (oi_real)-60 / ha, (oi_real)0, (oi_real)0);
+        oi_real x_lo = solve_x(ha, tp_lo, k, (oi_real)-60 / ha, x_top, (oi_real)0);
         /* at x_lo, K exp(-x_lo) = H x_lo - tp_lo (its equation) */
         oi_real x = solve_x(ha, rho - rc - hc, k, x_lo, x_mid, ha * x_lo - tp_lo);
         oi_real tv = (x - x_lo) / (x_mid - x_lo);

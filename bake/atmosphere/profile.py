@@ -62,7 +62,8 @@ import numpy as np
 
 from ..common.constants import R_EARTH_KM
 TOP_KM = 100.0              # top of the model atmosphere (km)
-CLOUD_TOP_KM = 10.0         # opaque cloud layer below this altitude (km)
+CLOUD_TOP_KM = 10.0         # top of the cloud layer (km)
+CLOUD_FRACTION = 0.68       # fraction of the rays below the top that the clouds stop (see above)
 
 # --- 1976 U.S. Standard Atmosphere constants (NOAA-S/T 76-1562, 1976)
 _G0 = 9.80665               # m s^-2
@@ -196,6 +197,7 @@ class Profile:
     earth_radius_km: float = R_EARTH_KM
     extinction: bool = True
     cloud_top_km: float = CLOUD_TOP_KM
+    cloud_fraction: float = CLOUD_FRACTION
     ozone_du: float = 300.0
     ozone_peak_km: float = 22.0
     ozone_sigma_km: float = 6.4

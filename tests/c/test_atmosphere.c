@@ -9,7 +9,7 @@
  * limb-darkened disc: independent of the table) and the Python mirror of the
  * table lookup. The C lookup must equal the mirror to rounding, and the
  * reference within the table's measured error (tables/oi_atm_vband.json:
- * max |dF| 3.0e-3 at 300 random off-grid points); the tolerance below is that
+ * max |dF| 6.3e-3 at 300 random off-grid points); the tolerance below is that
  * bound rounded up, not tuned to pass.
  *
  * The runtime finds the table's ray-altitude coordinate by Halley iteration
@@ -74,7 +74,7 @@ int oi__atm_coords(const oi_atm_table *t, oi_real z, oi_real rho, oi_real d, oi_
 #endif
 #endif
 #ifndef TOL_REFERENCE
-#define TOL_REFERENCE 4.0e-3  /* the table's measured maximum error (3.0e-3), rounded up */
+#define TOL_REFERENCE 7.0e-3  /* the table's measured maximum error (6.3e-3), rounded up */
 #endif
 
 static int close_to(double want, double got, double abs_tol, const char *what, int i)
@@ -210,7 +210,7 @@ static void test_uniform_disc_not_offset(void **state)
  * within the table's error (TOL_REFERENCE) plus TOL_UNIFORM_MODEL for the
  * shift's model (straight-edge fit 7e-4; the equivalent edge of a curved,
  * refracting penumbra): measured 5.1e-3 in all over the 48 cases against
- * the table's own 3.0e-3 (docs/atmosphere.md). */
+ * the table's own 6.3e-3 (docs/atmosphere.md). */
 #ifndef TOL_UNIFORM_MODEL
 #define TOL_UNIFORM_MODEL 4.0e-3
 #endif
@@ -246,10 +246,10 @@ static void test_uniform_disc_against_reference(void **state)
  * (35,786 km); beyond the Moon's focusing (rays crossing the axis, z > 3e5
  * km) the fraction may rise towards the axis, so lunar distance is not here.
  * Steps of ~0.05 km along the orbit; an increase going deeper counts as a
- * fault above MONO_TOL (rounding of the lookup: float 1e-6, double 1e-12).
+ * fault above MONO_TOL (rounding of the lookup: float ~2e-6, double 1e-12).
  */
 #ifdef OI_SINGLE_PRECISION
-#define MONO_TOL 2e-6
+#define MONO_TOL 4e-6
 #else
 #define MONO_TOL 1e-12
 #endif
@@ -379,8 +379,8 @@ static int ref_coords(double z, double rho, double d, double r_e, double r_s, do
     if (rho >= rho_hi) return 1;
     if (z < ATM_Z_MIN_KM || z > ATM_Z_MAX_KM) return 2;
     target = ref_image_radius(ATM_H_C_KM, z, rc) - 1.2 * a;
-    if (target < 0.0) target = 0.0;
-    v_lo = ref_solve_v(target, z, rc, ATM_H_C_KM - 60.0, ATM_H_C_KM);
+    v_lo = ref_solve_v(target > 0.0 ? target : 0.0, z, rc, ATM_H_C_KM - 60.0,
+                       target > 0.0 ? ATM_H_C_KM : ATM_V_MID_KM);
     rho_lo = ref_image_radius(v_lo, z, rc);
     if (rho < rho_lo) return -1;
     rho_mid = ref_image_radius(ATM_V_MID_KM, z, rc);
@@ -612,7 +612,9 @@ static void test_fraction_matches_bisection(void **state)
         assert_int_equal(st, region == 2 ? OI_WARN_TABLE_RANGE : OI_OK);
         if (fabs((double)f - f_r) > worst_f) worst_f = fabs((double)f - f_r);
         if (!close_to(f_r, (double)f, TOL_F_BISECT, "F vs bisection", n)) bad++;
-        if (region == 0 && f_r > 0.0) {
+        /* the direction where the table resolves light: F above the
+         * rounding of 10^q - f_floor at the floor (~1e-16) */
+        if (region == 0 && f_r > 1e-2 * ATM_F_FLOOR) {
             double dd = 0.0;
             lit_in_window++;
             for (k = 0; k < 3; ++k) {
@@ -620,7 +622,10 @@ static void test_fraction_matches_bisection(void **state)
                 if (e > dd) dd = e;
             }
             if (dd > worst_dir) worst_dir = dd;
-            if (!close_to(0.0, dd, TOL_DIR_BISECT, "dir vs bisection", n)) bad++;
+            if (!close_to(0.0, dd, TOL_DIR_BISECT, "dir vs bisection", n)) {
+                printf("  (z %.9g km, rho %.9g km, F %.3g)\n", z, rho, f_r);
+                bad++;
+            }
         }
     }
     printf("fraction vs bisection: %d lit points in the window, max |dF| %.3g (bound %.1g), "
@@ -663,10 +668,14 @@ static void test_derived_constants(void **state)
 #else
     const double rel = 4.5e-16; /* 2 DBL_EPSILON: exp/log of this libm vs the exact value */
 #endif
-    const double e_mid = exp(-(ATM_V_MID_KM - ATM_H_C_KM) / ATM_H_A_KM);
+    const double x_mid = (ATM_V_MID_KM - ATM_H_C_KM) / ATM_H_A_KM;
+    const double e_mid = exp(-x_mid);
+    /* the rounding of x_mid (half an ulp, relative x_mid DBL_EPSILON / 2)
+     * propagates into exp(-x_mid) as the same absolute error */
+    const double rel_e = rel + x_mid * 1.2e-16;
     const double c_iu = (double)(ATM_NZ - 1) / log(ATM_Z_MAX_KM / ATM_Z_MIN_KM);
     (void)state;
-    assert_true(close_to(e_mid, (double)ATM->e_mid, rel * e_mid, "e_mid", 0));
+    assert_true(close_to(e_mid, (double)ATM->e_mid, rel_e * e_mid, "e_mid", 0));
     assert_true(close_to(c_iu, (double)ATM->c_iu, rel * c_iu, "c_iu", 0));
     assert_true(close_to(log(10.0), (double)ATM->ln10, rel * log(10.0), "ln10", 0));
     assert_int_equal(ATM->format, OI_ATM_FORMAT);
