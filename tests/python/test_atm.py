@@ -262,3 +262,24 @@ def test_uniform_disc_shift_matches_edge_model():
         vis = Y < x
         assert abs(u[0] - np.sum(inside & vis) / np.sum(inside)) < 2e-3
         assert abs(w[0] - np.sum(intensity * vis) / np.sum(intensity)) < 2e-3
+
+
+def test_eclipse_observables_against_published():
+    """The default atmosphere against published eclipse measurements
+    (bake/atmosphere/eclipse.py; docs/atmosphere.md, "Eclipse observables"):
+    local brightness near the umbra's centre 13-16 mag below sunlight (Link
+    1969); the umbra's enlargement +64 to +89 km (Danjon's and Chauvenet's
+    rules, Espenak & Meeus 2009); 2019-01-21 at mid-totality V = -2.04
+    (Schmude 2022) against the uneclipsed Moon's ~-12.9 at that distance,
+    10.8 mag, within the stated 1 mag; grazing bending 2 x 35.4' (Allen)
+    within 0.1 deg."""
+    from bake.atmosphere import eclipse
+    o = eclipse.observables()
+    assert 13.0 <= o["local_mag"][0] <= 16.0
+    e_km, _ = o["enlargement_km"]
+    assert 64.0 <= e_km <= 89.0
+    m2019 = dict((n, m) for n, _, m in o["eclipses"])["2019-01-21"]
+    assert abs(m2019 - 10.8) < 1.0
+    assert abs(o["grazing_bending_deg"] - 2 * 35.4 / 60) < 0.1
+    # the local brightness falls monotonically from the umbra's edge to its centre
+    assert all(a > b for a, b in zip(o["local_mag"], o["local_mag"][1:]))
