@@ -132,7 +132,8 @@ int oi__moon_shadow(const oi_real sun_km[3], const oi_real moon_km[3],
 
 /*
  * Fraction of the Moon's disc, seen from the point, that the Earth's solid
- * body does not hide (the disc taken as uniform). u_moon: unit vector from
+ * body does not hide and, with the atmosphere on, whose light the air along
+ * the grazing lines of sight lets through (the disc taken as uniform). u_moon: unit vector from
  * the point to the Moon, dm its distance (> moon radius). 1 when the Earth's
  * centre is farther than the Moon's (the Moon in front), 0 when the Earth's
  * disc covers the Moon's.
@@ -140,7 +141,7 @@ int oi__moon_shadow(const oi_real sun_km[3], const oi_real moon_km[3],
 oi_real oi__moon_disc_visible(const oi_real point_km[3], const oi_real u_moon[3], oi_real dm,
                               const oi_model *m)
 {
-    oi_real anti[3], dp, re, rm, frac;
+    oi_real anti[3], dp, re, rm, sep, frac;
     dp = oi__norm_bounded(point_km);
     if (dp >= dm) return (oi_real)1;
     anti[0] = -point_km[0] / dp;
@@ -148,7 +149,12 @@ oi_real oi__moon_disc_visible(const oi_real point_km[3], const oi_real u_moon[3]
     anti[2] = -point_km[2] / dp;
     re = apparent_radius(m->earth_radius_km, dp);
     rm = apparent_radius(m->moon_radius_km, dm);
-    (void)oi__disc_fractions(rm, re, oi__angle_unit(u_moon, anti), &frac, NULL);
+    sep = oi__angle_unit(u_moon, anti);
+    (void)oi__disc_fractions(rm, re, sep, &frac, NULL);
+#ifndef OI_NO_ATMOSPHERE
+    /* the air along the grazing lines of sight (src/atmosphere_moonlight.c) */
+    if (!m->no_atmosphere) frac = oi__atm_moon_visible(dp, re, rm, sep, frac, m->earth_radius_km);
+#endif
     return frac;
 }
 

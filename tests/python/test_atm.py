@@ -283,3 +283,29 @@ def test_eclipse_observables_against_published():
     assert abs(o["grazing_bending_deg"] - 2 * 35.4 / 60) < 0.1
     # the local brightness falls monotonically from the umbra's edge to its centre
     assert all(a > b for a, b in zip(o["local_mag"], o["local_mag"][1:]))
+
+
+def test_moonlight_optical_depth_nodes():
+    """src/atmosphere_moonlight.c's optical depths are the ray reference's
+    (bake/atmosphere/moonlight.py) at the nodes, its clouds the profile's, and
+    its interpolation stays within 1e-3 of the reference's transmission midway
+    between the nodes."""
+    import re
+    from bake.atmosphere import moonlight
+    root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    with open(os.path.join(root, "src", "atmosphere_moonlight.c")) as fh:
+        src = fh.read()
+    body = src[src.index("ml_tau[ML_N] = {"):]
+    body = body[:body.index("};")]
+    got = np.array([float(v) for v in re.findall(r"OI_R\(([-0-9.e+]+)\)", body)])
+    _, want = moonlight.nodes()
+    assert got.shape == want.shape
+    np.testing.assert_allclose(got, want, rtol=1e-5)
+    p = ap.us1976()
+    assert abs(float(re.search(r"#define ML_CLOUD_PASS OI_R\(([0-9.]+)\)", src).group(1))
+               - (1 - p.cloud_fraction)) < 1e-12
+    assert float(re.search(r"#define ML_CLOUD_TOP_KM OI_R\(([0-9.]+)\)", src).group(1)) == p.cloud_top_km
+    h = np.arange(0.5, 99.6, 1.0)
+    t_ref = np.exp(-moonlight.tau_clear(h))
+    t_lut = np.exp(-moonlight.interpolate(h, got))
+    assert np.max(np.abs(t_lut - t_ref)) < 1e-3
