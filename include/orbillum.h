@@ -604,7 +604,9 @@ typedef struct oi_illum {
     oi_real sun_moon_hidden; /* fraction of the Sun's disc area the Moon's disc covers
                                 seen from the target (0: no Moon position, or apart) */
     oi_real moon_disc_visible; /* fraction of the Moon's disc the Earth does not hide,
-                                  seen from the target (with OI_TERM_MOON; else 0) */
+                                  seen from the target, the atmosphere's extinction
+                                  along the grazing lines of sight included unless
+                                  no_atmosphere (with OI_TERM_MOON; else 0) */
     oi_real flux_specular;   /* part of flux_obs from the facets' specular lobes (W/m^2;
                                 0 for a sphere) */
     oi_real earth_albedo_eff;  /* the albedo e_earth is formed with: earth_albedo

@@ -115,7 +115,9 @@ static oi_real clamp01(oi_real x)
  * inside the window, -1 below it (no unblocked refracted ray: fraction
  * exactly 0). The coordinates of the baker's window:
  *   target = max(0, M(h_c) - 1.2 a); v_lo: M(v_lo) = target, in
- *   [h_c - 60, h_c] (the root is always inside: M(h_c - 60) < target);
+ *   [h_c - 60, h_c] (the root is inside: M(h_c - 60) < target), or in
+ *   [h_c - 60, v_mid] where M(h_c) - 1.2 a <= 0 (target the axis, z >~
+ *   R / alpha_c);
  *   rho_lo = M(v_lo) = target; rho_mid = M(v_mid).
  * Below the window costs no transcendental; segment B a log; segment A a
  * log and two solves (solve_x).
@@ -126,9 +128,15 @@ static int table_index(const oi_atm_table *t, oi_real z, oi_real rho, oi_real rc
     const oi_real ha = t->h_a_km, hc = t->h_c_km;
     oi_real k = z * t->alpha_c_rad;
     oi_real rho_lo, rho_mid, rho_hi;
+    oi_real x_top = (oi_real)0; /* upper end of v_lo's bracket, in x */
 
     rho_lo = rc + hc - k - OI_R(1.2) * a;
-    if (rho_lo < (oi_real)0) rho_lo = (oi_real)0;
+    if (!(rho_lo > (oi_real)0)) {
+        /* the lowest ray's image has crossed the axis: the window starts on
+         * the axis, v_lo (the ray landing there) above h_c */
+        rho_lo = (oi_real)0;
+        x_top = (t->v_mid_km - hc) / ha;
+    }
     if (rho < rho_lo) return -1;
     rho_hi = rc + a + t->top_km;
     rho_mid = rc + t->v_mid_km - k * t->e_mid;
@@ -139,7 +147,7 @@ static int table_index(const oi_atm_table *t, oi_real z, oi_real rho, oi_real rc
          * H: tv = (x - x_lo) / (x_mid - x_lo) */
         const oi_real x_mid = (t->v_mid_km - hc) / ha;
         oi_real tp_lo = rho_lo - rc - hc;
-        oi_real x_lo = solve_x(ha, tp_lo, k, (oi_real)-60 / ha, (oi_real)0, (oi_real)0);
+        oi_real x_lo = solve_x(ha, tp_lo, k, (oi_real)-60 / ha, x_top, (oi_real)0);
         /* at x_lo, K exp(-x_lo) = H x_lo - tp_lo (its equation) */
         oi_real x = solve_x(ha, rho - rc - hc, k, x_lo, x_mid, ha * x_lo - tp_lo);
         oi_real tv = (x - x_lo) / (x_mid - x_lo);
@@ -218,6 +226,38 @@ static oi_real sun_unit(const oi_real sun_km[3], oi_real s_hat[3])
     return oi__unit(sun_km, s_hat);
 }
 
+/* The uniform disc from the limb-darkened table: the shift sigma(F), in
+ * units of the disc's image radius a, that moves the lookup point along rho
+ * to where the limb-darkened disc's fraction equals the uniform disc's
+ * behind a straight edge, the edge's position taken from the table's own F
+ * (bake/atmosphere/disc_shift.py: sigma = sqrt(g) (1 - 2F) (C0 + C1 g + C2
+ * g^2), g = F (1 - F), fit error 7.0e-4 in the fraction). Zero at F = 0,
+ * 1/2 and 1. */
+#define OI_ATM_SHIFT_C0 OI_R(0.256474)
+#define OI_ATM_SHIFT_C1 OI_R(-1.25786)
+#define OI_ATM_SHIFT_C2 OI_R(3.00221)
+static oi_real uniform_shift(oi_real f)
+{
+    const oi_real g = f * ((oi_real)1 - f);
+    if (!(g > (oi_real)0)) return (oi_real)0;
+    return OI_SQRT(g) * ((oi_real)1 - (oi_real)2 * f) *
+           (OI_ATM_SHIFT_C0 + g * (OI_ATM_SHIFT_C1 + g * OI_ATM_SHIFT_C2));
+}
+
+/* The table's fraction (limb-darkened disc) at continuous indices iu, it,
+ * with the cells' floors and weights; iu, it >= 0 up to rounding (z >=
+ * z_min, rho >= rho_lo): the cells are clamped, the fractions not (a
+ * rounding's linear extrapolation); q = log10(F + f_floor). */
+static oi_real table_fraction(const oi_atm_table *t, oi_real iu, oi_real it, int *i, int *j,
+                              oi_real *fu, oi_real *ft)
+{
+    oi_real q;
+    *i = oi__cell_floor(iu, t->nz, fu);
+    *j = oi__cell_floor(it, t->nt, ft);
+    q = t->q_min + t->q_scale * oi__bilinear_u16(t->q, t->nt, *i, *j, *fu, *ft);
+    return clamp01(OI_EXP(q * t->ln10) - t->f_floor);
+}
+
 /* The table that serves a resolved model (a caller's was checked by
  * oi__model_resolve; the default is trusted); NULL: none. */
 static const oi_atm_table *table_of(const oi_model *m)
@@ -268,8 +308,13 @@ static const oi_atm_table *table_of(const oi_model *m)
  *     rho the nodes are uniform in a blend of the model ray altitude v and
  *     rho up to v = v_mid_km, then uniform in rho.
  *  2. The table holds the limb-darkened disc (Neckel & Labs 1994). With
- *     OI_LIMB_UNIFORM the geometric difference frac - frac_ld is added
- *     (exact outside the atmosphere's effect), and the sum clamped to [0, 1].
+ *     OI_LIMB_UNIFORM the table is read a second time, at the point moved
+ *     along rho by a uniform_shift(F) (at most 0.042 a) to where the
+ *     limb-darkened disc's fraction equals the uniform disc's behind an
+ *     equivalent straight edge placed by F itself: monotonic wherever the
+ *     table is, the geometric fraction outside the atmosphere's reach
+ *     (docs/atmosphere.md, "The uniform disc"); the direction is the
+ *     limb-darkened disc's.
  *  3. Accuracy: see the provenance of the table (tables/oi_atm_vband.c:
  *     maximum absolute error of the fraction against the baker's
  *     deterministic ray reference at random off-grid points). The model
@@ -297,7 +342,7 @@ int oi__atm_fraction(const oi_real sun_km[3], const oi_real point_km[3], const o
 {
     const oi_atm_table *t;
     oi_real s_hat[3], cr[3];
-    oi_real d, z, rho2, rho, rc, a, rho_hi, iu, it, fu, ft, q, f;
+    oi_real d, z, rho2, rho, rc, a, rho_hi, iu, it, fu, ft, f;
     int i, j;
 
     f = m->limb_darkening == OI_LIMB_DARKENED ? frac_ld : frac;
@@ -323,14 +368,19 @@ int oi__atm_fraction(const oi_real sun_km[3], const oi_real point_km[3], const o
         *fraction_atm = (oi_real)0;
         return OI_OK;
     }
-    /* iu, it >= 0 up to rounding (z >= z_min, rho >= rho_lo): the cells
-     * are clamped, the fractions not (a rounding's linear extrapolation) */
-    i = oi__cell_floor(iu, t->nz, &fu);
-    j = oi__cell_floor(it, t->nt, &ft);
-    /* the table's fraction (limb-darkened disc): q = log10(F + f_floor) */
-    q = t->q_min + t->q_scale * oi__bilinear_u16(t->q, t->nt, i, j, fu, ft);
-    f = clamp01(OI_EXP(q * t->ln10) - t->f_floor);
-    if (m->limb_darkening != OI_LIMB_DARKENED) f = clamp01(f + (frac - frac_ld));
+    f = table_fraction(t, iu, it, &i, &j, &fu, &ft);
+    if (m->limb_darkening != OI_LIMB_DARKENED) {
+        /* the uniform disc: the table read again at the shifted point
+         * (Note 2); the direction stays the limb-darkened disc's */
+        oi_real ds = a * uniform_shift(f);
+        if (ds != (oi_real)0) {
+            oi_real iu2, it2, fu2, ft2;
+            int i2, j2;
+            f = table_index(t, z, rho + ds, rc, a, &iu2, &it2) < 0
+                    ? (oi_real)0
+                    : table_fraction(t, iu2, it2, &i2, &j2, &fu2, &ft2);
+        }
+    }
     *fraction_atm = f;
     if (dir != NULL && f > (oi_real)0 && rho > (oi_real)0)
         tilt(t->psi_min_rad + t->psi_scale_rad * oi__bilinear_u16(t->psi, t->nt, i, j, fu, ft),

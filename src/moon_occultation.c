@@ -145,7 +145,8 @@ int oi__moon_shadow(const oi_real sun_km[3], const oi_real moon_km[3],
 
 /*
  * Fraction of the Moon's disc, seen from the point, that the Earth's solid
- * body does not hide (the disc taken as uniform). u_moon: unit vector from
+ * body does not hide and, with the atmosphere on, whose light the air along
+ * the grazing lines of sight lets through (the disc taken as uniform). u_moon: unit vector from
  * the point to the Moon, dm its distance (> moon radius). 1 when the Earth's
  * centre is farther than the Moon's (the Moon in front), 0 when the Earth's
  * disc covers the Moon's.
@@ -153,30 +154,40 @@ int oi__moon_shadow(const oi_real sun_km[3], const oi_real moon_km[3],
 oi_real oi__moon_disc_visible(const oi_real point_km[3], const oi_real u_moon[3], oi_real dm,
                               const oi_model *m)
 {
-    oi_real anti[3], dp, re, rm, frac;
+    oi_real anti[3], dp, re, rm, sep, frac;
     dp = oi__norm_bounded(point_km);
     if (dp >= dm) return (oi_real)1;
     anti[0] = -point_km[0] / dp;
     anti[1] = -point_km[1] / dp;
     anti[2] = -point_km[2] / dp;
     rm = apparent_radius(m->moon_radius_km, dm);
+    sep = oi__angle_unit(u_moon, anti);
 #ifndef OI_NO_OBLATE
     if (m->earth_shape == OI_EARTH_WGS84) {
         /* the ellipsoid: its silhouette's radius towards the Moon decides
          * the certain cases (a hundredth of the Moon's radius to spare), the
          * exact fraction behind it the others (src/oblate.c) */
-        const oi_real sep = oi__angle_unit(u_moon, anti), margin = OI_R(0.01) * rm;
+        const oi_real margin = OI_R(0.01) * rm;
         re = oi__oblate_radius_towards(point_km, m->earth_radius_km, u_moon);
-        if (sep >= re + rm + margin) return (oi_real)1;
-        if (sep <= re - rm - margin) return (oi_real)0;
-        if (rm <= OI_R(0.5))
-            return oi__oblate_visible(u_moon, rm, point_km, m->earth_radius_km, NULL, (oi_real)0);
-        (void)oi__disc_fractions(rm, re, sep, &frac, NULL);
-        return frac;
-    }
+        if (sep >= re + rm + margin)
+            frac = (oi_real)1;
+        else if (sep <= re - rm - margin)
+            frac = (oi_real)0;
+        else if (rm <= OI_R(0.5))
+            frac = oi__oblate_visible(u_moon, rm, point_km, m->earth_radius_km, NULL, (oi_real)0);
+        else
+            (void)oi__disc_fractions(rm, re, sep, &frac, NULL);
+    } else
 #endif
-    re = apparent_radius(m->earth_radius_km, dp);
-    (void)oi__disc_fractions(rm, re, oi__angle_unit(u_moon, anti), &frac, NULL);
+    {
+        re = apparent_radius(m->earth_radius_km, dp);
+        (void)oi__disc_fractions(rm, re, sep, &frac, NULL);
+    }
+#ifndef OI_NO_ATMOSPHERE
+    /* the air along the grazing lines of sight (src/atmosphere_moonlight.c;
+     * with the ellipsoid, about its silhouette's radius towards the Moon) */
+    if (!m->no_atmosphere) frac = oi__atm_moon_visible(dp, re, rm, sep, frac, m->earth_radius_km);
+#endif
     return frac;
 }
 

@@ -281,6 +281,15 @@ int oi__moon_shadow(const oi_real sun_km[3], const oi_real moon_km[3],
  * (src/moon_occultation.c). */
 oi_real oi__moon_disc_visible(const oi_real point_km[3], const oi_real u_moon[3], oi_real dm,
                               const oi_model *m);
+
+#ifndef OI_NO_ATMOSPHERE
+/* The fraction of the Moon's disc light (apparent radius rm, sep from the
+ * Earth's centre of apparent radius re, seen from dp km) through the
+ * atmosphere near the limb, in [0, solid] (solid: the solid Earth's
+ * visible fraction); src/atmosphere_moonlight.c. */
+oi_real oi__atm_moon_visible(oi_real dp, oi_real re, oi_real rm, oi_real sep, oi_real solid,
+                             oi_real r_e);
+#endif
 #endif
 
 #ifndef OI_NO_LIMB_DARKENING

@@ -41,9 +41,14 @@ Extinction (V band)
   quiet stratospheric background tau = 0.005 at 550 nm in a Gaussian layer at
   20 km (1-sigma 4 km), Angstrom exponent 1.5 (order of magnitude of SAGE II
   background values, e.g. Thomason et al. 2008, ACP 8, 983).
-* Clouds: opaque below CLOUD_TOP_KM = 10 km: a ray whose lowest
-  point lies below it is absorbed. Seed mode: no extinction, no clouds; only
-  the solid Earth blocks.
+* Clouds: a ray whose lowest point lies below CLOUD_TOP_KM = 10 km passes
+  with 1 - CLOUD_FRACTION of its clear-sky transmission, CLOUD_FRACTION =
+  0.68 the global cloud amount of the satellite climatologies (Stubenrauch
+  et al. 2013, Bull. Amer. Meteor. Soc. 94, 1031: 0.68 +- 0.03), read as
+  the chance that a grazing path meets a cloud near its lowest point; 10 km
+  the top of the tropospheric cloud field (tops 5-15 km, under the
+  tropopause). cloud_fraction = 1 is an opaque deck. Seed mode: no
+  extinction, no clouds; only the solid Earth blocks.
 
 Band
 ----
@@ -62,7 +67,8 @@ import numpy as np
 
 from ..common.constants import R_EARTH_KM
 TOP_KM = 100.0              # top of the model atmosphere (km)
-CLOUD_TOP_KM = 10.0         # opaque cloud layer below this altitude (km)
+CLOUD_TOP_KM = 10.0         # top of the cloud layer (km)
+CLOUD_FRACTION = 0.68       # fraction of the rays below the top that the clouds stop (see above)
 
 # --- 1976 U.S. Standard Atmosphere constants (NOAA-S/T 76-1562, 1976)
 _G0 = 9.80665               # m s^-2
@@ -185,7 +191,9 @@ class Profile:
 
     kind: "us1976" or "exponential"; n0 and scale_km for the exponential one.
     extinction: False gives the seed mode (refraction only, the solid Earth the
-    only obstacle); cloud_top_km: opaque below this (ignored in seed mode).
+    only obstacle); cloud_top_km, cloud_fraction: the clouds stop that
+    fraction of the rays whose lowest point is below the top (ignored in
+    seed mode).
     Other fields: the stated loads (see module doc).
     """
 
@@ -196,6 +204,7 @@ class Profile:
     earth_radius_km: float = R_EARTH_KM
     extinction: bool = True
     cloud_top_km: float = CLOUD_TOP_KM
+    cloud_fraction: float = CLOUD_FRACTION
     ozone_du: float = 300.0
     ozone_peak_km: float = 22.0
     ozone_sigma_km: float = 6.4

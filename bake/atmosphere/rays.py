@@ -128,7 +128,9 @@ def band_transmission(profile: ap.Profile, columns):
 def make_rays(profile: ap.Profile, dh_km: float = 0.01, nodes: int = 24) -> Rays:
     """Rays from the lowest unblocked altitude (cloud top, or the ground in
     seed mode) to the top, every dh_km of lowest altitude."""
-    h_lo = profile.cloud_top_km if profile.extinction else 0.0
+    # opaque clouds (cloud_fraction 1) stop every ray below their top; partial
+    # ones let the rays down to the ground through with 1 - cloud_fraction
+    h_lo = profile.cloud_top_km if profile.extinction and profile.cloud_fraction >= 1.0 else 0.0
     n = int(round((profile.top_km - h_lo) / dh_km))
     h0 = np.linspace(h_lo, profile.top_km, n + 1)
     b, alpha, cols = np.empty(0), np.empty(0), np.empty((4, 0))
@@ -139,8 +141,17 @@ def make_rays(profile: ap.Profile, dh_km: float = 0.01, nodes: int = 24) -> Rays
     alpha = np.concatenate([p[1] for p in parts])
     cols = np.concatenate([p[2] for p in parts], axis=1)
     alpha[-1] = 0.0  # the ray at the top is not bent (its integral is empty)
-    T = band_transmission(profile, cols)
+    T = band_transmission(profile, cols) * cloud_transmission(profile, h0)
     return Rays(profile, h0, b, alpha, cols, T, profile.earth_radius_km)
+
+
+def cloud_transmission(profile: ap.Profile, h0):
+    """Fraction of the rays of lowest altitude h0 (km) that pass the clouds:
+    1 - cloud_fraction below cloud_top_km, 1 above (and in seed mode)."""
+    h0 = np.asarray(h0, dtype=float)
+    if not profile.extinction:
+        return np.ones_like(h0)
+    return np.where(h0 < profile.cloud_top_km, 1.0 - profile.cloud_fraction, 1.0)
 
 
 # ---------------------------------------------------------------- shells (seed model)

@@ -95,7 +95,7 @@ def table(uq, up, scales, alpha_c, h_c, err, profile: ap.Profile, alpha_c_comput
         ("e_mid", e_mid), ("c_iu", c_iu), ("ln10", ln10)]
     ints = [("nz", NZ), ("nt", NT), ("na", NA), ("nb", NB)]
     prof = {k: getattr(profile, k) for k in (
-        "kind", "n0", "top_km", "extinction", "cloud_top_km", "ozone_du",
+        "kind", "n0", "top_km", "extinction", "cloud_top_km", "cloud_fraction", "ozone_du",
         "aer_trop_tau", "aer_strat_tau")}
     params = {k: CFG[k] for k in sorted(CFG) if k not in ("name", "description")}
     params["profile"] = prof
@@ -108,7 +108,9 @@ def table(uq, up, scales, alpha_c, h_c, err, profile: ap.Profile, alpha_c_comput
         f"  top {profile.top_km:g} km; extinction {'on' if profile.extinction else 'off'}: Rayleigh (Bodhaine 1999),",
         f"  ozone {profile.ozone_du:g} DU (Chappuis), aerosol tau {profile.aer_trop_tau:g} (trop.) +"
         f" {profile.aer_strat_tau:g} (strat.) at 550 nm;",
-        f"  clouds opaque below {profile.cloud_top_km:g} km; V band (Bessell 1990) x 5772 K black body;",
+        f"  clouds below {profile.cloud_top_km:g} km stop a fraction {profile.cloud_fraction:g} of the rays"
+        " (global cloud amount, Stubenrauch et al. 2013);",
+        "  V band (Bessell 1990) x 5772 K black body;",
         "  solar disc: Neckel & Labs (1994) limb darkening at 559.95 nm.",
         f"Grid: z = {Z_MIN:g} .. {Z_MAX:g} km behind the Earth's centre, {NZ} rows log-spaced;",
         f"  along rho {NT} nodes: {NA} uniform in a blend ({1 - W_RHO:g} : {W_RHO:g}) of the model ray altitude",

@@ -11,7 +11,8 @@ the shadow:
   along rho (distance from the axis), a window between
         rc     = R (1 + z/d)          the geometric shadow's radius,
         a      = z R_sun / d          the solar disc's radius there,
-        rho_lo = M(v_lo), M(v_lo) = max(0, M(h_c) - 1.2 a): below it no
+        rho_lo = M(v_lo), M(v_lo) = max(0, M(h_c) - 1.2 a) (v_lo in [h_c - 60,
+                 h_c], or up to V_MID where the target is the axis): below it no
                  unblocked refracted ray arrives and F = 0 exactly,
         rho_hi = rc + a + top: above it the geometric fraction (1),
       with M(v) = rc + v - z alpha_c exp(-(v - h_c) / H_A) the image radius
@@ -105,8 +106,13 @@ class Window:
         self.rc = R * (1.0 + z / d)
         self.a = z * SUN_RADIUS_KM / d
         self.rho_hi = self.rc + self.a + top
-        target = max(0.0, _m(h_c, z, self.rc, alpha_c, h_c) - 1.2 * self.a)
-        self.v_lo = _solve_v(target, z, self.rc, alpha_c, h_c, h_c - 60.0, h_c)
+        target = _m(h_c, z, self.rc, alpha_c, h_c) - 1.2 * self.a
+        # the window starts at the axis where the lowest ray's image has
+        # crossed it (target <= 0): then v_lo, the ray landing on the axis,
+        # lies above h_c
+        v_top = h_c if target > 0.0 else V_MID
+        target = max(0.0, target)
+        self.v_lo = _solve_v(target, z, self.rc, alpha_c, h_c, h_c - 60.0, v_top)
         self.rho_lo = _m(self.v_lo, z, self.rc, alpha_c, h_c)
         self.rho_mid = _m(V_MID, z, self.rc, alpha_c, h_c)
 

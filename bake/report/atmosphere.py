@@ -110,7 +110,7 @@ def section(outdir) -> str:
     z_moon = 384400.0
     dm = {}
     import dataclasses
-    rays_clear = ar.make_rays(dataclasses.replace(prof, cloud_top_km=0.0), dh_km=0.02)
+    rays_clear = ar.make_rays(dataclasses.replace(prof, cloud_fraction=0.0), dh_km=0.02)
     for name, rr in (("clear air, clouds below 10 km", rays), ("refraction only (seed mode)", rays_seed),
                      ("no clouds", rays_clear)):
         vals = [_moon_disc_fraction(rr, z_moon, rc) for rc in (0.0, 2000.0)]
@@ -118,7 +118,7 @@ def section(outdir) -> str:
     def fmt(v):
         return "dark (no unblocked ray)" if not np.isfinite(v) else f"{v:.1f}"
     out.append(f"| totally eclipsed Moon vs full Moon, central / Moon centre 2000 km off the axis "
-               f"(clouds opaque below 10 km) | {fmt(dm['clear air, clouds below 10 km'][0])} / "
+               f"(clouds stopping {prof.cloud_fraction:g} of the rays below {prof.cloud_top_km:g} km) | {fmt(dm['clear air, clouds below 10 km'][0])} / "
                f"{fmt(dm['clear air, clouds below 10 km'][1])} mag fainter | 9-12 mag fainter (clear air; "
                "darker after volcanic eruptions) | docs/physics.md; Link 1969; Mallama 2022, arXiv:2203.05513 |")
     out.append(f"| same, clear air without the cloud layer (extinction down to the ground) | "

@@ -9,7 +9,7 @@
  * limb-darkened disc: independent of the table) and the Python mirror of the
  * table lookup. The C lookup must equal the mirror to rounding, and the
  * reference within the table's measured error (tables/oi_atm_vband.json:
- * max |dF| 3.0e-3 at 300 random off-grid points); the tolerance below is that
+ * max |dF| 6.3e-3 at 300 random off-grid points); the tolerance below is that
  * bound rounded up, not tuned to pass.
  *
  * The runtime finds the table's ray-altitude coordinate by Halley iteration
@@ -74,7 +74,7 @@ int oi__atm_coords(const oi_atm_table *t, oi_real z, oi_real rho, oi_real d, oi_
 #endif
 #endif
 #ifndef TOL_REFERENCE
-#define TOL_REFERENCE 4.0e-3  /* the table's measured maximum error (3.0e-3), rounded up */
+#define TOL_REFERENCE 7.0e-3  /* the table's measured maximum error (6.3e-3), rounded up */
 #endif
 
 static int close_to(double want, double got, double abs_tol, const char *what, int i)
@@ -187,18 +187,127 @@ static void test_out_of_table_warns(void **state)
     assert_true(f == OI_R(0.2));
 }
 
-/* Uniform disc: the geometric difference frac - frac_ld is added. */
-static void test_uniform_disc_offset(void **state)
+/* Uniform disc: the table is read at a point moved along rho (within 4.2 % of
+ * the disc's image radius), not offset by the geometric difference: at a
+ * point where the direct rays are blocked the geometric frac - frac_ld
+ * passed in does not change the result. */
+static void test_uniform_disc_not_offset(void **state)
 {
     oi_model m = ld_model();
     const ref_atm *c = &ref_atm_cases[1];
-    oi_real sun[3], pt[3], f_ld, f_u;
+    oi_real sun[3], pt[3], f_a, f_b;
     (void)state;
     load(c, sun, pt);
-    assert_int_equal(oi__atm_fraction(sun, pt, &m, OI_R(0.5), OI_R(0.4), &f_ld, NULL), OI_OK);
     m.limb_darkening = OI_LIMB_UNIFORM;
-    assert_int_equal(oi__atm_fraction(sun, pt, &m, OI_R(0.5), OI_R(0.4), &f_u, NULL), OI_OK);
-    assert_true(close_to((double)f_ld + 0.1, (double)f_u, 1e-6, "uniform offset", 1));
+    assert_int_equal(oi__atm_fraction(sun, pt, &m, OI_R(0.5), OI_R(0.4), &f_a, NULL), OI_OK);
+    assert_int_equal(oi__atm_fraction(sun, pt, &m, OI_R(0.3), OI_R(0.4), &f_b, NULL), OI_OK);
+    assert_true(f_a == f_b);
+    assert_true(close_to(c->f_lut, (double)f_a, 0.05, "uniform near the disc's", 1));
+}
+
+/* The uniform disc against its own ray reference (the baker's ray
+ * integral with a uniform disc, independent of the table and of the shift):
+ * within the table's error (TOL_REFERENCE) plus TOL_UNIFORM_MODEL for the
+ * shift's model (straight-edge fit 7e-4; the equivalent edge of a curved,
+ * refracting penumbra): measured 5.1e-3 in all over the 48 cases against
+ * the table's own 6.3e-3 (docs/atmosphere.md). */
+#ifndef TOL_UNIFORM_MODEL
+#define TOL_UNIFORM_MODEL 4.0e-3
+#endif
+static void test_uniform_disc_against_reference(void **state)
+{
+    oi_model m;
+    int i, bad = 0;
+    double worst = 0.0;
+    (void)state;
+    memset(&m, 0, sizeof m);
+    m.limb_darkening = OI_LIMB_UNIFORM;
+    for (i = 0; i < REF_ATM_N; ++i) {
+        const ref_atm *c = &ref_atm_cases[i];
+        oi_real sun[3], pt[3];
+        oi_shadow sh;
+        double e;
+        load(c, sun, pt);
+        assert_true(oi_sun_fraction(sun, pt, &m, &sh) >= 0);
+        e = fabs((double)sh.fraction_atm - c->f_ref_uniform);
+        if (e > worst) worst = e;
+        if (!close_to(c->f_ref_uniform, (double)sh.fraction_atm,
+                      TOL_REFERENCE + TOL_UNIFORM_MODEL, "uniform reference F", i))
+            bad++;
+    }
+    printf("uniform disc vs its ray reference: max |dF| %.3g over %d cases\n", worst, REF_ATM_N);
+    assert_int_equal(bad, 0);
+}
+
+/*
+ * Monotonic along passes: a circular orbit in the plane of the Sun (beta =
+ * 0) from the terminator to the anti-Sun axis, fraction_atm through the
+ * public API in both disc models, at 490 km, GPS (20,200 km) and GEO
+ * (35,786 km); beyond the Moon's focusing (rays crossing the axis, z > 3e5
+ * km) the fraction may rise towards the axis, so lunar distance is not here.
+ * Steps of ~0.05 km along the orbit; an increase going deeper counts as a
+ * fault above MONO_TOL (rounding of the lookup: float ~2e-6, double 1e-12).
+ */
+#ifdef OI_SINGLE_PRECISION
+#define MONO_TOL 4e-6
+#else
+#define MONO_TOL 1e-12
+#endif
+static void test_monotonic_along_passes(void **state)
+{
+    static const double alt_km[3] = {490.0, 20200.0, 35786.0};
+    int k, disc, bad = 0;
+    (void)state;
+    for (disc = 0; disc < 2; ++disc) {
+        for (k = 0; k < 3; ++k) {
+            const double r = 6378.137 + alt_km[k], step = 0.05 / r;
+            const double th0 = acos(6500.0 / r);    /* past the terminator, lit */
+            double prev = 2.0, worst = 0.0, th;
+            oi_model m;
+            int n = 0;
+            memset(&m, 0, sizeof m);
+            m.limb_darkening = disc ? OI_LIMB_DARKENED : OI_LIMB_UNIFORM;
+#ifdef OI_NO_LIMB_DARKENING
+            if (disc) continue;
+#endif
+            for (th = th0; th < 0.5 * 3.14159265358979 && n < 400000; th += step, ++n) {
+                /* the point at angle th beyond the terminator: z = r sin th
+                 * behind the Earth, rho = r cos th off the axis */
+                oi_real sun[3] = {(oi_real)1.495978707e8, (oi_real)0, (oi_real)0};
+                oi_real pt[3];
+                oi_shadow sh;
+                pt[0] = (oi_real)(-r * sin(th));
+                pt[1] = (oi_real)(r * cos(th));
+                pt[2] = (oi_real)0;
+                assert_true(oi_sun_fraction(sun, pt, &m, &sh) >= 0);
+                if ((double)sh.fraction_atm - prev > worst)
+                    worst = (double)sh.fraction_atm - prev;
+                prev = (double)sh.fraction_atm;
+                if (prev == 0.0) break;
+            }
+            {
+                /* the points 4 km below and above the Earth's radius */
+                oi_real sun[3] = {(oi_real)1.495978707e8, (oi_real)0, (oi_real)0};
+                oi_real lo[3], hi[3];
+                oi_shadow sl, su;
+                lo[0] = (oi_real)(-sqrt(r * r - 6374.137 * 6374.137));
+                lo[1] = (oi_real)6374.137;
+                hi[0] = (oi_real)(-sqrt(r * r - 6382.137 * 6382.137));
+                hi[1] = (oi_real)6382.137;
+                lo[2] = hi[2] = (oi_real)0;
+                assert_true(oi_sun_fraction(sun, lo, &m, &sl) >= 0);
+                assert_true(oi_sun_fraction(sun, hi, &m, &su) >= 0);
+                printf("pass %s disc, %.0f km: fraction_atm %.3g at R - 4 km, %.3g at R + 4 km\n",
+                       disc ? "limb-darkened" : "uniform", alt_km[k], (double)sl.fraction_atm,
+                       (double)su.fraction_atm);
+                if (!(sl.fraction_atm <= su.fraction_atm)) bad++;
+            }
+            printf("pass %s disc, %.0f km: largest rise going deeper %.3g (%d steps)\n",
+                   disc ? "limb-darkened" : "uniform", alt_km[k], worst, n);
+            if (worst > MONO_TOL) bad++;
+        }
+    }
+    assert_int_equal(bad, 0);
 }
 
 /* Through the public API: no_atmosphere gives the geometric fraction exactly,
@@ -270,8 +379,8 @@ static int ref_coords(double z, double rho, double d, double r_e, double r_s, do
     if (rho >= rho_hi) return 1;
     if (z < ATM_Z_MIN_KM || z > ATM_Z_MAX_KM) return 2;
     target = ref_image_radius(ATM_H_C_KM, z, rc) - 1.2 * a;
-    if (target < 0.0) target = 0.0;
-    v_lo = ref_solve_v(target, z, rc, ATM_H_C_KM - 60.0, ATM_H_C_KM);
+    v_lo = ref_solve_v(target > 0.0 ? target : 0.0, z, rc, ATM_H_C_KM - 60.0,
+                       target > 0.0 ? ATM_H_C_KM : ATM_V_MID_KM);
     rho_lo = ref_image_radius(v_lo, z, rc);
     if (rho < rho_lo) return -1;
     rho_mid = ref_image_radius(ATM_V_MID_KM, z, rc);
@@ -503,7 +612,9 @@ static void test_fraction_matches_bisection(void **state)
         assert_int_equal(st, region == 2 ? OI_WARN_TABLE_RANGE : OI_OK);
         if (fabs((double)f - f_r) > worst_f) worst_f = fabs((double)f - f_r);
         if (!close_to(f_r, (double)f, TOL_F_BISECT, "F vs bisection", n)) bad++;
-        if (region == 0 && f_r > 0.0) {
+        /* the direction where the table resolves light: F above the
+         * rounding of 10^q - f_floor at the floor (~1e-16) */
+        if (region == 0 && f_r > 1e-2 * ATM_F_FLOOR) {
             double dd = 0.0;
             lit_in_window++;
             for (k = 0; k < 3; ++k) {
@@ -511,7 +622,10 @@ static void test_fraction_matches_bisection(void **state)
                 if (e > dd) dd = e;
             }
             if (dd > worst_dir) worst_dir = dd;
-            if (!close_to(0.0, dd, TOL_DIR_BISECT, "dir vs bisection", n)) bad++;
+            if (!close_to(0.0, dd, TOL_DIR_BISECT, "dir vs bisection", n)) {
+                printf("  (z %.9g km, rho %.9g km, F %.3g)\n", z, rho, f_r);
+                bad++;
+            }
         }
     }
     printf("fraction vs bisection: %d lit points in the window, max |dF| %.3g (bound %.1g), "
@@ -554,10 +668,14 @@ static void test_derived_constants(void **state)
 #else
     const double rel = 4.5e-16; /* 2 DBL_EPSILON: exp/log of this libm vs the exact value */
 #endif
-    const double e_mid = exp(-(ATM_V_MID_KM - ATM_H_C_KM) / ATM_H_A_KM);
+    const double x_mid = (ATM_V_MID_KM - ATM_H_C_KM) / ATM_H_A_KM;
+    const double e_mid = exp(-x_mid);
+    /* the rounding of x_mid (half an ulp, relative x_mid DBL_EPSILON / 2)
+     * propagates into exp(-x_mid) as the same absolute error */
+    const double rel_e = rel + x_mid * 1.2e-16;
     const double c_iu = (double)(ATM_NZ - 1) / log(ATM_Z_MAX_KM / ATM_Z_MIN_KM);
     (void)state;
-    assert_true(close_to(e_mid, (double)ATM->e_mid, rel * e_mid, "e_mid", 0));
+    assert_true(close_to(e_mid, (double)ATM->e_mid, rel_e * e_mid, "e_mid", 0));
     assert_true(close_to(c_iu, (double)ATM->c_iu, rel * c_iu, "c_iu", 0));
     assert_true(close_to(log(10.0), (double)ATM->ln10, rel * log(10.0), "ln10", 0));
     assert_int_equal(ATM->format, OI_ATM_FORMAT);
@@ -695,7 +813,9 @@ int main(void)
         cmocka_unit_test(test_lit_and_front_side),
         cmocka_unit_test(test_deep_umbra_is_dark),
         cmocka_unit_test(test_out_of_table_warns),
-        cmocka_unit_test(test_uniform_disc_offset),
+        cmocka_unit_test(test_uniform_disc_not_offset),
+        cmocka_unit_test(test_monotonic_along_passes),
+        cmocka_unit_test(test_uniform_disc_against_reference),
         cmocka_unit_test(test_public_hook),
         cmocka_unit_test(test_coords_match_bisection),
         cmocka_unit_test(test_fraction_matches_bisection),

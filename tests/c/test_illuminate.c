@@ -251,16 +251,31 @@ static void test_reflected_flux_matches_phase_function(void **state)
     print_message("reflected flux vs oi_lambert_phase: worst relative difference %.3g\n", worst);
 }
 
+/* The Moon at the centre of the umbra: without the atmosphere dark; with
+ * it (partial clouds, docs/atmosphere.md) a central eclipse is dim red, not
+ * black: the local brightness near the umbra's centre is published as 13-16
+ * mag below sunlight (docs/atmosphere.md, "Eclipse observables"). */
 static void test_moon_in_umbra_is_dark(void **state)
 {
     oi_scene s = lit_scene();
+    oi_model none;
     oi_illum out;
     (void)state;
     set3(s.moon_km, -384400.0, 0, 0); /* exactly on the anti-solar axis */
     s.terms = OI_TERM_MOON;
-    assert_int_equal(oi_illuminate(&s, NULL, &out), OI_OK);
+    memset(&none, 0, sizeof none);
+    none.no_atmosphere = 1;
+    assert_int_equal(oi_illuminate(&s, &none, &out), OI_OK);
     assert_true(out.moon_sun_fraction == 0);
     assert_true(out.e_moon == 0);
+#ifndef OI_NO_ATMOSPHERE
+    assert_int_equal(oi_illuminate(&s, NULL, &out), OI_OK);
+    print_message("central eclipse: the Moon's sunlight %.3g (%.2f mag below)\n",
+                  (double)out.moon_sun_fraction, -2.5 * log10((double)out.moon_sun_fraction));
+    assert_true((double)out.moon_sun_fraction > pow(10.0, -0.4 * 16.0));
+    assert_true((double)out.moon_sun_fraction < pow(10.0, -0.4 * 13.0));
+    assert_true(out.e_moon > 0);
+#endif
 }
 #endif
 

@@ -224,3 +224,88 @@ def test_table_lookup_against_reference(rays_default):
         meta = json.load(f)
     err, _ = am.measure(rays_default, q, psi, alpha_c, h_c, n=40, seed=99)
     assert err["max_abs_error"] < 1.5 * meta["measured"]["max_abs_error"] + 1e-3
+
+
+def test_uniform_disc_shift_coefficients():
+    """src/atmosphere.c's shift coefficients are the fit of bake/atmosphere/disc_shift.py,
+    and the fit's straight-edge error is the documented 7.0e-4."""
+    import re
+    from bake.atmosphere import disc_shift
+    root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    with open(os.path.join(root, "src", "atmosphere.c")) as fh:
+        src = fh.read()
+    got = [float(re.search(r"#define OI_ATM_SHIFT_C%d OI_R\(([-0-9.e]+)\)" % k, src).group(1))
+           for k in range(3)]
+    want = disc_shift.coefficients()
+    assert got == list(want)
+    assert disc_shift.fit_error(want) < 7.5e-4
+    # the shift is zero at F = 0, 1/2, 1 and below 0.042 disc radii
+    f = np.linspace(0.0, 1.0, 1001)
+    s = disc_shift.sigma(f, want)
+    assert s[0] == 0.0 and s[-1] == 0.0 and abs(s[500]) < 1e-15
+    assert np.max(np.abs(s)) < 0.042
+
+
+def test_uniform_disc_shift_matches_edge_model():
+    """The straight-edge model itself against an independent brute-force 2-D count
+    of the limb-darkened disc's pixels behind the edge."""
+    from bake.atmosphere import disc_shift
+    n = 1201
+    g = (np.arange(n) + 0.5) / n * 2 - 1
+    X, Y = np.meshgrid(g, g)
+    r2 = X * X + Y * Y
+    inside = r2 < 1
+    mu = np.sqrt(np.clip(1 - r2, 0, 1))
+    intensity = np.where(inside, np.polynomial.polynomial.polyval(mu, ar.NL94_559), 0.0)
+    for x in (-0.7, -0.2, 0.4, 0.9):
+        u, w = disc_shift._edge_fractions([x])
+        vis = Y < x
+        assert abs(u[0] - np.sum(inside & vis) / np.sum(inside)) < 2e-3
+        assert abs(w[0] - np.sum(intensity * vis) / np.sum(intensity)) < 2e-3
+
+
+def test_eclipse_observables_against_published():
+    """The default atmosphere against published eclipse measurements
+    (bake/atmosphere/eclipse.py; docs/atmosphere.md, "Eclipse observables"):
+    local brightness near the umbra's centre 13-16 mag below sunlight (Link
+    1969); the umbra's enlargement +64 to +89 km (Danjon's and Chauvenet's
+    rules, Espenak & Meeus 2009); 2019-01-21 at mid-totality V = -2.04
+    (Schmude 2022) against the uneclipsed Moon's ~-12.9 at that distance,
+    10.8 mag, within the stated 1 mag; grazing bending 2 x 35.4' (Allen)
+    within 0.1 deg."""
+    from bake.atmosphere import eclipse
+    o = eclipse.observables()
+    assert 13.0 <= o["local_mag"][0] <= 16.0
+    e_km, _ = o["enlargement_km"]
+    assert 64.0 <= e_km <= 89.0
+    m2019 = dict((n, m) for n, _, m in o["eclipses"])["2019-01-21"]
+    assert abs(m2019 - 10.8) < 1.0
+    assert abs(o["grazing_bending_deg"] - 2 * 35.4 / 60) < 0.1
+    # the local brightness falls monotonically from the umbra's edge to its centre
+    assert all(a > b for a, b in zip(o["local_mag"], o["local_mag"][1:]))
+
+
+def test_moonlight_optical_depth_nodes():
+    """src/atmosphere_moonlight.c's optical depths are the ray reference's
+    (bake/atmosphere/moonlight.py) at the nodes, its clouds the profile's, and
+    its interpolation stays within 1e-3 of the reference's transmission midway
+    between the nodes."""
+    import re
+    from bake.atmosphere import moonlight
+    root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    with open(os.path.join(root, "src", "atmosphere_moonlight.c")) as fh:
+        src = fh.read()
+    body = src[src.index("ml_tau[ML_N] = {"):]
+    body = body[:body.index("};")]
+    got = np.array([float(v) for v in re.findall(r"OI_R\(([-0-9.e+]+)\)", body)])
+    _, want = moonlight.nodes()
+    assert got.shape == want.shape
+    np.testing.assert_allclose(got, want, rtol=1e-5)
+    p = ap.us1976()
+    assert abs(float(re.search(r"#define ML_CLOUD_PASS OI_R\(([0-9.]+)\)", src).group(1))
+               - (1 - p.cloud_fraction)) < 1e-12
+    assert float(re.search(r"#define ML_CLOUD_TOP_KM OI_R\(([0-9.]+)\)", src).group(1)) == p.cloud_top_km
+    h = np.arange(0.5, 99.6, 1.0)
+    t_ref = np.exp(-moonlight.tau_clear(h))
+    t_lut = np.exp(-moonlight.interpolate(h, got))
+    assert np.max(np.abs(t_lut - t_ref)) < 1e-3

@@ -56,8 +56,9 @@ def rows(rays, q, psi, alpha_c, h_c, n_per_z=6, seed=7):
             z = -float(pt @ s)
             rho = float(np.sqrt(max(pt @ pt - z * z, 0.0)))
             F, p = ar.fraction(rays, z, [rho], d_sun=d)
+            Fu, _ = ar.fraction(rays, z, [rho], d_sun=d, law=ar.UNIFORM, want_psi=False)
             Fl, pl, st = lookup(q, psi, alpha_c, h_c, z, rho, d)
-            out.append((sun, pt, F[0], p[0], Fl, pl))
+            out.append((sun, pt, F[0], p[0], Fl, pl, Fu[0]))
     return out
 
 
@@ -71,16 +72,17 @@ def text(rows_):
              " * (tests/ref/atmosphere.py); do not edit. Columns: sun_km[3], point_km[3], F_ref,",
              " * psi_ref (rad) from the deterministic ray reference (independent of the table),",
              " * F_lut, psi_lut from the Python mirror of the lookup on tables/oi_atm_vband.c;",
+             " * F_ref_uniform: the ray reference for the uniform solar disc;",
              " * %d and %d significant digits. */" % (REF_DIGITS, LUT_DIGITS),
              "#ifndef REF_ATMOSPHERE_H", "#define REF_ATMOSPHERE_H", "",
-             "typedef struct ref_atm { double sun[3], point[3], f_ref, psi_ref, f_lut, psi_lut; } ref_atm;",
+             "typedef struct ref_atm { double sun[3], point[3], f_ref, psi_ref, f_lut, psi_lut, f_ref_uniform; } ref_atm;",
              "#define REF_ATM_N %d" % len(rows_),
              "static const ref_atm ref_atm_cases[REF_ATM_N] = {"]
-    for sun, pt, F, p, Fl, pl in rows_:
-        lines.append("    {{%s}, {%s}, %s, %s, %s, %s}," % (
+    for sun, pt, F, p, Fl, pl, Fu in rows_:
+        lines.append("    {{%s}, {%s}, %s, %s, %s, %s, %s}," % (
             ", ".join("%.17g" % x for x in sun), ", ".join("%.17g" % x for x in pt),
             c_sig(F, REF_DIGITS), c_sig(_psi(p), REF_DIGITS), c_sig(Fl, LUT_DIGITS),
-            c_sig(_psi(pl), LUT_DIGITS)))
+            c_sig(_psi(pl), LUT_DIGITS), c_sig(Fu, REF_DIGITS)))
     lines += ["};", "", "#endif", ""]
     return "\n".join(lines)
 
