@@ -4,32 +4,38 @@
  * to it), shared by the sphere's moments and the facets' cubature. */
 #include "oi_internal.h"
 
+/* Below this sin(theta) the Sun-Earth-target plane is taken as undefined:
+ * the distribution is symmetric about the zenith to within a few sin(theta)
+ * (the lit columns' tan(theta) term), so any x normal to r_hat then errs by
+ * less than that, while the plane's normal, a cross product of two nearly
+ * equal unit vectors, has a direction known only to u / sin(theta). */
+#ifdef OI_SINGLE_PRECISION
+#define AXIS_SIN OI_R(1.0e-5)
+#else
+#define AXIS_SIN OI_R(1.0e-10)
+#endif
+
 /* oi__local_frame: r_hat, x and y of the frame at target_km for the Sun at
- * sun_km (both bounded, nonzero); along: s_hat . r_hat, the cosine of
- * theta; s_hat the unit vector to the Sun. */
+ * sun_km (both bounded, nonzero), and s_hat the unit vector to the Sun; the
+ * three axes orthonormal to rounding at every theta. */
 void oi__local_frame(const oi_real target_km[3], const oi_real sun_km[3], oi_real r_hat[3],
                      oi_real s_hat[3], oi_real x[3], oi_real y[3])
 {
-    oi_real along;
-    int i;
+    oi_real n[3];
     (void)oi__unit_bounded(target_km, r_hat);
     (void)oi__unit_bounded(sun_km, s_hat);
-    along = oi__dot(s_hat, r_hat);
-    for (i = 0; i < 3; i++) x[i] = s_hat[i] - along * r_hat[i];
-    /* near the Sun-Earth axis x is rounding noise that need not be normal to
-     * r_hat: orthogonalised once more after scaling (the distribution is then
-     * symmetric about the zenith to within sin(theta), so any normal x does) */
-    if (oi__unit_bounded(x, x) > (oi_real)0) {
-        const oi_real dr = oi__dot(x, r_hat);
-        for (i = 0; i < 3; i++) x[i] -= dr * r_hat[i];
-    }
-    if (oi__unit_bounded(x, x) == (oi_real)0) {
+    /* the plane's normal r x s; x = (r x s) x r is s - (s . r) r, normal to
+     * r_hat to rounding whatever the normal's own error */
+    oi__cross(r_hat, s_hat, n);
+    if (oi__norm_bounded(n) > AXIS_SIN && oi__unit_bounded(n, n) > (oi_real)0) {
+        oi__cross(n, r_hat, x);
+    } else {
         /* on the Sun-Earth axis the distribution is symmetric about the
          * zenith: any x normal to it */
         const oi_real e[3] = {(oi_real)1, (oi_real)0, (oi_real)0};
         const oi_real f[3] = {(oi_real)0, (oi_real)1, (oi_real)0};
         oi__cross(r_hat, (r_hat[0] * r_hat[0] < OI_R(0.5)) ? e : f, x);
-        (void)oi__unit_bounded(x, x);
     }
+    (void)oi__unit_bounded(x, x);
     oi__cross(r_hat, x, y);
 }

@@ -138,6 +138,51 @@ static void test_illuminate_matches(void **state)
     check_rel(f * scale, (double)out.flux_earth, REL_TOL * 100, "flux_earth");
 }
 
+/* On the Sun-Earth axis the Sun-Earth-target plane is undefined: the sphere's
+ * flux towards a horizontal observer must not depend on how the scene is
+ * turned (the frame once degenerated there: x along the zenith, o = 0), and
+ * equals oi_earthshine_sphere's at theta = 0 (its light is symmetric about
+ * the zenith, so any horizontal direction does). */
+static void test_sun_earth_axis_frame(void **state)
+{
+    static const double turn[3][3][3] = {
+        {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}},
+        {{-1, 0, 0}, {0, 2.220446049250313e-16, 1}, {0, 1, 2.220446049250313e-16}},
+        {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}}};
+    const double sun[3] = {1.0578e8, 0, 1.0578e8}, tgt[3] = {11581.0917359, 0, 11581.0917359};
+    const double obs[3] = {11581.0917359, 1.0, 11581.0917359};
+    double flux[3], ref, scale, r = sqrt(2.0) * 11581.0917359;
+    int k, i, j, st;
+    (void)state;
+    for (k = 0; k < 3; k++) {
+        oi_scene s;
+        oi_illum out;
+        oi_scene_defaults(&s);
+        for (i = 0; i < 3; i++) {
+            double a = 0, b = 0, c = 0;
+            for (j = 0; j < 3; j++) {
+                a += turn[k][i][j] * sun[j];
+                b += turn[k][i][j] * tgt[j];
+                c += turn[k][i][j] * obs[j];
+            }
+            s.sun_km[i] = (oi_real)a;
+            s.target_km[i] = (oi_real)b;
+            s.observer_km[i] = (oi_real)c;
+        }
+        s.has_observer = 1;
+        s.terms = OI_TERM_EARTH;
+        assert_true(oi_illuminate(&s, NULL, &out) >= 0);
+        flux[k] = (double)out.flux_earth;
+        assert_true(flux[k] > 0.0);
+    }
+    check_rel(flux[1], flux[0], REL_TOL * 100, "turned scene");
+    check_rel(flux[2], flux[0], REL_TOL * 100, "turned scene");
+    if (!HAVE_MOMENTS) return;
+    ref = sphere(0.0, r - R, 1.0, 0.0, 0.0, 0, &st);
+    scale = 0.3 * 1361.0 * pow(149597870.7 / (sqrt(2.0) * 1.0578e8), 2) * 0.2 * pow(1.0 / 1e3, 2);
+    check_rel(ref * scale, flux[0], REL_TOL * 1000, "oi_earthshine_sphere at theta = 0");
+}
+
 static void test_hostile(void **state)
 {
     oi_real o[3], f;
@@ -189,6 +234,7 @@ int main(void)
         cmocka_unit_test(test_subsolar_zenith_observer),
         cmocka_unit_test(test_mirror_symmetry),
         cmocka_unit_test(test_illuminate_matches),
+        cmocka_unit_test(test_sun_earth_axis_frame),
         cmocka_unit_test(test_hostile),
         cmocka_unit_test(test_default_table),
     };
