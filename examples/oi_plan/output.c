@@ -6,7 +6,7 @@
 
 const char plan_csv_header[] =
     "id,status,sun_fraction,sun_fraction_atm,e_sun,e_earth,e_moon,earth_theta_deg,"
-    "earth_h_km,flux_obs,mag_v,exposure_s,gain,snr,flags";
+    "earth_h_km,flux_obs,mag_v,exposure_s,gain,snr,flags,e_sky";
 
 static const double RAD_TO_DEG = 180.0 / 3.14159265358979323846;
 
@@ -95,6 +95,7 @@ void out_csv_row(FILE *fp, const char *id, const plan_row *row)
         out_flags(row->flags, flags, sizeof flags);
         fputs(flags, fp);
     }
+    put_num(fp, num, (double)il->e_sky);
     fputc('\n', fp);
 }
 

@@ -46,6 +46,7 @@ OI_MAG_MAX = 50.0
 OI_TERM_SUN = 1
 OI_TERM_EARTH = 2
 OI_TERM_MOON = 4
+OI_TERM_SKY = 8
 OI_TERM_ALL = OI_TERM_SUN | OI_TERM_EARTH | OI_TERM_MOON
 
 OI_MODEL_TSI_MIN = 1.0e-6
@@ -102,6 +103,8 @@ OI_TABLE_KIND_EARTHSHINE = 1
 OI_TABLE_KIND_ATMOSPHERE = 2
 OI_TABLE_KIND_EARTH_ANGULAR = 3
 OI_ANGULAR_FORMAT = 1
+OI_TABLE_KIND_SKYLIGHT = 4
+OI_SKY_FORMAT = 1
 OI_ANGULAR_L_MAX = 8
 
 # ---- include/oi_constants.h (defaults; oi_model overrides each)
@@ -164,6 +167,16 @@ class oi_earth_angular_table(ctypes.Structure):
     ]
 
 
+class oi_sky_table(ctypes.Structure):
+    _fields_ = [
+        ("format", c_int), ("kind", c_int), ("info", POINTER(oi_table_info)),
+        ("n_theta", c_int), ("n_alt", c_int),
+        ("w_min", real), ("w_max", real), ("earth_radius_km", real), ("top_km", real),
+        ("floor_km", real), ("theta_scale", real), ("w_scale", real),
+        ("q", POINTER(ctypes.c_float)), ("psi", POINTER(ctypes.c_float)),
+    ]
+
+
 # ---- include/orbillum.h structures
 class oi_model(ctypes.Structure):
     _fields_ = [
@@ -172,6 +185,7 @@ class oi_model(ctypes.Structure):
         ("earth_model", c_int), ("moon_model", c_int), ("limb_darkening", c_int),
         ("no_atmosphere", c_int), ("earth_table", POINTER(oi_earth_table)),
         ("atm_table", POINTER(oi_atm_table)), ("earth_reflection", c_int),
+        ("sky_table", POINTER(oi_sky_table)),
     ]
 
 
@@ -204,6 +218,7 @@ class oi_illum(ctypes.Structure):
         ("flux_sun", real), ("flux_earth", real), ("flux_moon", real),
         ("flux_obs", real), ("mag_v", real), ("range_km", real),
         ("sun_moon_hidden", real), ("moon_disc_visible", real),
+        ("e_sky", real), ("dir_sky", real * 3), ("phase_sky", real), ("flux_sky", real),
     ]
 
 
@@ -240,7 +255,8 @@ class oi_exposure(ctypes.Structure):
     ]
 
 
-STRUCTS = (oi_table_info, oi_earth_table, oi_atm_table, oi_earth_angular_table, oi_model,
+STRUCTS = (oi_table_info, oi_earth_table, oi_atm_table, oi_earth_angular_table, oi_sky_table,
+           oi_model,
            oi_shadow, oi_scene, oi_illum, oi_camera, oi_expose_goal, oi_expose_in, oi_exposure)
 
 _R3 = POINTER(real)
@@ -257,6 +273,8 @@ _PROTOS = {
     "oi_earth_table_default": (POINTER(oi_earth_table), []),
     "oi_atm_table_default": (POINTER(oi_atm_table), []),
     "oi_earth_angular_default": (POINTER(oi_earth_angular_table), []),
+    "oi_sky_table_default": (POINTER(oi_sky_table), []),
+    "oi_skylight": (c_int, [real, real, c_void_p, POINTER(real), POINTER(real)]),
     "oi_earthshine_sphere": (c_int, [real, real, _R3, c_void_p, POINTER(real)]),
     "oi_moon_phase_law": (real, [real]),
     "oi_zodiacal_radiance": (real, [real, real]),
