@@ -211,10 +211,13 @@ typedef struct oi_earth_angular_table {
  *   w      = acos(R / r) (R = earth_radius_km of the bake), n_alt rows
  *          uniform on [w_min, w_max]; w_min: the top of the atmosphere
  *          (top_km), w_max = pi/2: infinity.
- * Stored (float, row-major q[j n_theta + i], j the row): q = (E_sky / E_sun)
- * / x^2 (x = R / r; finite at infinity) and psi (0 where nothing is lit).
+ * Stored (float, row-major v[j n_theta + i], j the row): v = ln(q + q_floor),
+ * q = (E_sky / E_sun) / x^2 (x = R / r; finite at infinity), and psi (0 where
+ * nothing is lit). The logarithm: E_sky falls by orders of magnitude over a
+ * few degrees past the shadow edge, which a cubic follows in its logarithm.
  * Lookup: Catmull-Rom in theta (ghost nodes mirrored about theta = 0 and pi:
- * q even, psi odd) and in w (ghosts extrapolated linearly), q clamped at 0.
+ * v even, psi odd) and in w (ghosts extrapolated linearly), q = exp(v) -
+ * q_floor clamped at 0.
  * Lines of sight that end on the sunlit cloud deck (floor_km) are not in
  * E_sky: their light is the Earth's albedo, in earthshine.
  * theta_scale = (n_theta - 1) / pi, w_scale = (n_alt - 1) / (w_max - w_min),
@@ -233,7 +236,8 @@ typedef struct oi_sky_table {
     oi_real floor_km;      /* opaque floor (cloud deck) of the bake (km) */
     oi_real theta_scale;   /* (n_theta - 1) / pi */
     oi_real w_scale;       /* (n_alt - 1) / (w_max - w_min) */
-    const float *q;        /* n_alt n_theta values of (E_sky / E_sun) / x^2 */
+    oi_real q_floor;       /* added to q before the logarithm, > 0 */
+    const float *v;        /* n_alt n_theta values of ln(q + q_floor) */
     const float *psi;      /* n_alt n_theta values (rad) */
 } oi_sky_table;
 

@@ -209,7 +209,8 @@ const oi_earth_angular_table *oi_earth_angular_default(void);
  * adds nothing). Its own translation unit, as the others; trusted. A
  * caller's sky_table is checked by every call that uses it: format
  * OI_SKY_FORMAT, kind OI_TABLE_KIND_SKYLIGHT, n_theta and n_alt in
- * [4, 4096], q and psi not NULL, 0 < w_min < w_max <= pi/2, earth_radius_km
+ * [4, 4096], v and psi not NULL, q_floor in (0, 1], 0 < w_min < w_max <= pi/2,
+ * earth_radius_km
  * in [OI_MODEL_RADIUS_MIN, OI_MODEL_RADIUS_MAX], top_km in (0, 1000],
  * theta_scale and w_scale within 1e-3 relative of their definitions;
  * otherwise OI_ERR_MODEL with the outputs zeroed. */
@@ -792,11 +793,11 @@ int oi_expose(const oi_camera *camera, const oi_expose_in *in,
  *      0 when that point is unlit or the ray misses the Earth (dark sky).
  *      The background is physical and does not depend on scene->terms,
  *      except for the scattered sunlight's share (3b).
- *   3b. With OI_TERM_SKY in scene->terms, where the boresight passes below
- *      the top of the atmosphere and does not end on the sunlit Earth (nor
- *      on a Moon in front, Note 8), the background adds the atmosphere's
- *      mean radiance seen from the observer, e_sky(observer) / Omega (Omega
- *      the solid angle of the atmosphere's disc; an estimate, see
+ *   3b. With OI_TERM_SKY in scene->terms, where the boresight crosses the
+ *      limb (it passes between the sky table's cloud floor and the top of the
+ *      atmosphere; not on a Moon in front, Note 8), the background adds the
+ *      limb's mean radiance seen from the observer, e_sky(observer) / Omega
+ *      (Omega the solid angle of that ring; an estimate, see
  *      docs/skylight.md); the resolved bound (Note 5) counts e_sky.
  *   4. OI_FLAG_OCCULTED when the Earth lies between the observer and the
  *      target: the target's flux is then taken as 0 (TOO_FAINT follows).

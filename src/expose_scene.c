@@ -278,34 +278,39 @@ static OI_NOINLINE oi_real zodiacal_background(const oi_scene *scene, const scen
 
 #ifndef OI_NO_SKYLIGHT
 /* The scattered sunlight's share of the background (Note 3b, OI_TERM_SKY):
- * where the boresight passes below the top of the atmosphere and does not
- * end on the sunlit Earth, the atmosphere's mean radiance seen from the
- * observer, e_sky(observer) / Omega, Omega the solid angle of the top
- * sphere's disc (an estimate: the limb is brighter and the disc's centre
- * fainter, docs/skylight.md). 0 for an observer inside the atmosphere. */
+ * where the boresight crosses the limb (its closest approach to the Earth's
+ * centre ahead, between the sky table's floor and the top of the
+ * atmosphere), the mean radiance of the limb seen from the observer,
+ * e_sky(observer) / Omega, Omega the solid angle of the ring between the
+ * floor's disc and the top's (an estimate: most of e_sky comes from the limb
+ * near the shadow; docs/skylight.md measures it). 0 for an observer inside
+ * the atmosphere or a boresight that misses the ring. */
 static OI_NOINLINE oi_real sky_background(const oi_scene *scene, const oi_model *model,
                                           const scene_geom *g)
 {
     oi_model m;
     const oi_sky_table *t;
-    oi_real s_hat[3], o_hat[3], c[3], top, ob, theta, e, psi, sin_a, cos_a, d_sun;
+    oi_real s_hat[3], o_hat[3], c[3], top, fl, ob, b2, theta, e, psi, st, sf, ct, cf, d_sun;
     if (oi__model_resolve(model, &m) < 0) return 0;
     if (oi__sky_table_of(&m, &t) < 0 || t == NULL) return 0;
     top = m.earth_radius_km + t->top_km;
-    if (!(g->r_obs > top)) return 0;
+    fl = m.earth_radius_km + t->floor_km;
+    if (!(g->r_obs > top) || !(fl < top)) return 0;
     ob = oi__dot(scene->observer_km, g->bh);
-    /* the ray's closest approach to the Earth's centre lies ahead, below the top */
-    if (!(ob < 0) || (g->r_obs - ob) * (g->r_obs + ob) >= top * top) return 0;
+    b2 = (g->r_obs - ob) * (g->r_obs + ob); /* squared closest approach (|ob| <= r_obs) */
+    if (!(ob < 0) || b2 >= top * top || b2 <= fl * fl) return 0;
     d_sun = oi__unit(scene->sun_km, s_hat);
     (void)oi__unit(scene->observer_km, o_hat);
     oi__cross(s_hat, o_hat, c);
     theta = OI_ATAN2(oi__norm(c), oi__dot(s_hat, o_hat));
     (void)oi__sky_lookup(t, theta, g->r_obs, &e, &psi);
-    sin_a = top / g->r_obs;
-    cos_a = OI_SQRT(((oi_real)1 - sin_a) * ((oi_real)1 + sin_a));
-    /* Omega = 2 pi (1 - cos a) = 2 pi sin^2 a / (1 + cos a), no cancellation */
-    return g->tsi * (g->au / d_sun) * (g->au / d_sun) * e * ((oi_real)1 + cos_a) /
-           (OI_R(2.0) * OI_PI_R * sin_a * sin_a);
+    st = top / g->r_obs;
+    sf = fl / g->r_obs;
+    ct = OI_SQRT(((oi_real)1 - st) * ((oi_real)1 + st));
+    cf = OI_SQRT(((oi_real)1 - sf) * ((oi_real)1 + sf));
+    /* Omega = 2 pi (cos a_f - cos a_t) = 2 pi (st^2 - sf^2) / (cf + ct) */
+    return g->tsi * (g->au / d_sun) * (g->au / d_sun) * e * (cf + ct) /
+           (OI_R(2.0) * OI_PI_R * (st - sf) * (st + sf));
 }
 #endif
 

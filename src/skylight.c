@@ -21,7 +21,8 @@ int oi__sky_table_valid(const oi_sky_table *t)
     if (t->n_theta < 4 || t->n_theta > SKY_NODES_MAX || t->n_alt < 4 ||
         t->n_alt > SKY_NODES_MAX)
         return 0;
-    if (t->q == NULL || t->psi == NULL) return 0;
+    if (t->v == NULL || t->psi == NULL) return 0;
+    if (!(t->q_floor > (oi_real)0 && t->q_floor <= (oi_real)1)) return 0;
     if (!(t->w_min > (oi_real)0 && t->w_min < t->w_max && t->w_max <= OI_HALF_PI_R))
         return 0;
     if (!(t->earth_radius_km >= (oi_real)OI_MODEL_RADIUS_MIN &&
@@ -33,7 +34,7 @@ int oi__sky_table_valid(const oi_sky_table *t)
 }
 
 /* Column k of row j of arr, with the ghost columns mirrored about theta = 0
- * and pi (q even, psi odd: sign -1). */
+ * and pi (v even, psi odd: sign -1). */
 static oi_real column(const float *arr, int n_theta, int j, int k, oi_real sign)
 {
     if (k < 0) return sign * (oi_real)arr[j * n_theta - k];
@@ -67,7 +68,7 @@ static oi_real interp2(const oi_sky_table *t, const float *arr, oi_real sign, in
 int oi__sky_lookup(const oi_sky_table *t, oi_real theta, oi_real r_km, oi_real *e_over_sun,
                    oi_real *psi)
 {
-    oi_real x, w, fw, ft, a, b, wt[4], ww[4], q;
+    oi_real x, w, fw, ft, a, b, wt[4], ww[4], v, q;
     int i, j, st = OI_OK;
     x = t->earth_radius_km / r_km;
     if (!(x < (oi_real)1)) x = (oi_real)1;
@@ -80,7 +81,9 @@ int oi__sky_lookup(const oi_sky_table *t, oi_real theta, oi_real r_km, oi_real *
     j = oi__cell_clamped(fw, t->n_alt, &b);
     oi__cr_weights(a, wt);
     oi__cr_weights(b, ww);
-    q = interp2(t, t->q, (oi_real)1, i, wt, j, ww);
+    v = interp2(t, t->v, (oi_real)1, i, wt, j, ww);
+    /* v is at most ln(1 + q_floor) for any q <= 1 node: no overflow */
+    q = OI_EXP(v) - t->q_floor;
     if (!(q > (oi_real)0)) q = (oi_real)0;
     *e_over_sun = q * x * x;
     *psi = q > (oi_real)0 ? interp2(t, t->psi, (oi_real)-1, i, wt, j, ww) : (oi_real)0;

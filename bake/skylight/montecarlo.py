@@ -31,7 +31,9 @@ def _column(med, b2, lo, hi, n):
     x, w = gauss_legendre_01(n)
     span = np.maximum(hi - lo, 0.0)
     t = lo[:, None] + span[:, None] * x[None]
-    h = np.sqrt(b2[:, None] + t * t) - med.R
+    # a zero-length segment may sit below the surface (a point above the day side has
+    # no downward part): its height is clamped so that its densities stay finite
+    h = np.maximum(np.sqrt(b2[:, None] + t * t) - med.R, 0.0)
     dens = med.exact_species(np.minimum(h, med.profile.top_km + 1.0))
     return np.sum(dens * w[None, None], axis=-1) * span[None] * 1e3
 

@@ -12,8 +12,11 @@ Grid: theta uniform on [0, pi] (n_theta nodes), w = acos(R / r) uniform on
 [w_min, pi/2] (n_alt rows; w_min: the top of the atmosphere, pi/2: infinity, baked at
 x = R / r = x_last). Stored q = (E_sky / E_sun) / x^2 (finite at infinity) and psi, the
 mean direction's angle from the nadir towards the Sun (0 where nothing is lit).
-Lookup: Catmull-Rom in theta (ghost nodes mirrored: q is even about theta = 0 and pi,
-psi odd) and in w (ghosts extrapolated linearly), q clamped at 0.
+Stored as v = ln(q + q_floor) (q_floor = 1e-9, a millionth of the rows' peaks): E_sky
+falls by orders of magnitude over a few degrees past the shadow edge, an exponential
+that a cubic follows in its logarithm, not in its value.
+Lookup: Catmull-Rom in theta (ghost nodes mirrored: v is even about theta = 0 and pi,
+psi odd) and in w (ghosts extrapolated linearly), q = exp(v) - q_floor clamped at 0.
 """
 from __future__ import annotations
 
@@ -36,7 +39,7 @@ NAME = "oi_sky_vband"
 FORMAT = 1                 # OI_SKY_FORMAT in include/oi_table.h
 GENERATOR = "bake.skylight"
 LAYOUT = ("format", "kind", "info", "n_theta", "n_alt", "w_min", "w_max", "earth_radius_km",
-          "top_km", "floor_km", "theta_scale", "w_scale", "q", "psi")
+          "top_km", "floor_km", "theta_scale", "w_scale", "q_floor", "v", "psi")
 
 
 def load_config(path=CFG_PATH):
@@ -90,9 +93,14 @@ def _cr(f):
             0.5 * (-3 * f3 + 4 * f2 + f), 0.5 * (f3 - f2))
 
 
-def lookup(q, psi, spec: Spec, theta, w):
+def stored(q, q_floor):
+    """The stored values v = ln(q + q_floor) (float32) of float32 node values q."""
+    return cemit.f32(np.log(np.asarray(q, dtype=float) + q_floor))
+
+
+def lookup(v, psi, spec: Spec, theta, w, q_floor):
     """The runtime's lookup (src/skylight.c) in numpy: (e_sky / E_sun, psi) at
-    scalars theta in [0, pi], w in [w_min, w_max]."""
+    scalars theta in [0, pi], w in [w_min, w_max], from the stored v."""
     nt, na = spec.n_theta, spec.n_alt
     ft = min(max(theta / math.pi * (nt - 1), 0.0), nt - 1.0)
     i = min(int(ft), nt - 2)
@@ -121,11 +129,11 @@ def lookup(q, psi, spec: Spec, theta, w):
         return sum(ww[m] * rows[m] for m in range(4))
 
     x = max(math.cos(w), 0.0)
-    qv = max(value(q, False), 0.0)
-    return qv * x * x, value(psi, True)
+    qv = max(math.exp(value(v, False)) - q_floor, 0.0)
+    return qv * x * x, (value(psi, True) if qv > 0 else 0.0)
 
 
-def measure(q, psi, spec, ss, n, seed, goal_rel, goal_floor, progress=False):
+def measure(q, v, psi, spec, ss, n, seed, goal_rel, goal_floor, q_floor, progress=False):
     """Lookup vs quadrature at n random points between the nodes (theta, w uniform)."""
     rng = np.random.Generator(np.random.PCG64(seed))
     th = rng.random(n) * math.pi
@@ -137,7 +145,7 @@ def measure(q, psi, spec, ss, n, seed, goal_rel, goal_floor, progress=False):
         r = spec.radius(ww)
         x = spec.R / r
         e_ref, p_ref = ss.irradiance(t, r)
-        e_tab, p_tab = lookup(q, psi, spec, t, ww)
+        e_tab, p_tab = lookup(v, psi, spec, t, ww, q_floor)
         # the row's maximum over theta, interpolated from the stored maxima
         fw = (ww - spec.w_min) / (spec.w_max - spec.w_min) * (spec.n_alt - 1)
         j = min(int(fw), spec.n_alt - 2)
@@ -194,12 +202,13 @@ def montecarlo_check(ss, mc_cfg, progress=False):
     return rows
 
 
-def table(spec, q32, p32, err, mc, bound, cfg, med):
+def table(spec, v32, p32, err, mc, bound, cfg, med):
     prof = med.profile
     reals = [("w_min", spec.w_min), ("w_max", spec.w_max), ("earth_radius_km", spec.R),
              ("top_km", prof.top_km), ("floor_km", med.h_floor),
              ("theta_scale", (spec.n_theta - 1) / math.pi),
-             ("w_scale", (spec.n_alt - 1) / (spec.w_max - spec.w_min))]
+             ("w_scale", (spec.n_alt - 1) / (spec.w_max - spec.w_min)),
+             ("q_floor", float(cfg["grid"]["q_floor"]))]
     ints = [("n_theta", spec.n_theta), ("n_alt", spec.n_alt)]
     params = {k: cfg[k] for k in sorted(cfg) if k not in ("name", "description")}
     params["profile"] = {k: getattr(prof, k) for k in (
@@ -221,8 +230,8 @@ def table(spec, q32, p32, err, mc, bound, cfg, med):
         f"  V band (Bessell 1990 x 5772 K) in {N_GROUPS} wavelength groups. Single scattering, point Sun,",
         "  straight rays; lines of sight ending on the sunlit floor left out (earthshine's albedo).",
         f"Grid: theta {spec.n_theta} nodes on [0, pi]; w = acos(R/r) {spec.n_alt} rows on [{spec.w_min:.6f}, pi/2];",
-        "  q = (E_sky / E_sun) / x^2 (x = R/r), psi (rad, from the nadir towards the Sun), float32;",
-        "  Catmull-Rom in both (theta ghosts mirrored, w ghosts linear).",
+        f"  v = ln(q + {cfg['grid']['q_floor']:g}), q = (E_sky / E_sun) / x^2 (x = R/r); psi (rad, from the nadir",
+        "  towards the Sun); float32; Catmull-Rom in both (theta ghosts mirrored, w ghosts linear).",
         f"Measured: lookup vs quadrature at {err['n_points']} random points: max relative error"
         f" {err['max_rel_error']:.3g}",
         f"  where E_sky >= {cfg['goal_floor']:g} of its row's peak (goal {cfg['goal_rel']:g}); quadrature vs Monte Carlo at"
@@ -235,29 +244,34 @@ def table(spec, q32, p32, err, mc, bound, cfg, med):
         name=NAME, kind="skylight", ctype="oi_sky_table", format=("OI_SKY_FORMAT", FORMAT),
         summary="baked scattered-sunlight table (V band): the sunlit atmosphere's light.",
         fields=[(k, v, "int") for k, v in ints] + [(k, v, "real") for k, v in reals],
-        arrays=[("q", q32, "float"), ("psi", p32, "float")], layout=LAYOUT,
+        arrays=[("v", v32, "float"), ("psi", p32, "float")], layout=LAYOUT,
         generator=GENERATOR, version=__version__, parameters=params,
         seed=int(cfg["measure"]["seed"]), goal=float(cfg["goal_rel"]),
         max_error=err["worst_in_goal_units"], measured=measured, grid=grid, provenance=prov)
 
 
-def run(outdir, progress=None, log=print, cfg=None):
+def run(outdir, progress=None, log=print, cfg=None, nodes=None):
+    """The whole bake into outdir (nodes: (q, psi) node values already computed, for
+    tools that vary the storage only)."""
     cfg = cfg or load_config()
     configure(cfg["quadrature"])
     med = Medium()
     ss = single.SingleScattering(med)
     spec = Spec(cfg, med)
-    q, psi = node_values(spec, ss, progress)
-    q32 = cemit.f32(q).ravel()
+    q, psi = nodes if nodes is not None else node_values(spec, ss, progress)
+    q_floor = float(cfg["grid"]["q_floor"])
+    q32 = cemit.f32(q)
+    v32 = stored(q32, q_floor)
     p32 = cemit.f32(psi).ravel()
     qs = q32.astype(float).reshape(q.shape)
+    vs = v32.astype(float).reshape(q.shape)
     ps = p32.astype(float).reshape(q.shape)
     m = cfg["measure"]
-    err = measure(qs, ps, spec, ss, int(m["n_points"]), int(m["seed"]), float(cfg["goal_rel"]),
-                  float(cfg["goal_floor"]), progress)
+    err = measure(qs, vs, ps, spec, ss, int(m["n_points"]), int(m["seed"]),
+                  float(cfg["goal_rel"]), float(cfg["goal_floor"]), q_floor, progress)
     mc = montecarlo_check(ss, m["montecarlo"], progress)
     bound = energy_bound(qs, spec)
-    t = table(spec, q32, p32, err, mc, bound, cfg, med)
+    t = table(spec, v32.ravel(), p32, err, mc, bound, cfg, med)
     paths = cemit.write(outdir, t)
     log("%s: %d bytes, lookup %.3f of the goal, quadrature vs Monte Carlo <= %.3g, energy ratio <= %.3g"
         % (t.name, t.payload_bytes(), t.max_error, t.measured["max_montecarlo_rel_diff"],
@@ -266,11 +280,11 @@ def run(outdir, progress=None, log=print, cfg=None):
 
 
 def load_table(tables_dir="tables"):
-    """(q, psi, spec) of the committed table, for tests and the report."""
+    """(v, psi, spec, q_floor) of the committed table, for tests and the report."""
     with open(os.path.join(tables_dir, NAME + ".c"), encoding="ascii") as f:
         parsed = cemit.parse_c(f.read())
     t = parsed["structs"][NAME]["fields"]
     spec = Spec(load_config(), Medium())
-    q = parsed["arrays"][NAME + "_q"].astype(float).reshape(t["n_alt"], t["n_theta"])
+    v = parsed["arrays"][NAME + "_v"].astype(float).reshape(t["n_alt"], t["n_theta"])
     psi = parsed["arrays"][NAME + "_psi"].astype(float).reshape(t["n_alt"], t["n_theta"])
-    return q, psi, spec
+    return v, psi, spec, float(t["q_floor"])

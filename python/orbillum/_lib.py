@@ -172,8 +172,8 @@ class oi_sky_table(ctypes.Structure):
         ("format", c_int), ("kind", c_int), ("info", POINTER(oi_table_info)),
         ("n_theta", c_int), ("n_alt", c_int),
         ("w_min", real), ("w_max", real), ("earth_radius_km", real), ("top_km", real),
-        ("floor_km", real), ("theta_scale", real), ("w_scale", real),
-        ("q", POINTER(ctypes.c_float)), ("psi", POINTER(ctypes.c_float)),
+        ("floor_km", real), ("theta_scale", real), ("w_scale", real), ("q_floor", real),
+        ("v", POINTER(ctypes.c_float)), ("psi", POINTER(ctypes.c_float)),
     ]
 
 

@@ -234,7 +234,8 @@ static void test_expose_background(void **state)
 }
 #endif
 
-static const float tiny_q[16] = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1};
+/* v = ln(q + q_floor) = 0: q = 1 - q_floor everywhere */
+static const float tiny_v[16] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
 
 static oi_sky_table tiny_table(void)
 {
@@ -251,8 +252,9 @@ static oi_sky_table tiny_table(void)
     t.floor_km = (oi_real)10.0;
     t.theta_scale = (oi_real)(3.0 / PI);
     t.w_scale = (oi_real)(3.0 / (PI / 2 - 0.2));
-    t.q = tiny_q;
-    t.psi = tiny_q;
+    t.q_floor = (oi_real)1e-9;
+    t.v = tiny_v;
+    t.psi = tiny_v;
     return t;
 }
 
@@ -294,8 +296,11 @@ static void test_hostile(void **state)
     t.w_max = 2;
     check_int(OI_ERR_MODEL, oi_skylight(1, 400, &m, &e, &psi), "w_max beyond pi/2");
     t = tiny_table();
-    t.q = NULL;
-    check_int(OI_ERR_MODEL, oi_skylight(1, 400, &m, &e, &psi), "q NULL");
+    t.v = NULL;
+    check_int(OI_ERR_MODEL, oi_skylight(1, 400, &m, &e, &psi), "v NULL");
+    t = tiny_table();
+    t.q_floor = 0;
+    check_int(OI_ERR_MODEL, oi_skylight(1, 400, &m, &e, &psi), "q_floor 0");
     /* through oi_illuminate: the broken table zeroes everything */
     leo_scene(&sc, 1.0, 400.0);
     sc.terms |= OI_TERM_SKY;

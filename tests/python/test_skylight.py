@@ -38,14 +38,14 @@ def committed():
 
 
 def test_runtime_lookup_is_the_mirror(committed):
-    q, psi, spec = committed
+    v, psi, spec, q_floor = committed
     rng = np.random.default_rng(11)
     for _ in range(200):
         th = rng.random() * math.pi
         w = spec.w_min + rng.random() * (spec.w_max - spec.w_min - 1e-3)
         h = R_KM / math.cos(w) - R_KM
         st, e, p = skylight(th, h)
-        e_py, p_py = table.lookup(q, psi, spec, th, w)
+        e_py, p_py = table.lookup(v, psi, spec, th, w, q_floor)
         assert st == 0
         assert abs(e - e_py) <= 1e-9 * max(e_py, 1e-12) + 1e-15, (th, h, e, e_py)
         if e_py > 0:

@@ -32,11 +32,13 @@ KINDS = {"earthshine": ("oi_earth_table", "OI_TABLE_FORMAT", "OI_TABLE_KIND_EART
          "skylight": ("oi_sky_table", "OI_SKY_FORMAT", "OI_TABLE_KIND_SKYLIGHT")}
 # payload fields per kind, in struct order
 PAYLOAD = {"earthshine": ["q", "psi"], "atmosphere": ["q", "psi"],
-           "earth_angular": ["offset", "scale", "code"], "skylight": ["q", "psi"]}
+           "earth_angular": ["offset", "scale", "code"], "skylight": ["v", "psi"]}
 # The angular table does not meet its goal at its worst points (4.1 times it near
 # the terminator at 250-320 km, docs/earthshine-angular.md): its sidecar says so,
 # and this is the bound that keeps it from getting worse unnoticed.
-MAX_ERROR = {"earth_angular": 4.1}
+# The sky table misses its lookup goal by 6.3 times at 5,000-42,000 km, from its node
+# quadrature's resolution (docs/skylight.md, "Accuracy"): the same kind of bound.
+MAX_ERROR = {"earth_angular": 4.1, "skylight": 6.4}
 
 
 def _header_macro(name):
