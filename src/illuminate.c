@@ -349,8 +349,11 @@ static OI_NOINLINE int observer_term(const oi_scene *scene, const oi_model *m, o
     out->flux_moon = reflected_flux(out->e_moon, out->dir_moon, obs_hat, ratio,
                                     scene->target_albedo, &out->phase_moon);
 #ifndef OI_NO_SKYLIGHT
-    out->flux_sky = reflected_flux(out->e_sky, out->dir_sky, obs_hat, ratio,
-                                   scene->target_albedo, &out->phase_sky);
+    /* without scattered light dir_sky is zero and so is its phase angle (not
+     * atan2 of a signed zero) */
+    if (out->e_sky > (oi_real)0)
+        out->flux_sky = reflected_flux(out->e_sky, out->dir_sky, obs_hat, ratio,
+                                       scene->target_albedo, &out->phase_sky);
 #endif
     out->flux_obs = out->flux_sun + out->flux_earth + out->flux_moon + out->flux_sky;
     out->mag_v = oi__magnitude_v(out->flux_obs, m->tsi_w_m2);

@@ -86,7 +86,7 @@ static void scene_of(oi_scene *s, const double sun[3], const double moon[3],
     s->has_moon = 1;
 }
 
-static const oi_model no_atm = {0, 0, 0, 0, 0, 0, 0, 0, 0, 1, NULL, NULL, 0};
+static const oi_model no_atm = {0, 0, 0, 0, 0, 0, 0, 0, 0, 1, NULL, NULL, 0, NULL};
 
 /* The visible fraction of the Sun with the Moon (and the Earth) in front,
  * and the Moon's own share, against the ring quadrature; whatever the terms

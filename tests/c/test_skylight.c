@@ -209,7 +209,10 @@ static void test_expose_background(void **state)
     /* observer on the night side; target on the far side of the limb, the
      * line of sight grazing 40 km above the surface */
     set3(sc.observer_km, -r_obs, 0, 0);
-    set3(sc.target_km, r_obs, -2.0 * (RE + 40.0), 0);
+    /* the line from (-r, 0) to (r, -y) passes at r y / sqrt(4 r^2 + y^2) from the
+     * centre: y = 2 r b / sqrt(r^2 - b^2) for b = R + 40 km */
+    set3(sc.target_km, r_obs,
+         -2.0 * r_obs * (RE + 40.0) / sqrt(r_obs * r_obs - (RE + 40.0) * (RE + 40.0)), 0);
     sc.has_observer = 1;
     sc.terms = OI_TERM_SUN | OI_TERM_EARTH;
     check_int(OI_OK, oi_illuminate(&sc, NULL, &il), "illuminate");
