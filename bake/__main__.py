@@ -6,6 +6,8 @@
                                        mission scene bake/config/scene_*.json and the angular
                                        table oi_earth_angular (bake/earthshine/angular_table.py)
   python -m bake atmosphere            oi_atm_vband (bake/config/atmosphere.json)
+  python -m bake skylight              oi_sky_vband (bake/config/skylight.json): the sunlight the
+                                       atmosphere scatters towards a target (bake/skylight/)
   python -m bake --scene FILE          only this mission scene (repeatable): its altitude band
                                        and goal, the smallest grid that meets it (docs/tables.md)
   --root DIR                           write at the repository-relative paths under DIR
@@ -27,7 +29,7 @@ ROOT = os.path.dirname(HERE)
 CONFIG = os.path.join(HERE, "config")
 DEFAULT_CFG = os.path.join(CONFIG, "default.json")
 TABLES = "tables"
-TARGETS = ("earthshine", "atmosphere", "all")
+TARGETS = ("earthshine", "atmosphere", "skylight", "all")
 
 
 def _earthshine_configs(scenes, all_scenes=True):
@@ -50,6 +52,9 @@ def outputs(target, scenes=()):
     if target in ("atmosphere", "all") and not scenes:
         from .atmosphere import table as at
         out += ["%s/%s.%s" % (TABLES, at.NAME, e) for e in ("c", "h", "json")]
+    if target in ("skylight", "all") and not scenes:
+        from .skylight import table as sk
+        out += ["%s/%s.%s" % (TABLES, sk.NAME, e) for e in ("c", "h", "json")]
     return out
 
 
@@ -116,6 +121,10 @@ def main(argv=None):
     if target in ("atmosphere", "all"):
         from .atmosphere import table as at
         at.run(outdir, progress=progress, log=log)
+        n += 1
+    if target in ("skylight", "all"):
+        from .skylight import table as sk
+        sk.run(outdir, progress=progress, log=log)
         n += 1
     if target in ("earthshine", "all"):
         n += bake_earthshine(outdir, a.scene, a.method, log, progress, photon_args)

@@ -47,6 +47,11 @@
  *                        is rejected with OI_ERR_MODEL (the fields and
  *                        constants stay: they belong to the model's ABI, as
  *                        with OI_NO_LIMB_DARKENING). docs/earthshine-albedo.md.
+ *   OI_NO_SKYLIGHT       no scattered sunlight: removes its lookup
+ *                        (src/skylight.c), its default table (oi_sky_table_default()
+ *                        returns NULL) and OI_TERM_SKY (a scene asking for it gets
+ *                        OI_ERR_TERMS); the oi_illum and oi_model fields stay (ABI),
+ *                        zero. Not OI_NO_SKY, which removes the camera's zodiacal light.
  * An option that removes a feature removes its declarations too, so code that
  * still uses the feature fails to compile.
  */
@@ -84,6 +89,8 @@ typedef double oi_real;
 #define oi_earth_angular_default oi_earth_angular_default_sp
 #define oi_earthshine_sphere oi_earthshine_sphere_sp
 #define oi_atm_table_default oi_atm_table_default_sp
+#define oi_sky_table_default oi_sky_table_default_sp
+#define oi_skylight oi_skylight_sp
 #define oi_moon_phase_law oi_moon_phase_law_sp
 #define oi_scene_defaults oi_scene_defaults_sp
 #define oi_illuminate oi_illuminate_sp

@@ -36,6 +36,10 @@
 #define OI_TABLE_KIND_EARTHSHINE (1)
 #define OI_TABLE_KIND_ATMOSPHERE (2)
 #define OI_TABLE_KIND_EARTH_ANGULAR (3)
+#define OI_TABLE_KIND_SKYLIGHT (4)
+
+/* Version of the scattered-sunlight layout (oi_sky_table.format). */
+#define OI_SKY_FORMAT 1
 
 /* Version of the earthshine angular layout (oi_earth_angular_table.format). */
 #define OI_ANGULAR_FORMAT 1
@@ -196,5 +200,45 @@ typedef struct oi_earth_angular_table {
     const float *scale;    /* n_coef + 1 values */
     const unsigned short *code; /* n_alt (n_lit + n_term) (n_coef + 1) codes */
 } oi_earth_angular_table;
+
+/*
+ * Scattered sunlight (docs/skylight.md): the scalar irradiance E_sky that the
+ * sunlit atmosphere scatters towards a target above it, per unit solar
+ * irradiance, and its mean direction psi (rad, from the nadir towards the
+ * Sun, in the Sun-Earth-target plane), on a grid of
+ *   theta  the angle at the Earth's centre from the Sun to the target,
+ *          n_theta nodes uniform on [0, pi];
+ *   w      = acos(R / r) (R = earth_radius_km of the bake), n_alt rows
+ *          uniform on [w_min, w_max]; w_min: the top of the atmosphere
+ *          (top_km), w_max = pi/2: infinity.
+ * Stored (float, row-major v[j n_theta + i], j the row): v = ln(q + q_floor),
+ * q = (E_sky / E_sun) / x^2 (x = R / r; finite at infinity), and psi (0 where
+ * nothing is lit). The logarithm: E_sky falls by orders of magnitude over a
+ * few degrees past the shadow edge, which a cubic follows in its logarithm.
+ * Lookup: Catmull-Rom in theta (ghost nodes mirrored about theta = 0 and pi:
+ * v even, psi odd) and in w (ghosts extrapolated linearly), q = exp(v) -
+ * q_floor clamped at 0.
+ * Lines of sight that end on the sunlit cloud deck (floor_km) are not in
+ * E_sky: their light is the Earth's albedo, in earthshine.
+ * theta_scale = (n_theta - 1) / pi, w_scale = (n_alt - 1) / (w_max - w_min),
+ * computed by the baker.
+ */
+typedef struct oi_sky_table {
+    int format;            /* OI_SKY_FORMAT */
+    int kind;              /* OI_TABLE_KIND_SKYLIGHT */
+    const oi_table_info *info; /* provenance; may be NULL */
+    int n_theta;           /* theta nodes, >= 4 */
+    int n_alt;             /* rows, >= 4 */
+    oi_real w_min;         /* first row (rad), > 0 */
+    oi_real w_max;         /* last row (rad), pi/2: infinity */
+    oi_real earth_radius_km; /* Earth radius of the bake (km) */
+    oi_real top_km;        /* top of the atmosphere (km): the first row's altitude */
+    oi_real floor_km;      /* opaque floor (cloud deck) of the bake (km) */
+    oi_real theta_scale;   /* (n_theta - 1) / pi */
+    oi_real w_scale;       /* (n_alt - 1) / (w_max - w_min) */
+    oi_real q_floor;       /* added to q before the logarithm, > 0 */
+    const float *v;        /* n_alt n_theta values of ln(q + q_floor) */
+    const float *psi;      /* n_alt n_theta values (rad) */
+} oi_sky_table;
 
 #endif /* OI_TABLE_H */

@@ -95,6 +95,9 @@ const char *oi_status_name(int status);
 #define OI_TERM_SUN   (1u)
 #define OI_TERM_EARTH (2u)
 #define OI_TERM_MOON  (4u)
+/* Sunlight scattered by the atmosphere towards the target (docs/skylight.md):
+ * opt-in, not in OI_TERM_ALL or the defaults (removed by OI_NO_SKYLIGHT). */
+#define OI_TERM_SKY   (8u)
 #define OI_TERM_ALL   (OI_TERM_SUN | OI_TERM_EARTH | OI_TERM_MOON)
 
 /* Physical bounds of oi_model's constants and of positions (see oi_model). */
@@ -183,6 +186,8 @@ typedef struct oi_model {
                                  values in [0, 1] (see "Albedo map" below) */
     int albedo_map_n_lat;     /* rows, 1..OI_ALBEDO_MAP_MAX_DIM */
     int albedo_map_n_lon;     /* cells per row, 1..OI_ALBEDO_MAP_MAX_DIM */
+    const oi_sky_table *sky_table;     /* scattered-sunlight table; NULL:
+                                          oi_sky_table_default() */
 } oi_model;
 
 /*
@@ -251,6 +256,44 @@ const oi_atm_table *oi_atm_table_default(void);
  * earth_reflection = OI_EARTH_REFLECT_MOMENTS; NULL with OI_NO_EARTH_ANGULAR
  * or OI_NO_EARTH_TABLE. Its own translation unit, as the others; trusted. */
 const oi_earth_angular_table *oi_earth_angular_default(void);
+/* oi_sky_table_default: the scattered-sunlight table (oi_sky_vband,
+ * include/oi_table.h, docs/skylight.md) OI_TERM_SKY uses when
+ * oi_model.sky_table is NULL; NULL with OI_NO_SKYLIGHT (then OI_TERM_SKY
+ * adds nothing). Its own translation unit, as the others; trusted. A
+ * caller's sky_table is checked by every call that uses it: format
+ * OI_SKY_FORMAT, kind OI_TABLE_KIND_SKYLIGHT, n_theta and n_alt in
+ * [4, 4096], v and psi not NULL, q_floor in (0, 1], 0 < w_min < w_max <= pi/2,
+ * earth_radius_km
+ * in [OI_MODEL_RADIUS_MIN, OI_MODEL_RADIUS_MAX], top_km in (0, 1000],
+ * theta_scale and w_scale within 1e-3 relative of their definitions;
+ * otherwise OI_ERR_MODEL with the outputs zeroed. */
+const oi_sky_table *oi_sky_table_default(void);
+
+#ifndef OI_NO_SKYLIGHT
+/*
+ * oi_skylight: the sunlight the atmosphere scatters towards a point above it.
+ * Given:   theta_rad  angle at the Earth's centre from the Sun to the point,
+ *                     [0, pi]
+ *          h_km       altitude above model earth_radius_km (>= 0)
+ *          model      NULL or model (sky_table)
+ * Returned: e_over_sun  E_sky / E_sun: scalar irradiance per unit solar
+ *                       irradiance at the point (>= 0)
+ *           psi_rad     its mean direction, from the nadir towards the Sun
+ * Returns: OI_OK; OI_WARN_TABLE_RANGE below the table's first row (the top
+ *          of the atmosphere, 100 km: the first row's values); OI_ERR_NULL
+ *          (an output NULL), OI_ERR_NONFINITE (an input NaN or infinite),
+ *          OI_ERR_INPUT (theta outside [0, pi], h < 0), OI_ERR_MODEL,
+ *          OI_ERR_RADIUS (invalid model or sky_table; NULL table:
+ *          e_over_sun = 0 with OI_OK). Outputs zeroed on error.
+ * Notes:   single scattering by air and aerosol of the refraction table's
+ *          atmosphere, point Sun, straight rays; lines of sight ending on the
+ *          sunlit Earth left out (their light is the albedo's). The table is
+ *          read with the target's distance r through x = R_t / r, R_t the
+ *          table's Earth radius. src/skylight.c, docs/skylight.md.
+ */
+int oi_skylight(oi_real theta_rad, oi_real h_km, const oi_model *model, oi_real *e_over_sun,
+                oi_real *psi_rad);
+#endif
 
 /* Highest top of a caller's atmosphere table (km): oi_illuminate's test
  * for certain full sunlight assumes that no grazing ray climbs above
@@ -614,6 +657,11 @@ typedef struct oi_illum {
                                   albedo over the lit visible Earth weighted by its
                                   earthshine, the value under the target where none
                                   is lit (with OI_TERM_EARTH; else 0) */
+    /* scattered sunlight (OI_TERM_SKY; zero when the term is off) */
+    oi_real e_sky;           /* scalar irradiance at the target (W/m^2) */
+    oi_real dir_sky[3];      /* unit vector towards its mean direction */
+    oi_real phase_sky;       /* phase angle at the target (rad; with an observer) */
+    oi_real flux_sky;        /* W/m^2 at the observer (in flux_obs) */
 } oi_illum;
 
 /*
@@ -667,6 +715,8 @@ typedef struct oi_illum {
  *                            or outside [0, 1]
  * Notes:   e_sun = TSI (AU / |sun - target|)^2 fraction_atm;
  *          e_earth = earth_albedo TSI (AU / |sun|)^2 phi(theta, h);
+ *          e_sky = TSI (AU / |sun|)^2 (E_sky / E_sun)(theta, h) (OI_TERM_SKY,
+ *          oi_skylight), reflected as if from its mean direction dir_sky;
  *          e_moon from the lunar phase law (or a Lambert Moon), times the
  *          fraction of the Sun the Moon sees and the fraction of the Moon's
  *          disc the Earth does not hide from the target (moon_disc_visible).
@@ -959,8 +1009,8 @@ int oi_expose(const oi_camera *camera, const oi_expose_in *in,
  *                     moon_km, when goal->sky has OI_SKY_MOON and
  *                     scene->terms has OI_TERM_MOON)
  *   OI_ERR_ALBEDO     earth_albedo or target_albedo outside [0, 1] (NaN too)
- *   OI_ERR_NONFINITE  illum's e_sun, e_earth, e_moon or flux_obs
- *   OI_ERR_INPUT      one of those four negative
+ *   OI_ERR_NONFINITE  illum's e_sun, e_earth, e_moon, e_sky or flux_obs
+ *   OI_ERR_INPUT      one of those five negative
  *   OI_ERR_SHAPE      scene->shape or attitude_q invalid (as oi_illuminate;
  *                     any shape with OI_NO_FACETS)
  *   OI_ERR_NONFINITE, OI_ERR_INPUT  with a shape, illum->flux_specular
@@ -987,12 +1037,19 @@ int oi_expose(const oi_camera *camera, const oi_expose_in *in,
  *      a Lambertian Earth, earth_albedo * E0 * cos(i) / pi with
  *      E0 = TSI (1 AU / |sun|)^2 and i the Sun's incidence angle there;
  *      0 when that point is unlit or the ray misses the Earth (dark sky).
- *      The background is physical and does not depend on scene->terms.
+ *      The background is physical and does not depend on scene->terms,
+ *      except for the scattered sunlight's share (3b).
+ *   3b. With OI_TERM_SKY in scene->terms, where the boresight crosses the
+ *      limb (it passes between the sky table's cloud floor and the top of the
+ *      atmosphere; not on a Moon in front, Note 8), the background adds the
+ *      limb's mean radiance seen from the observer, e_sky(observer) / Omega
+ *      (Omega the solid angle of that ring; an estimate, see
+ *      docs/skylight.md); the resolved bound (Note 5) counts e_sky.
  *   4. OI_FLAG_OCCULTED when the Earth lies between the observer and the
  *      target: the target's flux is then taken as 0 (TOO_FAINT follows).
  *   5. Resolved target: no pixel can collect more than a Lambertian surface
  *      of the target's albedo facing every source at once, of radiance
- *      target_albedo (e_sun + e_earth + e_moon) / pi, over the pixel's solid
+ *      target_albedo (e_sun + e_earth + e_moon + e_sky) / pi, over the pixel's solid
  *      angle (pitch / focal)^2. When psf_peak_fraction * flux exceeds that,
  *      the flux given to oi_expose is reduced so that the brightest pixel
  *      gets exactly that bound, and OI_FLAG_RESOLVED is raised.

@@ -31,7 +31,7 @@ CROSS_CFGS := $(foreach c,$(CROSS_CORES),$(foreach o,$(CROSS_OPTS),$(c)-$(o)))
 
 # Compile-time option sets measured by `make size` (OPTSET_<name> in mk/matrix.mk).
 CROSS_OPTSETS := full sun_only no_moon no_atmosphere no_exposure no_earth_table no_facets sun_uniform \
-  no_albedo_models
+  no_albedo_models no_skylight
 # which program each option set links (target/size_<prog>.c)
 SIZEPROG_sun_only := sun
 SIZEPROG_sun_uniform := sun

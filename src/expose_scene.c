@@ -100,10 +100,12 @@ static OI_NOINLINE int check_scene(const oi_camera *camera, const oi_scene *scen
         return OI_ERR_ALBEDO;
     }
     if (!OI_ISFINITE(illum->e_sun) || !OI_ISFINITE(illum->e_earth) ||
-        !OI_ISFINITE(illum->e_moon) || !OI_ISFINITE(illum->flux_obs)) {
+        !OI_ISFINITE(illum->e_moon) || !OI_ISFINITE(illum->flux_obs) ||
+        !OI_ISFINITE(illum->e_sky)) {
         return OI_ERR_NONFINITE;
     }
-    if (illum->e_sun < 0 || illum->e_earth < 0 || illum->e_moon < 0 || illum->flux_obs < 0) {
+    if (illum->e_sun < 0 || illum->e_earth < 0 || illum->e_moon < 0 || illum->flux_obs < 0 ||
+        illum->e_sky < 0) {
         return OI_ERR_INPUT;
     }
     if (scene->shape != NULL) {
@@ -305,6 +307,44 @@ static OI_NOINLINE oi_real zodiacal_background(const oi_scene *scene, const scen
 }
 #endif
 
+#ifndef OI_NO_SKYLIGHT
+/* The scattered sunlight's share of the background (Note 3b, OI_TERM_SKY):
+ * where the boresight crosses the limb (its closest approach to the Earth's
+ * centre ahead, between the sky table's floor and the top of the
+ * atmosphere), the mean radiance of the limb seen from the observer,
+ * e_sky(observer) / Omega, Omega the solid angle of the ring between the
+ * floor's disc and the top's (an estimate: most of e_sky comes from the limb
+ * near the shadow; docs/skylight.md measures it). 0 for an observer inside
+ * the atmosphere or a boresight that misses the ring. */
+static OI_NOINLINE oi_real sky_background(const oi_scene *scene, const oi_model *model,
+                                          const scene_geom *g)
+{
+    oi_model m;
+    const oi_sky_table *t;
+    oi_real s_hat[3], o_hat[3], c[3], top, fl, ob, b2, theta, e, psi, st, sf, ct, cf, d_sun;
+    if (oi__model_resolve(model, &m) < 0) return 0;
+    if (oi__sky_table_of(&m, &t) < 0 || t == NULL) return 0;
+    top = m.earth_radius_km + t->top_km;
+    fl = m.earth_radius_km + t->floor_km;
+    if (!(g->r_obs > top) || !(fl < top)) return 0;
+    ob = oi__dot(scene->observer_km, g->bh);
+    b2 = (g->r_obs - ob) * (g->r_obs + ob); /* squared closest approach (|ob| <= r_obs) */
+    if (!(ob < 0) || b2 >= top * top || b2 <= fl * fl) return 0;
+    d_sun = oi__unit(scene->sun_km, s_hat);
+    (void)oi__unit(scene->observer_km, o_hat);
+    oi__cross(s_hat, o_hat, c);
+    theta = OI_ATAN2(oi__norm(c), oi__dot(s_hat, o_hat));
+    (void)oi__sky_lookup(t, theta, g->r_obs, &e, &psi);
+    st = top / g->r_obs;
+    sf = fl / g->r_obs;
+    ct = OI_SQRT(((oi_real)1 - st) * ((oi_real)1 + st));
+    cf = OI_SQRT(((oi_real)1 - sf) * ((oi_real)1 + sf));
+    /* Omega = 2 pi (cos a_f - cos a_t) = 2 pi (st^2 - sf^2) / (cf + ct) */
+    return g->tsi * (g->au / d_sun) * (g->au / d_sun) * e * (cf + ct) /
+           (OI_R(2.0) * OI_PI_R * (st - sf) * (st + sf));
+}
+#endif
+
 /* Resolved target (Note 5): the brightest pixel sees at most the radiance
  * albedo * sum(E) / pi over its solid angle. */
 static OI_NOINLINE void limit_resolved(const oi_camera *camera, const oi_scene *scene, const oi_illum *illum,
@@ -315,7 +355,7 @@ static OI_NOINLINE void limit_resolved(const oi_camera *camera, const oi_scene *
 #ifndef OI_NO_FACETS
     if (scene->shape != NULL) peak = oi__shape_peak(scene);
 #endif
-    cap = peak * (illum->e_sun + illum->e_earth + illum->e_moon) /
+    cap = peak * (illum->e_sun + illum->e_earth + illum->e_moon + illum->e_sky) /
           OI_PI_R * (ifov * ifov) / camera->psf_peak_fraction;
     if (in->flux_w_m2 > cap) {
         in->flux_w_m2 = cap;
@@ -339,7 +379,7 @@ int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
     oi_expose_in in;
     scene_geom g;
     oi_real sun_angle, s_earth;
-    int st, use_moon, moon_hit = 0;
+    int st, use_moon, moon_hit = 0, lit_ground;
     const unsigned sky = goal != NULL ? goal->sky : 0u;
 
     if (out == NULL) return OI_ERR_NULL;
@@ -362,14 +402,19 @@ int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
     if (sun_angle < camera->sun_exclusion_rad) in.flags |= OI_FLAG_SUN_EXCLUSION;
     if (earth_in_fov(scene, &g, camera->fov_rad)) in.flags |= OI_FLAG_EARTH_IN_FOV;
     s_earth = ground_background(scene, &g, &in);
+    lit_ground = s_earth >= 0 && in.background_w_m2_sr > 0;
     if (use_moon) moon_hit = moon_view(scene, illum, &g, camera->fov_rad, s_earth, &in);
 #ifndef OI_NO_SKY
     if ((sky & OI_SKY_ZODIACAL) != 0u && s_earth < 0 && !moon_hit) {
         in.background_w_m2_sr = zodiacal_background(scene, &g);
     }
-#else
-    (void)moon_hit;
 #endif
+#ifndef OI_NO_SKYLIGHT
+    if ((scene->terms & OI_TERM_SKY) != 0u && !lit_ground && !moon_hit)
+        in.background_w_m2_sr += sky_background(scene, model, &g);
+#endif
+    (void)moon_hit;
+    (void)lit_ground;
     if (in.flags & OI_FLAG_OCCULTED) in.flux_w_m2 = 0;
     limit_resolved(camera, scene, illum, &in);
     /* a glint: the specular lobes carry most of the (unoccluded) flux */

@@ -40,6 +40,9 @@ static int check_scene(const oi_scene *s, const oi_model *m)
 #ifndef OI_NO_MOON
     available |= OI_TERM_MOON;
 #endif
+#ifndef OI_NO_SKYLIGHT
+    available |= OI_TERM_SKY;
+#endif
     if (s->terms & ~available) return OI_ERR_TERMS;
     if (!oi__finite3(s->sun_km) || !oi__finite3(s->target_km)) return OI_ERR_NONFINITE;
     if (moon && !oi__finite3(s->moon_km)) return OI_ERR_NONFINITE;
@@ -325,6 +328,26 @@ static OI_NOINLINE int earth_term(const oi_scene *scene, const oi_model *m, oi_i
     return st;
 }
 
+#ifndef OI_NO_SKYLIGHT
+/* The scattered sunlight's term: e_sky and dir_sky from the sky table at
+ * theta (out->earth_theta) and the target's distance. */
+static OI_NOINLINE int sky_term(const oi_scene *scene, const oi_model *m, oi_illum *out)
+{
+    const oi_sky_table *t;
+    oi_real s_hat[3], r_hat[3], e_over_sun, psi;
+    int st = oi__sky_table_of(m, &t);
+    if (st < 0 || t == NULL) return st;
+    {
+        const oi_real d_sun = oi__unit_bounded(scene->sun_km, s_hat);
+        const oi_real r_target = oi__unit_bounded(scene->target_km, r_hat);
+        st = oi__sky_lookup(t, out->earth_theta, r_target, &e_over_sun, &psi);
+        out->e_sky = solar_irradiance(m, d_sun) * e_over_sun;
+    }
+    if (out->e_sky > (oi_real)0) earth_direction(r_hat, s_hat, psi, out->dir_sky);
+    return st;
+}
+#endif
+
 #if !defined(OI_NO_EARTH_ANGULAR) && !defined(OI_NO_EARTH_TABLE)
 /* The earthshine a Lambertian sphere sends towards obs_hat from the angular
  * table's moments (src/earthshine_angular.c); 0 when the table does not
@@ -380,14 +403,22 @@ static OI_NOINLINE int observer_term(const oi_scene *scene, const oi_model *m,
 #endif
     out->flux_moon = reflected_flux(out->e_moon, out->dir_moon, obs_hat, ratio,
                                     scene->target_albedo, &out->phase_moon);
+#ifndef OI_NO_SKYLIGHT
+    /* without scattered light dir_sky is zero and so is its phase angle (not
+     * atan2 of a signed zero) */
+    if (out->e_sky > (oi_real)0)
+        out->flux_sky = reflected_flux(out->e_sky, out->dir_sky, obs_hat, ratio,
+                                       scene->target_albedo, &out->phase_sky);
+#endif
 #ifndef OI_NO_FACETS
     if (scene->shape != NULL) {
-        /* the facets replace the sphere (the phase angles stay) */
-        out->flux_sun = out->flux_earth = out->flux_moon = (oi_real)0;
+        /* the facets replace the sphere (the phase angles stay); their
+         * scattered sunlight is not modelled */
+        out->flux_sun = out->flux_earth = out->flux_moon = out->flux_sky = (oi_real)0;
         oi__shape_flux(scene, m, obs_hat, out);
     }
 #endif
-    out->flux_obs = out->flux_sun + out->flux_earth + out->flux_moon;
+    out->flux_obs = out->flux_sun + out->flux_earth + out->flux_moon + out->flux_sky;
     out->mag_v = oi__magnitude_v(out->flux_obs, m->tsi_w_m2);
     return OI_OK;
 }
@@ -409,6 +440,9 @@ static OI_NOINLINE int observer_term(const oi_scene *scene, const oi_model *m,
  *     sun_moon_hidden). The Moon's shadow test is skipped when the Moon is
  *     certainly in full sunlight (certainly_lit), its occultation when its
  *     disc is certainly apart from the Sun's.
+ *  3b. Sky (OI_TERM_SKY): e_sky = TSI (AU/|sun|)^2 (E_sky / E_sun)(theta, r)
+ *     from the scattered-sunlight table (src/skylight.c), reflected from its
+ *     mean direction (docs/skylight.md).
  *  4. The target is a Lambertian sphere; earthshine is reflected from its
  *     angular distribution (the angular table's moments, from 100 km up;
  *     docs/earthshine-angular.md), or, with OI_EARTH_REFLECT_MEAN, below
@@ -486,6 +520,13 @@ int oi__illuminate_resolved(const oi_scene *scene, const oi_model *m, oi_illum *
     if ((scene->terms & OI_TERM_EARTH) && m->albedo_model != OI_ALBEDO_UNIFORM) {
         st = albedo_field_term(scene, m, out, &shape_add);
         if (st < 0) goto fail;
+    }
+#endif
+#ifndef OI_NO_SKYLIGHT
+    if (scene->terms & OI_TERM_SKY) {
+        st = sky_term(scene, m, out);
+        if (st < 0) goto fail;
+        if (st > 0) warn = st;
     }
 #endif
 #ifndef OI_NO_MOON

@@ -92,6 +92,8 @@ int oi__model_resolve(const oi_model *in, oi_model *out)
     out->no_atmosphere = in->no_atmosphere != 0;
     out->earth_table = in->earth_table;
     out->atm_table = in->atm_table;
+    /* a caller's sky table is checked where it is used (src/skylight.c) */
+    out->sky_table = in->sky_table;
     return OI_OK;
 }
 

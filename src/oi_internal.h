@@ -398,6 +398,18 @@ int oi__earthshine(oi_real theta, oi_real cos_theta, oi_real sin_theta, oi_real 
  * (pi - xi >= 1), so no cosine or sine is evaluated. cos_xi > 1: not given. */
 oi_real oi__lambert_phase_cs(oi_real xi, oi_real cos_xi, oi_real sin_xi);
 
+#ifndef OI_NO_SKYLIGHT
+/* The scattered-sunlight table (src/skylight.c): 1 when a caller's table
+ * passes the checks of oi_sky_table_default's contract; the table a resolved
+ * model uses (*t NULL: none; OI_ERR_MODEL for an invalid caller's table);
+ * the lookup at theta in [0, pi] and distance r_km (OI_WARN_TABLE_RANGE
+ * below the first row). */
+int oi__sky_table_valid(const oi_sky_table *t);
+int oi__sky_table_of(const oi_model *m, const oi_sky_table **t);
+int oi__sky_lookup(const oi_sky_table *t, oi_real theta, oi_real r_km, oi_real *e_over_sun,
+                   oi_real *psi);
+#endif
+
 /* The earthshine angular table a resolved model uses for a sphere's
  * reflection (src/earthshine_angular.c): NULL for the mean direction
  * (earth_reflection = OI_EARTH_REFLECT_MEAN, the Lambert far field, or the

@@ -208,7 +208,8 @@ static int parse_real(const char *s, double *out)
 /* "all" in a terms list: every term whose inputs the row gives. */
 #define TERMS_ALL_AVAILABLE (0x100u)
 
-/* Parse a terms list ("sun+earth+moon", "all"); 0 or -1. */
+/* Parse a terms list ("sun+earth+moon", "all", "all+sky"; "all" does not
+ * include sky, which is opt-in as OI_TERM_SKY is outside OI_TERM_ALL); 0 or -1. */
 static int parse_terms(const char *s, unsigned *terms)
 {
     char tok[16];
@@ -226,6 +227,9 @@ static int parse_terms(const char *s, unsigned *terms)
         if (same_nocase(tok, "sun")) *terms |= OI_TERM_SUN;
         else if (same_nocase(tok, "earth")) *terms |= OI_TERM_EARTH;
         else if (same_nocase(tok, "moon")) *terms |= OI_TERM_MOON;
+#ifndef OI_NO_SKYLIGHT
+        else if (same_nocase(tok, "sky")) *terms |= OI_TERM_SKY;
+#endif
         else if (same_nocase(tok, "all")) *terms |= TERMS_ALL_AVAILABLE;
         else return -1;
         if (*p == '\0') return 0;
@@ -419,9 +423,9 @@ static int run_row(batch *b, const csv_reader *r, plan_row *row)
     s = field_of(b, r, C_TERMS, &short_row);
     if (s != NULL && s[0] != '\0') {
         if (parse_terms(s, &terms) != 0) {
-            char detail[120];
-            snprintf(detail, sizeof detail, "got \"%.60s\"; expected sun, earth, moon joined "
-                                            "by '+', or all", s);
+            char detail[128];
+            snprintf(detail, sizeof detail, "got \"%.60s\"; expected sun, earth, moon, sky "
+                                            "joined by '+', or all", s);
             row_error(b, r->rec_line, b->col[C_TERMS], "bad terms:", detail);
             return 0;
         }

@@ -7,7 +7,7 @@
 
 const char plan_csv_header[] =
     "id,status,sun_fraction,sun_fraction_atm,e_sun,e_earth,e_moon,earth_theta_deg,"
-    "earth_h_km,flux_obs,mag_v,exposure_s,gain,snr,flags,detect_margin_mag";
+    "earth_h_km,flux_obs,mag_v,exposure_s,gain,snr,flags,detect_margin_mag,e_sky";
 
 static const double RAD_TO_DEG = 180.0 / 3.14159265358979323846;
 
@@ -100,6 +100,7 @@ void out_csv_row(FILE *fp, const char *id, const plan_row *row)
         fputs(flags, fp);
     }
     put_num(fp, obs, (double)row->expo.detect_margin_mag);
+    put_num(fp, num, (double)il->e_sky);
     fputc('\n', fp);
 }
 

@@ -117,11 +117,13 @@ def flag_names(flags):
     return "+".join(out)
 
 
-_TERM_BITS = {"sun": L.OI_TERM_SUN, "earth": L.OI_TERM_EARTH, "moon": L.OI_TERM_MOON}
+_TERM_BITS = {"sun": L.OI_TERM_SUN, "earth": L.OI_TERM_EARTH, "moon": L.OI_TERM_MOON,
+              "sky": L.OI_TERM_SKY}
 
 
 def terms_mask(terms):
-    """'sun+earth+moon' (any subset, any order, '+'-joined; 'all'; '' = none) -> mask."""
+    """'sun+earth+moon+sky' (any subset, any order, '+'-joined; 'all' = sun+earth+moon,
+    sky is opt-in; '' = none) -> mask."""
     if isinstance(terms, (int, np.integer)):
         return int(terms)
     s = str(terms).strip().lower()
@@ -130,7 +132,7 @@ def terms_mask(terms):
     m = 0
     for part in filter(None, (p.strip() for p in s.split("+"))):
         if part not in _TERM_BITS:
-            raise ValueError(f"unknown term {part!r}: use sun, earth, moon joined by '+'")
+            raise ValueError(f"unknown term {part!r}: use sun, earth, moon, sky joined by '+'")
         m |= _TERM_BITS[part]
     return m
 

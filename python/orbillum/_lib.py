@@ -47,6 +47,7 @@ OI_MAG_MAX = 50.0
 OI_TERM_SUN = 1
 OI_TERM_EARTH = 2
 OI_TERM_MOON = 4
+OI_TERM_SKY = 8
 OI_TERM_ALL = OI_TERM_SUN | OI_TERM_EARTH | OI_TERM_MOON
 
 OI_MODEL_TSI_MIN = 1.0e-6
@@ -115,6 +116,8 @@ OI_TABLE_KIND_EARTHSHINE = 1
 OI_TABLE_KIND_ATMOSPHERE = 2
 OI_TABLE_KIND_EARTH_ANGULAR = 3
 OI_ANGULAR_FORMAT = 1
+OI_TABLE_KIND_SKYLIGHT = 4
+OI_SKY_FORMAT = 1
 OI_ANGULAR_L_MAX = 8
 
 # ---- include/oi_constants.h (defaults; oi_model overrides each)
@@ -178,6 +181,16 @@ class oi_earth_angular_table(ctypes.Structure):
     ]
 
 
+class oi_sky_table(ctypes.Structure):
+    _fields_ = [
+        ("format", c_int), ("kind", c_int), ("info", POINTER(oi_table_info)),
+        ("n_theta", c_int), ("n_alt", c_int),
+        ("w_min", real), ("w_max", real), ("earth_radius_km", real), ("top_km", real),
+        ("floor_km", real), ("theta_scale", real), ("w_scale", real), ("q_floor", real),
+        ("v", POINTER(ctypes.c_float)), ("psi", POINTER(ctypes.c_float)),
+    ]
+
+
 # ---- include/orbillum.h structures
 class oi_model(ctypes.Structure):
     _fields_ = [
@@ -189,6 +202,7 @@ class oi_model(ctypes.Structure):
         ("earth_shape", c_int),
         ("albedo_model", c_int), ("albedo_map", POINTER(ctypes.c_float)),
         ("albedo_map_n_lat", c_int), ("albedo_map_n_lon", c_int),
+        ("sky_table", POINTER(oi_sky_table)),
     ]
 
 
@@ -239,6 +253,7 @@ class oi_illum(ctypes.Structure):
         ("sun_moon_hidden", real), ("moon_disc_visible", real),
         ("flux_specular", real),
         ("earth_albedo_eff", real),
+        ("e_sky", real), ("dir_sky", real * 3), ("phase_sky", real), ("flux_sky", real),
     ]
 
 
@@ -278,8 +293,9 @@ class oi_exposure(ctypes.Structure):
     ]
 
 
-STRUCTS = (oi_table_info, oi_earth_table, oi_atm_table, oi_earth_angular_table, oi_model,
-           oi_shadow, oi_facet, oi_shape, oi_scene, oi_illum, oi_camera, oi_expose_goal, oi_expose_in, oi_exposure)
+STRUCTS = (oi_table_info, oi_earth_table, oi_atm_table, oi_earth_angular_table, oi_sky_table,
+           oi_model, oi_shadow, oi_facet, oi_shape, oi_scene, oi_illum, oi_camera, oi_expose_goal,
+           oi_expose_in, oi_exposure)
 
 _R3 = POINTER(real)
 # name: (restype, argtypes). Pointers to arrays of structures are passed as
@@ -295,6 +311,8 @@ _PROTOS = {
     "oi_earth_table_default": (POINTER(oi_earth_table), []),
     "oi_atm_table_default": (POINTER(oi_atm_table), []),
     "oi_earth_angular_default": (POINTER(oi_earth_angular_table), []),
+    "oi_sky_table_default": (POINTER(oi_sky_table), []),
+    "oi_skylight": (c_int, [real, real, c_void_p, POINTER(real), POINTER(real)]),
     "oi_earthshine_sphere": (c_int, [real, real, _R3, c_void_p, POINTER(real)]),
     "oi_moon_phase_law": (real, [real]),
     "oi_zodiacal_radiance": (real, [real, real]),

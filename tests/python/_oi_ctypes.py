@@ -31,7 +31,8 @@ Model, Shadow, Scene, Illum = M.oi_model, M.oi_shadow, M.oi_scene, M.oi_illum
 
 ILLUM_SCALARS = ["e_sun", "e_earth", "e_moon"]
 _ILLUM_NAMES = [n for n, _ in Illum._fields_]
-_ILLUM_AFTER_DIRS = _ILLUM_NAMES[_ILLUM_NAMES.index("dir_moon") + 1:]
+# the scalars after the direction vectors (dir_sky, a vector, is not one)
+_ILLUM_AFTER_DIRS = [n for n in _ILLUM_NAMES[_ILLUM_NAMES.index("dir_moon") + 1:] if n != "dir_sky"]
 
 # every rotation-invariant scalar output of oi_illuminate
 SCALAR_OUTPUTS = (["shadow." + n for n, _ in Shadow._fields_ if n != "region"] +

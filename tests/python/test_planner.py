@@ -22,8 +22,8 @@ ROOT = Path(__file__).resolve().parents[2]
 PLAN = Path(os.environ.get("OI_PLAN", ROOT / "build" / "oi-plan"))
 
 HEADER = ("id,status,sun_fraction,sun_fraction_atm,e_sun,e_earth,e_moon,earth_theta_deg,"
-          "earth_h_km,flux_obs,mag_v,exposure_s,gain,snr,flags,detect_margin_mag")
-NUMERIC = HEADER.split(",")[2:14] + ["detect_margin_mag"]
+          "earth_h_km,flux_obs,mag_v,exposure_s,gain,snr,flags,detect_margin_mag,e_sky")
+NUMERIC = HEADER.split(",")[2:14] + ["detect_margin_mag", "e_sky"]
 FLAG_NAMES = {"sun_exclusion", "earth_in_fov", "eclipsed", "too_faint", "saturated",
               "penumbra", "occulted", "resolved", "moon_in_fov", "trailed"}
 AU = 149597870.7
@@ -621,3 +621,21 @@ def test_moon_occults_the_sun_whatever_the_terms():
     assert float(s["e_moon"]) == 0.0
     assert h["status"] == "OK" and float(h["e_moon"]) == 0.0
     assert "moon_shadow" not in h["flags"].split("+")
+
+
+def test_terms_sky_is_opt_in():
+    """`sky` in terms fills e_sky (a target just inside the LEO umbra sees the sunlit
+    limb) and adds its reflection to flux_obs; `all` and the default leave it 0."""
+    r = 6378.137 + 400.0
+    t = math.radians(112.0)
+    rows = ["id,sun_x,sun_y,sun_z,target_x,target_y,target_z,observer_x,observer_y,"
+            "observer_z,terms"]
+    for name, terms in (("sky", "sun+earth+sky"), ("all", "all"), ("none", "")):
+        rows.append("%s,1.496e8,0,0,%.9g,%.9g,0,%.9g,%.9g,50,%s" % (
+            name, r * math.cos(t), r * math.sin(t), r * math.cos(t), r * math.sin(t), terms))
+    code, out, err = run_csv("\n".join(rows) + "\n")
+    assert code == 0, err
+    got = {d["id"]: d for d in csv.DictReader(io.StringIO(out))}
+    assert float(got["sky"]["e_sky"]) > 0.05
+    assert float(got["all"]["e_sky"]) == 0 and float(got["none"]["e_sky"]) == 0
+    assert float(got["sky"]["flux_obs"]) > float(got["all"]["flux_obs"])

@@ -81,7 +81,7 @@ const COLUMNS = ['id', 'sun_x', 'sun_y', 'sun_z', 'target_x', 'target_y', 'targe
 /** The planner's output columns, in its order. */
 export const PLAN_COLUMNS = ['id', 'status', 'sun_fraction', 'sun_fraction_atm', 'e_sun',
   'e_earth', 'e_moon', 'earth_theta_deg', 'earth_h_km', 'flux_obs', 'mag_v', 'exposure_s',
-  'gain', 'snr', 'flags', 'detect_margin_mag'];
+  'gain', 'snr', 'flags', 'detect_margin_mag', 'e_sky'];
 
 export class Orbillum {
   constructor(instance) {
@@ -251,7 +251,8 @@ export class Orbillum {
     };
     for (const f of ['e_sun', 'e_earth', 'e_moon', 'earth_theta', 'earth_h_km', 'earth_phi',
       'earth_psi', 'moon_sun_fraction', 'phase_sun', 'phase_earth', 'phase_moon', 'flux_sun',
-      'flux_earth', 'flux_moon', 'flux_obs', 'mag_v', 'range_km', 'flux_specular']) {
+      'flux_earth', 'flux_moon', 'flux_obs', 'mag_v', 'range_km', 'flux_specular', 'e_sky',
+      'flux_sky']) {
       out[f] = this.getR(p, I, f);
     }
     for (const f of ['dir_sun', 'dir_earth', 'dir_moon']) out[f] = this.get3(p, I, f);
@@ -423,6 +424,7 @@ export class Orbillum {
         if (w === 'sun') t |= C.OI_TERM_SUN;
         else if (w === 'earth') t |= C.OI_TERM_EARTH;
         else if (w === 'moon') t |= C.OI_TERM_MOON;
+        else if (w === 'sky') t |= C.OI_TERM_SKY;
         else if (w === 'all') all = true;
         else return row;
       }
@@ -502,6 +504,7 @@ export class Orbillum {
     row.e_sun = il.e_sun;
     row.e_earth = il.e_earth;
     row.e_moon = il.e_moon;
+    row.e_sky = il.e_sky;
     row.earth_theta_deg = il.earth_theta * RAD_TO_DEG;
     row.earth_h_km = il.earth_h_km;
     if (r.expo) {
