@@ -68,6 +68,22 @@ function planner(input, env) {
 // detect_margin_mag is 2.5 log10(signal / signal_min): where a libm result (exp, log) is 1 ulp
 // apart, the margin's magnitude (about 1 to 10) carries it times 2.5 plus the product's own
 // rounding, up to 3 ulp; bit for bit with the generic libm all the same.
+// The atmosphere's lookup (sun_fraction_atm) is steep in the penumbra: a last-bit difference of
+// exp or log between glibc's default libm and wasi-libc's moves it by up to ~120 ulp (measured by
+// nudging those calls by 1 ulp), and the columns that follow from it (e_sun, flux_obs, mag_v, snr,
+// detect_margin_mag) by as much in relative terms. With the default libm, on a row whose
+// sun_fraction_atm differs by at most ATM_LIBM_ULP, those columns may differ by ATM_LIBM_REL
+// relative; with the generic libm everything stays bit for bit.
+const ATM_LIBM_ULP = 128n;
+const ATM_LIBM_REL = 1e-13;
+const ATM_COLUMNS = new Set(['sun_fraction_atm', 'e_sun', 'flux_obs', 'mag_v', 'snr', 'detect_margin_mag']);
+function atmLibmRow(row, want, run) {
+  if (run.maxUlp === 0n) return false;
+  const w = Number(want[PLAN_COLUMNS.indexOf('sun_fraction_atm')]);
+  const g = row.sun_fraction_atm;
+  return typeof g === 'number' && Number.isFinite(w) && ulps(g, w) <= ATM_LIBM_ULP;
+}
+
 function maxUlpOf(column, run) {
   return column === 'detect_margin_mag' && run.maxUlp > 0n && run.maxUlp < 3n ? 3n : run.maxUlp;
 }
@@ -93,6 +109,7 @@ for (const [name, input, extraUlp] of INPUTS) for (const run0 of RUNS) {
     const near = [];
     mine.rows.forEach((row, i) => {
       const want = native[i + 1];
+      const atmRow = atmLibmRow(row, want, run);
       PLAN_COLUMNS.forEach((c, k) => {
         const w = want[k];
         const got = row[c];
@@ -106,7 +123,9 @@ for (const [name, input, extraUlp] of INPUTS) for (const run0 of RUNS) {
         numbers++;
         if (bits(g) === bits(Number(w))) return;
         const d = ulps(g, Number(w));
-        (d <= maxUlpOf(c, run) ? near : differ).push(`row ${i + 1} ${c}: ${g} vs ${w} (${d} ulp)`);
+        const rel = Math.abs(g - Number(w)) / Math.max(Math.abs(g), Math.abs(Number(w)));
+        const ok = d <= maxUlpOf(c, run) || (atmRow && ATM_COLUMNS.has(c) && rel <= ATM_LIBM_REL);
+        (ok ? near : differ).push(`row ${i + 1} ${c}: ${g} vs ${w} (${d} ulp)`);
       });
     });
     assert.deepEqual(differ, [], `${differ.length} of ${numbers} numbers differ by more than ${run.maxUlp} ulp`);
