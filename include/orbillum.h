@@ -368,6 +368,8 @@ typedef struct oi_shadow {
  *          OI_ERR_MODEL, OI_ERR_RADIUS  the model is invalid (see oi_model)
  *          OI_ERR_NONFINITE  a NaN or infinite component
  *          OI_ERR_ZERO_VECTOR  sun_km or point_km is the zero vector
+ *          OI_ERR_GEOMETRY   with earth_shape OI_EARTH_WGS84, |point| beyond
+ *                            OI_POSITION_MAX_KM (the sphere takes any finite point)
  *          OI_ERR_BELOW_SURFACE  |point| <= earth_radius_km
  *          OI_ERR_GEOMETRY   |sun| <= sun_radius_km + earth_radius_km
  *          OI_ERR_NONFINITE  sun - point overflows

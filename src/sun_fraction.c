@@ -172,7 +172,9 @@ static int sun_geometry(const oi_real sun_km[3], const oi_real point_km[3], cons
     if (ds == (oi_real)0 || g->dp == (oi_real)0) return OI_ERR_ZERO_VECTOR;
 #ifndef OI_NO_OBLATE
     if (m->earth_shape == OI_EARTH_WGS84) {
-        /* the ellipsoid (src/oblate.c): its outside, and the plain forms */
+        /* the ellipsoid (src/oblate.c): its outside, and the plain forms,
+         * whose squares stay finite for points within OI_POSITION_MAX_KM */
+        if (g->dp > (oi_real)OI_POSITION_MAX_KM) return OI_ERR_GEOMETRY;
         if (!oi__oblate_outside(point_km, m->earth_radius_km)) return OI_ERR_BELOW_SURFACE;
         g->q_earth = (oi_real)-1;
     } else
