@@ -712,7 +712,8 @@ typedef struct oi_illum {
  *          OI_ERR_BELOW_SURFACE  the Moon at or below the Earth's surface
  *                            (its position given)
  *          OI_ERR_OBSERVER_AT_TARGET  the observer inside the target's sphere
- *                            (range <= target_radius_m)
+ *                            (range <= target_radius_m), or with a shape
+ *                            range^2 <= the sum of its facets' areas
  *          OI_ERR_ALBEDO     OI_ALBEDO_MAP: a map value the call reads is NaN
  *                            or outside [0, 1]
  * Notes:   e_sun = TSI (AU / |sun - target|)^2 fraction_atm;

@@ -386,6 +386,18 @@ static OI_NOINLINE int observer_term(const oi_scene *scene, const oi_model *m,
     /* radius and range in the same unit */
     ratio = scene->target_radius_m / (out->range_km * OI_R(1000.0));
     if (!(ratio < (oi_real)1)) return OI_ERR_OBSERVER_AT_TARGET;
+#ifndef OI_NO_FACETS
+    /* a shape's facets send area / range^2: the observer farther than the
+     * shape's size, sqrt of its whole area, keeps that at most 1 */
+    if (scene->shape != NULL) {
+        const oi_real range_m = out->range_km * OI_R(1000.0);
+        oi_real area = (oi_real)0;
+        unsigned i;
+        for (i = 0; i < scene->shape->n_facets && i < (unsigned)OI_FACETS_MAX; i++)
+            area += scene->shape->facets[i].area_m2;
+        if (!(range_m * range_m > area)) return OI_ERR_OBSERVER_AT_TARGET;
+    }
+#endif
     out->flux_sun = reflected_flux(out->e_sun, out->dir_sun, obs_hat, ratio,
                                    scene->target_albedo, &out->phase_sun);
     out->flux_earth = reflected_flux(out->e_earth, out->dir_earth, obs_hat, ratio,

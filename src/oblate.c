@@ -485,32 +485,34 @@ oi_real oi__oblate_visible(const oi_real s[3], oi_real r, const oi_real p[3], oi
 }
 
 /* Angular radius of the ellipsoid's silhouette seen from p, along the great
- * circle from the nadir -p towards s: the root tan(theta) of the cone's form
- * on cos(theta) n + sin(theta) e (n = -p/|p|, e the unit normal towards s),
- * m_ee tau^2 + 2 m_ne tau + m_nn = 0 with m_nn > 0 (the nadir inside). */
+ * circle from the nadir n = -p/|p| towards s (e the unit normal towards s).
+ * Scaling z by k = a/b (S) makes the ellipsoid the sphere of radius a, whose
+ * cone from p' = S p is circular: half-angle beta, tan(beta) = a /
+ * sqrt(|p'|^2 - a^2). The direction n + tau e maps to A + tau B (A = S n,
+ * B = S e) and lies on the cone when its angle from A is beta:
+ * tau (|A x B| - tan(beta) A.B) = tan(beta) |A|^2. No difference of nearly
+ * equal terms at any distance (the quadratic form's entries lose (|p|/a)^2
+ * ulps far away); beyond 90 deg the denominator is negative and atan2 says so. */
 oi_real oi__oblate_radius_towards(const oi_real p[3], oi_real a, const oi_real s[3])
 {
-    oi_real f[3][3], w[3], c, s2, n[3], xn[3], xe[3], mnn, mne, mee, d, tau;
+    oi_real f[3][3], n[3], big_a[3], big_b[3], c[3], pn, q, tb;
     int i;
+    const oi_real k = OI_SQRT((oi_real)1 + K2M1);
     const oi_real dp = oi__norm_bounded(p);
     for (i = 0; i < 3; ++i) n[i] = -p[i] / dp;
     disc_frame(n, s, f);
-    earth_cone_world(p, a, w, &c, &s2);
-    /* the form's entries as in cone_in_frame */
-    oi__cross(w, f[0], xn);
-    oi__cross(w, f[1], xe);
-    mnn = s2 - oi__dot(xn, xn) - c * K2M1 * f[0][2] * f[0][2];
-    mne = -oi__dot(xn, xe) - c * K2M1 * f[0][2] * f[1][2];
-    mee = s2 - oi__dot(xe, xe) - c * K2M1 * f[1][2] * f[1][2];
-    d = mne * mne - mee * mnn;
-    if (!(d > (oi_real)0)) d = (oi_real)0;
-    /* the positive root (the roots' product m_nn / m_ee < 0), in the form
-     * without cancellation; as an angle, atan2 of positive parts */
-    if (mne >= (oi_real)0) {
-        tau = -mee;
-        return OI_ATAN2(mne + OI_SQRT(d), tau > (oi_real)0 ? tau : (oi_real)0);
+    for (i = 0; i < 3; ++i) {
+        big_a[i] = f[0][i];
+        big_b[i] = f[1][i];
     }
-    return OI_ATAN2(mnn, -mne + OI_SQRT(d));
+    big_a[2] *= k;
+    big_b[2] *= k;
+    pn = dp * oi__norm_bounded(big_a);
+    q = (pn - a) * (pn + a);
+    if (!(q > (oi_real)0)) return OI_HALF_PI_R; /* on the surface (callers check outside) */
+    tb = a / OI_SQRT(q);
+    oi__cross(big_a, big_b, c);
+    return OI_ATAN2(tb * oi__dot(big_a, big_a), oi__norm_bounded(c) - tb * oi__dot(big_a, big_b));
 }
 
 #else
