@@ -60,7 +60,7 @@ void oi__shape_flux(const oi_scene *s, const oi_model *m, const oi_real obs_hat[
     facet_scene fs;
     const oi_shape *shape = s->shape;
     const oi_real range_m = out->range_km * OI_R(1000.0);
-    const oi_real inv_d2 = (oi_real)1 / (range_m * range_m);
+    const oi_real d2 = range_m * range_m; /* above the shape's area (oi_illuminate) */
     unsigned i, n = shape->n_facets;
     int side;
 
@@ -92,7 +92,7 @@ void oi__shape_flux(const oi_scene *s, const oi_model *m, const oi_real obs_hat[
             }
             co = oi__dot(nrm, obs_hat);
             if (!(co > (oi_real)0)) continue;
-            geom = f->area_m2 * co * inv_d2;
+            geom = f->area_m2 / d2 * co; /* area / d2 < 1: 1 / d2 alone may overflow */
             point_source(out->e_sun, out->dir_sun, nrm, obs_hat, rho_d, f, &ds, &ss);
             point_source(out->e_moon, out->dir_moon, nrm, obs_hat, rho_d, f, &dm, &sm);
             e_face = earth_irradiance(&fs, s, m, out, nrm);
