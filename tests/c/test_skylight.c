@@ -21,6 +21,14 @@
 #include "orbillum.h"
 #include "oi_test_util.h"
 
+/* without the earthshine table the Earth's light is the Lambert far field,
+ * with its warning */
+#ifdef OI_NO_EARTH_TABLE
+#define ST_EARTH OI_WARN_TABLE_RANGE
+#else
+#define ST_EARTH OI_OK
+#endif
+
 #ifndef OI_NO_SKYLIGHT
 static const double PI = 3.14159265358979323846;
 static const double AU = 149597870.7;
@@ -156,12 +164,12 @@ static void test_illuminate(void **state)
         int st, i;
         leo_scene(&sc, thetas[k] * DEG, 400.0);
         st = oi_illuminate(&sc, NULL, &without);
-        check_int(OI_OK, st, "without sky");
+        check_int(ST_EARTH, st, "without sky");
         check_close(0.0, (double)without.e_sky, 0, 0, "e_sky off");
         check_close(0.0, (double)without.flux_sky, 0, 0, "flux_sky off");
         sc.terms |= OI_TERM_SKY;
         st = oi_illuminate(&sc, NULL, &with);
-        check_int(OI_OK, st, "with sky");
+        check_int(ST_EARTH, st, "with sky");
         st = oi_skylight((oi_real)(thetas[k] * DEG), (oi_real)400.0, NULL, &e, &psi);
         check_int(OI_OK, st, "oi_skylight");
         e0 = TSI;
@@ -215,10 +223,10 @@ static void test_expose_background(void **state)
          -2.0 * r_obs * (RE + 40.0) / sqrt(r_obs * r_obs - (RE + 40.0) * (RE + 40.0)), 0);
     sc.has_observer = 1;
     sc.terms = OI_TERM_SUN | OI_TERM_EARTH;
-    check_int(OI_OK, oi_illuminate(&sc, NULL, &il), "illuminate");
+    check_int(ST_EARTH, oi_illuminate(&sc, NULL, &il), "illuminate");
     (void)oi_expose_scene(cam, &sc, &il, NULL, NULL, &without);
     sc.terms |= OI_TERM_SKY;
-    check_int(OI_OK, oi_illuminate(&sc, NULL, &il), "illuminate with sky");
+    check_int(ST_EARTH, oi_illuminate(&sc, NULL, &il), "illuminate with sky");
     (void)oi_expose_scene(cam, &sc, &il, NULL, NULL, &with);
     if (!(with.background_w_m2_sr > without.background_w_m2_sr)) {
         print_error("sky background %g vs %g\n", (double)with.background_w_m2_sr,
@@ -228,7 +236,7 @@ static void test_expose_background(void **state)
     /* a nadir view of the sunlit Earth: the ground's radiance only */
     set3(sc.observer_km, r_obs, 0, 0);
     set3(sc.target_km, RE + 500.0, 0, 0);
-    check_int(OI_OK, oi_illuminate(&sc, NULL, &il), "illuminate day");
+    check_int(ST_EARTH, oi_illuminate(&sc, NULL, &il), "illuminate day");
     (void)oi_expose_scene(cam, &sc, &il, NULL, NULL, &with);
     sc.terms &= ~OI_TERM_SKY;
     (void)oi_expose_scene(cam, &sc, &il, NULL, NULL, &without);
