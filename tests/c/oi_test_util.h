@@ -8,6 +8,8 @@
 #define OI_TEST_UTIL_H
 
 #include <float.h>
+#include <math.h>
+#include <string.h>
 
 /* Fixed-seed uniform [0, 1): 64-bit LCG (Knuth's MMIX constants), the top
  * 53 bits of the state. */
@@ -55,6 +57,34 @@ static inline void check_rel(double want, double got, double rel, const char *wh
 /* A reference precision above the working one (long double for the double
  * build, double for the float build), and the ulp of a working-precision
  * value at |v| (subnormals included), for errors in ulp. */
+/* An ideal camera of one setting (1 s, gain 1, read noise 5 e-): optics and
+ * detector of unit efficiency, 1e-19 J photons, IFOV 1e-5 rad, full well
+ * 1e9 e-, aperture area 1 m^2; a test sets what it varies. */
+#ifndef OI_NO_EXPOSURE
+static inline oi_camera oi_test_camera(const char *name)
+{
+    oi_camera c;
+    memset(&c, 0, sizeof c);
+    c.name = name;
+    c.aperture_m = (oi_real)(2.0 / sqrt(3.14159265358979323846));
+    c.focal_length_m = 1;
+    c.pixel_pitch_m = (oi_real)1e-5;
+    c.transmission = 1;
+    c.quantum_efficiency = 1;
+    c.band_fraction = 1;
+    c.photon_energy_j = (oi_real)1e-19;
+    c.full_well_e = (oi_real)1e9;
+    c.psf_peak_fraction = (oi_real)0.25;
+    c.fov_rad = (oi_real)0.1;
+    c.n_times = 1;
+    c.times_s[0] = 1;
+    c.n_gains = 1;
+    c.gains[0] = 1;
+    c.read_noise_e[0] = 5;
+    return c;
+}
+#endif
+
 #ifdef OI_SINGLE_PRECISION
 typedef double ref_real;
 #define MANT_BITS 24

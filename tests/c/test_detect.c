@@ -36,25 +36,8 @@ static uint64_t rng = 20261202u;
  * read noise 5 e-, dark current giving the background. */
 static oi_camera camera_of(double p_fa, double p_d, double dark)
 {
-    oi_camera c;
-    memset(&c, 0, sizeof c);
-    c.name = "detect";
-    c.aperture_m = (oi_real)(2.0 / sqrt(PI));
-    c.focal_length_m = 1;
-    c.pixel_pitch_m = (oi_real)1e-5;
-    c.transmission = 1;
-    c.quantum_efficiency = 1;
-    c.band_fraction = 1;
-    c.photon_energy_j = (oi_real)1e-19;
-    c.full_well_e = (oi_real)1e9;
+    oi_camera c = oi_test_camera("detect");
     c.dark_current_e_s = (oi_real)dark;
-    c.psf_peak_fraction = (oi_real)0.25;
-    c.fov_rad = (oi_real)0.1;
-    c.n_times = 1;
-    c.times_s[0] = 1;
-    c.n_gains = 1;
-    c.gains[0] = 1;
-    c.read_noise_e[0] = 5;
     c.detect_false_alarm = (oi_real)p_fa;
     c.detect_probability = (oi_real)p_d;
     return c;

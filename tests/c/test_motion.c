@@ -29,28 +29,13 @@
 #endif
 
 #ifndef OI_NO_EXPOSURE
-static const double PI = 3.14159265358979323846;
 
 /* A camera of IFOV 1e-5 rad, one time, one gain. */
 static oi_camera one_setting(double t, double psf_peak)
 {
-    oi_camera c;
-    memset(&c, 0, sizeof c);
-    c.name = "motion";
-    c.aperture_m = (oi_real)(2.0 / sqrt(PI));
-    c.focal_length_m = 1;
-    c.pixel_pitch_m = (oi_real)1e-5;
-    c.transmission = 1;
-    c.quantum_efficiency = 1;
-    c.band_fraction = 1;
-    c.photon_energy_j = (oi_real)1e-19;
-    c.full_well_e = (oi_real)1e9;
+    oi_camera c = oi_test_camera("motion");
     c.psf_peak_fraction = (oi_real)psf_peak;
-    c.fov_rad = (oi_real)0.1;
-    c.n_times = 1;
     c.times_s[0] = (oi_real)t;
-    c.n_gains = 1;
-    c.gains[0] = 1;
     c.read_noise_e[0] = 3;
     return c;
 }

@@ -34,25 +34,9 @@
  * the only background: background_e is the dark current at the temperature. */
 static oi_camera camera_of(double dark, double ref, double doubling, double lo, double hi)
 {
-    oi_camera c;
-    memset(&c, 0, sizeof c);
-    c.name = "temp";
+    oi_camera c = oi_test_camera("temp");
     c.aperture_m = (oi_real)0.1;
-    c.focal_length_m = 1;
-    c.pixel_pitch_m = (oi_real)1e-5;
-    c.transmission = 1;
-    c.quantum_efficiency = 1;
-    c.band_fraction = 1;
-    c.photon_energy_j = (oi_real)1e-19;
-    c.full_well_e = (oi_real)1e9;
     c.dark_current_e_s = (oi_real)dark;
-    c.psf_peak_fraction = (oi_real)0.25;
-    c.fov_rad = (oi_real)0.1;
-    c.n_times = 1;
-    c.times_s[0] = 1;
-    c.n_gains = 1;
-    c.gains[0] = 1;
-    c.read_noise_e[0] = 5;
     c.dark_ref_temp_c = (oi_real)ref;
     c.dark_doubling_c = (oi_real)doubling;
     c.temp_min_c = (oi_real)lo;
