@@ -5,7 +5,8 @@
   python -m bake earthshine            oi_earth_diffuse (bake/config/default.json), every
                                        mission scene bake/config/scene_*.json and the angular
                                        table oi_earth_angular (bake/earthshine/angular_table.py)
-  python -m bake atmosphere            oi_atm_vband (bake/config/atmosphere.json)
+  python -m bake atmosphere            oi_atm_vband and oi_atm_total, the V and the total band
+                                       (bake/config/atmosphere.json)
   python -m bake skylight              oi_sky_vband (bake/config/skylight.json): the sunlight the
                                        atmosphere scatters towards a target (bake/skylight/)
   python -m bake --scene FILE          only this mission scene (repeatable): its altitude band
@@ -51,7 +52,7 @@ def outputs(target, scenes=()):
             out += ["%s/%s.%s" % (TABLES, ang.NAME, e) for e in ("c", "h", "json")]
     if target in ("atmosphere", "all") and not scenes:
         from .atmosphere import table as at
-        out += ["%s/%s.%s" % (TABLES, at.NAME, e) for e in ("c", "h", "json")]
+        out += ["%s/%s.%s" % (TABLES, n, e) for n in at.NAMES for e in ("c", "h", "json")]
     if target in ("skylight", "all") and not scenes:
         from .skylight import table as sk
         out += ["%s/%s.%s" % (TABLES, sk.NAME, e) for e in ("c", "h", "json")]

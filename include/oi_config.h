@@ -52,6 +52,14 @@
  *                        returns NULL) and OI_TERM_SKY (a scene asking for it gets
  *                        OI_ERR_TERMS); the oi_illum and oi_model fields stay (ABI),
  *                        zero. Not OI_NO_SKY, which removes the camera's zodiacal light.
+ *   OI_NO_TOTAL_BAND     no total-irradiance band: removes its atmosphere table
+ *                        from the default (oi_atm_total_default() returns
+ *                        NULL, so tables/oi_atm_total.c is not linked) and its
+ *                        code in src/atmosphere.c; a model with band =
+ *                        OI_BAND_TOTAL is rejected with OI_ERR_MODEL (the
+ *                        fields and constants stay: they belong to the
+ *                        model's ABI, as with OI_NO_LIMB_DARKENING).
+ *                        docs/atmosphere.md.
  * An option that removes a feature removes its declarations too, so code that
  * still uses the feature fails to compile.
  */
@@ -89,6 +97,7 @@ typedef double oi_real;
 #define oi_earth_angular_default oi_earth_angular_default_sp
 #define oi_earthshine_sphere oi_earthshine_sphere_sp
 #define oi_atm_table_default oi_atm_table_default_sp
+#define oi_atm_total_default oi_atm_total_default_sp
 #define oi_sky_table_default oi_sky_table_default_sp
 #define oi_skylight oi_skylight_sp
 #define oi_moon_phase_law oi_moon_phase_law_sp

@@ -155,6 +155,14 @@ const char *oi_status_name(int status);
 #define OI_LIMB_UNIFORM (0)   /* uniform solar disc (default) */
 #define OI_LIMB_DARKENED (1)  /* irradiance uses a limb-darkened disc */
 
+/* oi_model.band: the light that oi_shadow.fraction_atm (sun_fraction_atm)
+ * and e_sun measure: both through the atmosphere table of the band (the
+ * geometric fractions do not depend on it; docs/atmosphere.md "Two bands") */
+#define OI_BAND_V     (0)     /* Johnson V, for cameras (default) */
+#define OI_BAND_TOTAL (1)     /* total solar irradiance, for power, thermal and
+                                 radiation pressure (OI_ERR_MODEL with
+                                 OI_NO_TOTAL_BAND) */
+
 /*
  * Model constants and options. Zero in any field means its default.
  * Fields are validated by every function that takes a model: a non-finite
@@ -188,6 +196,9 @@ typedef struct oi_model {
     int albedo_map_n_lon;     /* cells per row, 1..OI_ALBEDO_MAP_MAX_DIM */
     const oi_sky_table *sky_table;     /* scattered-sunlight table; NULL:
                                           oi_sky_table_default() */
+    int band;                 /* OI_BAND_V or OI_BAND_TOTAL */
+    const oi_atm_table *atm_total_table; /* the total band's atmosphere table; NULL:
+                                            oi_atm_total_default() */
 } oi_model;
 
 /*
@@ -251,6 +262,13 @@ typedef struct oi_model {
  */
 const oi_earth_table *oi_earth_table_default(void);
 const oi_atm_table *oi_atm_table_default(void);
+/* oi_atm_total_default: the total band's atmosphere table (oi_atm_total,
+ * tables/oi_atm_total.c), used with band = OI_BAND_TOTAL when
+ * atm_total_table is NULL; NULL with OI_NO_TOTAL_BAND or OI_NO_ATMOSPHERE.
+ * Its own translation unit (src/atm_table_total_default.c), as the others;
+ * trusted. A caller's atm_total_table is checked as atm_table is, where it
+ * would be used (band total, atmosphere on). */
+const oi_atm_table *oi_atm_total_default(void);
 /* oi_earth_angular_default: the earthshine angular table (oi_earth_angular,
  * include/oi_table.h) a sphere's reflection of earthshine uses with
  * earth_reflection = OI_EARTH_REFLECT_MOMENTS; NULL with OI_NO_EARTH_ANGULAR

@@ -22,11 +22,13 @@ OPTSET_no_facets ?= -DOI_NO_FACETS
 OPTSET_no_oblate ?= -DOI_NO_OBLATE
 OPTSET_no_albedo_models ?= -DOI_NO_ALBEDO_MODELS
 OPTSET_no_skylight ?= -DOI_NO_SKYLIGHT
+OPTSET_no_total_band ?= -DOI_NO_TOTAL_BAND
 OPTSET_sun_only ?= -DOI_NO_MOON -DOI_NO_EXPOSURE -DOI_NO_ATMOSPHERE -DOI_NO_EARTH_TABLE -DOI_NO_SKY \
   -DOI_NO_FACETS -DOI_NO_OBLATE -DOI_NO_SKYLIGHT
 OPTSET_sun_uniform ?= $(OPTSET_sun_only) -DOI_NO_LIMB_DARKENING
 OPTSETS := full no_moon no_exposure no_atmosphere no_earth_table no_earth_angular no_limb_darkening \
-           no_sky no_facets no_oblate no_albedo_models no_skylight sun_only sun_uniform
+           no_sky no_facets no_oblate no_albedo_models no_skylight sun_only sun_uniform \
+           no_total_band
 # every option set `make size` measures is tested too (mk/target.mk, mk/size.mk)
 OPTSETS += $(filter-out $(OPTSETS),$(CROSS_OPTSETS) $(SIZE_OPTSETS))
 $(foreach s,$(OPTSETS),$(if $(filter undefined,$(origin OPTSET_$(s))),$(error option set $(s) has no OPTSET_$(s))))

@@ -2,7 +2,8 @@
 /*
  * atmosphere.c: sunlight refracted and dimmed by the Earth's atmosphere into
  * the shadow, looked up in a baked oi_atm_table (include/oi_table.h; the
- * default tables/oi_atm_vband.c). A caller's table is checked by
+ * defaults tables/oi_atm_vband.c, and tables/oi_atm_total.c for the total
+ * band, oi_model.band). A caller's table is checked by
  * src/atm_table_check.c.
  * The whole file disappears with OI_NO_ATMOSPHERE.
  */
@@ -232,16 +233,31 @@ static oi_real sun_unit(const oi_real sun_km[3], oi_real s_hat[3])
  * behind a straight edge, the edge's position taken from the table's own F
  * (bake/atmosphere/disc_shift.py: sigma = sqrt(g) (1 - 2F) (C0 + C1 g + C2
  * g^2), g = F (1 - F), fit error 7.0e-4 in the fraction). Zero at F = 0,
- * 1/2 and 1. */
+ * 1/2 and 1. The total band's table holds a disc with the Eddington law
+ * (2 + 3 mu) / 5, whose own fit is OI_ATM_TOTAL_SHIFT_C* (error 4.0e-4). */
 #define OI_ATM_SHIFT_C0 OI_R(0.256474)
 #define OI_ATM_SHIFT_C1 OI_R(-1.25786)
 #define OI_ATM_SHIFT_C2 OI_R(3.00221)
-static oi_real uniform_shift(oi_real f)
+#ifndef OI_NO_TOTAL_BAND
+#define OI_ATM_TOTAL_SHIFT_C0 OI_R(0.229226)
+#define OI_ATM_TOTAL_SHIFT_C1 OI_R(-0.92399)
+#define OI_ATM_TOTAL_SHIFT_C2 OI_R(2.04122)
+#endif
+static oi_real uniform_shift(oi_real f, int band)
 {
     const oi_real g = f * ((oi_real)1 - f);
+    oi_real c0 = OI_ATM_SHIFT_C0, c1 = OI_ATM_SHIFT_C1, c2 = OI_ATM_SHIFT_C2;
     if (!(g > (oi_real)0)) return (oi_real)0;
-    return OI_SQRT(g) * ((oi_real)1 - (oi_real)2 * f) *
-           (OI_ATM_SHIFT_C0 + g * (OI_ATM_SHIFT_C1 + g * OI_ATM_SHIFT_C2));
+#ifndef OI_NO_TOTAL_BAND
+    if (band == OI_BAND_TOTAL) {
+        c0 = OI_ATM_TOTAL_SHIFT_C0;
+        c1 = OI_ATM_TOTAL_SHIFT_C1;
+        c2 = OI_ATM_TOTAL_SHIFT_C2;
+    }
+#else
+    (void)band;
+#endif
+    return OI_SQRT(g) * ((oi_real)1 - (oi_real)2 * f) * (c0 + g * (c1 + g * c2));
 }
 
 /* The table's fraction (limb-darkened disc) at continuous indices iu, it,
@@ -258,10 +274,14 @@ static oi_real table_fraction(const oi_atm_table *t, oi_real iu, oi_real it, int
     return clamp01(OI_EXP(q * t->ln10) - t->f_floor);
 }
 
-/* The table that serves a resolved model (a caller's was checked by
- * oi__model_resolve; the default is trusted); NULL: none. */
+/* The table that serves a resolved model's band (a caller's was checked by
+ * oi__model_resolve; the defaults are trusted); NULL: none. */
 static const oi_atm_table *table_of(const oi_model *m)
 {
+#ifndef OI_NO_TOTAL_BAND
+    if (m->band == OI_BAND_TOTAL)
+        return m->atm_total_table != NULL ? m->atm_total_table : oi_atm_total_default();
+#endif
     return m->atm_table != NULL ? m->atm_table : oi_atm_table_default();
 }
 
@@ -273,13 +293,14 @@ static const oi_atm_table *table_of(const oi_model *m)
  *   sun_km    oi_real[3]  Sun position, Earth-centred (km), finite, nonzero
  *   point_km  oi_real[3]  point position, Earth-centred (km), above the surface
  *   m         oi_model*   resolved model (oi__model_resolve): earth_radius_km,
- *                         sun_radius_km, limb_darkening, atm_table are used
+ *                         sun_radius_km, limb_darkening, band, atm_table
+ *                         (band V) or atm_total_table (band total) are used
  *   frac      oi_real     geometric visible fraction of the uniform disc
  *   frac_ld   oi_real     geometric visible fraction of the limb-darkened disc
  *                         (both as oi_sun_fraction computes them)
  * Returned:
- *   fraction_atm oi_real*  fraction of the unobstructed sunlight (V band)
- *                          reaching the point, [0, 1]
+ *   fraction_atm oi_real*  fraction of the unobstructed sunlight (in the
+ *                          model's band) reaching the point, [0, 1]
  * Given and returned:
  *   dir       oi_real[3]  (may be NULL) on entry the unit vector from the
  *                         point to the Sun (the caller sets it; see Note 5);
@@ -307,7 +328,8 @@ static const oi_atm_table *table_of(const oi_model *m)
  *     exactly 0, above it the geometric one. Rows are log-spaced in z; along
  *     rho the nodes are uniform in a blend of the model ray altitude v and
  *     rho up to v = v_mid_km, then uniform in rho.
- *  2. The table holds the limb-darkened disc (Neckel & Labs 1994). With
+ *  2. The table holds the limb-darkened disc (Neckel & Labs 1994; the total
+ *     band's the Eddington law, docs/atmosphere.md "Two bands"). With
  *     OI_LIMB_UNIFORM the table is read a second time, at the point moved
  *     along rho by a uniform_shift(F) (at most 0.042 a) to where the
  *     limb-darkened disc's fraction equals the uniform disc's behind an
@@ -372,7 +394,7 @@ int oi__atm_fraction(const oi_real sun_km[3], const oi_real point_km[3], const o
     if (m->limb_darkening != OI_LIMB_DARKENED) {
         /* the uniform disc: the table read again at the shifted point
          * (Note 2); the direction stays the limb-darkened disc's */
-        oi_real ds = a * uniform_shift(f);
+        oi_real ds = a * uniform_shift(f, m->band);
         if (ds != (oi_real)0) {
             oi_real iu2, it2, fu2, ft2;
             int i2, j2;

@@ -40,7 +40,8 @@ typedef char model_options_are_0_or_1[(OI_EARTH_TABLE == 0 && OI_EARTH_LAMBERT =
                                        OI_MOON_PHASE_LAW == 0 && OI_MOON_LAMBERT == 1 &&
                                        OI_LIMB_UNIFORM == 0 && OI_LIMB_DARKENED == 1 &&
                                        OI_EARTH_REFLECT_MOMENTS == 0 && OI_EARTH_REFLECT_MEAN == 1 &&
-                                       OI_EARTH_SPHERE == 0 && OI_EARTH_WGS84 == 1)
+                                       OI_EARTH_SPHERE == 0 && OI_EARTH_WGS84 == 1 &&
+                                       OI_BAND_V == 0 && OI_BAND_TOTAL == 1)
                                           ? 1
                                           : -1];
 
@@ -67,7 +68,7 @@ int oi__model_resolve(const oi_model *in, oi_model *out)
     }
     /* each option 0 or 1 (see model_options_are_0_or_1) */
     if ((in->earth_model | in->moon_model | in->limb_darkening | in->earth_reflection |
-         in->earth_shape) & ~1)
+         in->earth_shape | in->band) & ~1)
         return OI_ERR_MODEL;
 #ifdef OI_NO_LIMB_DARKENING
     /* the limb-darkened disc is compiled out (include/oi_config.h) */
@@ -77,11 +78,21 @@ int oi__model_resolve(const oi_model *in, oi_model *out)
     /* the ellipsoid is compiled out (include/oi_config.h) */
     if (in->earth_shape == OI_EARTH_WGS84) return OI_ERR_MODEL;
 #endif
+#ifdef OI_NO_TOTAL_BAND
+    /* the total band is compiled out (include/oi_config.h) */
+    if (in->band == OI_BAND_TOTAL) return OI_ERR_MODEL;
+#endif
 #ifndef OI_NO_ATMOSPHERE
     /* a caller's atmosphere table, where it would be used (the default is
      * trusted; the earthshine table is checked by oi_earthshine) */
-    if (in->atm_table != NULL && in->no_atmosphere == 0 && !oi__atm_table_valid(in->atm_table))
+    if (in->atm_table != NULL && in->no_atmosphere == 0 && in->band == OI_BAND_V &&
+        !oi__atm_table_valid(in->atm_table))
         return OI_ERR_MODEL;
+#ifndef OI_NO_TOTAL_BAND
+    if (in->atm_total_table != NULL && in->no_atmosphere == 0 && in->band == OI_BAND_TOTAL &&
+        !oi__atm_table_valid(in->atm_total_table))
+        return OI_ERR_MODEL;
+#endif
 #endif
     for (i = 0; i < N_FIELDS; i++) *(oi_real *)(void *)((char *)out + field_offset[i]) = v[i];
     out->earth_model = in->earth_model;
@@ -92,6 +103,8 @@ int oi__model_resolve(const oi_model *in, oi_model *out)
     out->no_atmosphere = in->no_atmosphere != 0;
     out->earth_table = in->earth_table;
     out->atm_table = in->atm_table;
+    out->band = in->band;
+    out->atm_total_table = in->atm_total_table;
     /* a caller's sky table is checked where it is used (src/skylight.c) */
     out->sky_table = in->sky_table;
     return OI_OK;

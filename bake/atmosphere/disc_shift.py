@@ -17,7 +17,9 @@ the penumbra where the atmosphere has moved and widened it. sigma is fitted
 as sqrt(g) (1 - 2F) (c0 + c1 g + c2 g^2), g = F (1 - F), by least squares;
 it is zero at F = 0, 1/2, 1, so the lit side and the umbra keep the table's
 value and the geometric fraction outside the atmosphere's reach.
-The coefficients are written into src/atmosphere.c (OI_ATM_SHIFT_C*);
+One set per band, for the band's disc (rays.py: NL94_559 for V, EDDINGTON
+for the total band). The coefficients are written into src/atmosphere.c
+(OI_ATM_SHIFT_C* and OI_ATM_TOTAL_SHIFT_C*);
 tests/python/test_atm.py checks them against `coefficients()`.
 
     python -m bake.atmosphere.disc_shift      # prints the coefficients and the fit's error
@@ -27,7 +29,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..common.quadrature import gauss_legendre
-from .rays import NL94_559
+from .rays import EDDINGTON, NL94_559
 
 
 def _edge_fractions(x, law=NL94_559, n=96):
@@ -84,11 +86,11 @@ def _basis(f):
     return np.stack([r, r * g, r * g * g], axis=-1)
 
 
-def coefficients(n_grid=801):
+def coefficients(n_grid=801, law=NL94_559):
     """(c0, c1, c2) of sigma(F), least squares, rounded to 6 significant digits."""
     x = np.linspace(-1.0, 1.0, n_grid)[1:-1]
-    _, w = _edge_fractions(x)
-    c, *_ = np.linalg.lstsq(_basis(w), shift(x), rcond=None)
+    _, w = _edge_fractions(x, law)
+    c, *_ = np.linalg.lstsq(_basis(w), shift(x, law), rcond=None)
     return tuple(float("%.6g" % v) for v in c)
 
 
@@ -97,15 +99,17 @@ def sigma(f, c):
     return _basis(f) @ np.asarray(c, dtype=float)
 
 
-def fit_error(c, n_grid=801):
+def fit_error(c, n_grid=801, law=NL94_559):
     """max |w(x + sigma(w(x))) - u(x)| over the straight-edged penumbra."""
     x = np.linspace(-1.0, 1.0, n_grid)
-    u, w = _edge_fractions(x)
-    _, w2 = _edge_fractions(np.clip(x + sigma(w, c), -1, 1))
+    u, w = _edge_fractions(x, law)
+    _, w2 = _edge_fractions(np.clip(x + sigma(w, c), -1, 1), law)
     return float(np.max(np.abs(w2 - u)))
 
 
 if __name__ == "__main__":
-    c = coefficients()
-    print("c0 c1 c2 = %r %r %r" % c)
-    print("max |w(x + sigma) - u(x)| = %.2e" % fit_error(c))
+    for name, law in (("V band (Neckel & Labs 1994, 559.95 nm)", NL94_559),
+                      ("total band (Eddington)", EDDINGTON)):
+        c = coefficients(law=law)
+        print("%s: c0 c1 c2 = %r %r %r" % ((name,) + c))
+        print("  max |w(x + sigma) - u(x)| = %.2e" % fit_error(c, law=law))

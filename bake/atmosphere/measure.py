@@ -14,7 +14,8 @@ from .window import D_MAX, D_MIN, NT, Z_MAX, Z_MIN, Window, lookup
 MEASURE_SEED = 1
 
 
-def measure(rays, q, psi, alpha_c, h_c, n=400, seed=MEASURE_SEED, progress=False):
+def measure(rays, q, psi, alpha_c, h_c, n=400, seed=MEASURE_SEED, progress=False,
+            law=rays_mod.NL94_559):
     """Errors of the lookup against the reference at random off-grid points
     (fixed seed): z log-uniform, rho uniform in the window, d uniform."""
     rng = np.random.default_rng(seed)
@@ -26,10 +27,10 @@ def measure(rays, q, psi, alpha_c, h_c, n=400, seed=MEASURE_SEED, progress=False
     for m in range(n):
         nodes = Window(zs[m], ds[m], alpha_c, h_c).nodes()
         rho = np.interp(ts[m] * (NT - 1), np.arange(NT), nodes)
-        F, p = rays_mod.fraction(rays, zs[m], [rho], d_sun=ds[m])
+        F, p = rays_mod.fraction(rays, zs[m], [rho], d_sun=ds[m], law=law)
         Fl, pl, st = lookup(q, psi, alpha_c, h_c, zs[m], rho, ds[m])
         if st == 1:
-            Fl, pl = rays_mod.fraction(None, zs[m], [rho], d_sun=ds[m])
+            Fl, pl = rays_mod.fraction(None, zs[m], [rho], d_sun=ds[m], law=law)
             Fl, pl = Fl[0], pl[0]
         out.append((zs[m], rho, ds[m], F[0], Fl, p[0], pl))
         bar.step()

@@ -50,8 +50,14 @@ Extinction (V band)
   tropopause). cloud_fraction = 1 is an opaque deck. Seed mode: no
   extinction, no clouds; only the solid Earth blocks.
 
-Band
-----
+Bands
+-----
+`Profile.band`: "V" (the default, for cameras) or "total" (total solar
+irradiance, for power, thermal and radiation pressure: the 5772 K black
+body's energy from 350 to 4000 nm, see TOTAL_LAMBDA_NM; Rayleigh, ozone and
+aerosol by the wavelength laws above, extended past 1000 nm as stated in
+their functions; no water vapour, O2 or CO2 bands).
+
 Johnson-Cousins V as tabulated by Bessell (1990, PASP 102, 1181, Table 2),
 470-700 nm every 10 nm, weighted by the solar spectrum approximated by a
 5772 K black body (IAU 2015 B3 nominal effective temperature). The band
@@ -155,19 +161,49 @@ def planck(lam_nm, t_k):
     return lam ** -5 / np.expm1(c2 / (lam * t_k))
 
 
-def band_weights():
-    """Wavelengths (nm) and normalised weights (solar spectrum x V response)."""
-    w = V_RESPONSE * planck(V_LAMBDA_NM, T_SUN_K)
-    return V_LAMBDA_NM.copy(), w / w.sum()
+def band_weights(band="V", t_sun_k=T_SUN_K):
+    """Wavelengths (nm) and normalised weights of a band: "V" (solar
+    spectrum x V response, 10 nm steps) or "total" (the solar spectrum's
+    energy, trapezoid weights on TOTAL_LAMBDA_NM)."""
+    if band == "V":
+        w = V_RESPONSE * planck(V_LAMBDA_NM, t_sun_k)
+        return V_LAMBDA_NM.copy(), w / w.sum()
+    if band == "total":
+        lam = TOTAL_LAMBDA_NM
+        dl = np.zeros_like(lam)
+        dl[:-1] += 0.5 * np.diff(lam)
+        dl[1:] += 0.5 * np.diff(lam)
+        w = planck(lam, t_sun_k) * dl
+        return lam.copy(), w / w.sum()
+    raise ValueError("unknown band %r (V or total)" % (band,))
+
+
+# --- band: total solar irradiance. The energy spectrum of a 5772 K black body
+# (its integral is the TSI by the definition of the effective temperature)
+# from 350 nm to 4000 nm: 10 nm steps to 1000 nm, 50 nm beyond. Outside that
+# range lies 8.0 % of the black body's energy (7.0 % below 350 nm, where
+# the Huggins and Hartley bands of ozone, not tabulated here, and Rayleigh
+# scattering take nearly all of a grazing ray's light; 1.0 % beyond 4 um);
+# the weights are normalised over the range, i.e. that light is taken to
+# pass as the band's mean does. docs/atmosphere.md states the sensitivity
+# to the spectrum.
+TOTAL_LAMBDA_NM = np.concatenate([np.arange(350.0, 1000.0, 10.0), np.arange(1000.0, 4001.0, 50.0)])
+
+
+def _bodhaine_cm2(lam_um):
+    num = 1.0455996 - 341.29061 * lam_um ** -2 - 0.90230850 * lam_um ** 2
+    den = 1.0 + 0.0027059889 * lam_um ** -2 - 85.968563 * lam_um ** 2
+    return 1e-28 * num / den
 
 
 def rayleigh_cross_section_cm2(lam_nm):
     """Rayleigh cross-section per air molecule (cm^2): Bodhaine et al. (1999),
-    eq. 29 (valid 250-1000 nm, 360 ppm CO2)."""
+    eq. 29 (valid 250-1000 nm, 360 ppm CO2); beyond 1000 nm its value there
+    times (1000 nm / lambda)^4 (the Rayleigh law: the refractive index and
+    the depolarisation change by < 1 % beyond 1 um)."""
     lam = np.asarray(lam_nm, dtype=float) * 1e-3
-    num = 1.0455996 - 341.29061 * lam ** -2 - 0.90230850 * lam ** 2
-    den = 1.0 + 0.0027059889 * lam ** -2 - 85.968563 * lam ** 2
-    return 1e-28 * num / den
+    far = _bodhaine_cm2(1.0) * np.minimum(lam, 1.0) ** 4 / lam ** 4
+    return np.where(lam <= 1.0, _bodhaine_cm2(np.minimum(lam, 1.0)), far)
 
 
 # Ozone Chappuis band cross-sections (cm^2), room temperature, read from
@@ -179,7 +215,9 @@ _O3_SIG = 1e-21 * np.array([0.30, 0.55, 1.05, 1.55, 2.45, 3.30, 4.20, 4.80, 5.10
 
 
 def ozone_cross_section_cm2(lam_nm):
-    return np.interp(lam_nm, _O3_LAM, _O3_SIG)
+    """Chappuis band, 450-710 nm; 0 outside (the Wulf bands beyond 710 nm and
+    the minimum near 380 nm are below 1e-22 cm^2, 2 % of the Chappuis peak)."""
+    return np.interp(lam_nm, _O3_LAM, _O3_SIG, left=0.0, right=0.0)
 
 
 DU_M2 = 2.6867e20           # molecules m^-2 per Dobson unit
@@ -215,6 +253,7 @@ class Profile:
     aer_strat_peak_km: float = 20.0
     aer_strat_sigma_km: float = 4.0
     aer_strat_angstrom: float = 1.5
+    band: str = "V"
     label: str = field(default="", compare=False)
 
     # ---- refractivity

@@ -50,6 +50,12 @@ from . import profile as ap
 # I(mu)/I(1) = sum_k A_k mu^k (the same law as src/shadow.c).
 NL94_559 = np.array([0.26892, 1.34319, -1.58427, 1.91271, -1.31350, 0.37295])
 UNIFORM = np.array([1.0])
+# The total band's disc: the Eddington approximation of a grey atmosphere,
+# I(mu)/I(1) = (2 + 3 mu) / 5 (e.g. Mihalas 1978, Stellar Atmospheres, 2nd
+# ed., ch. 3), the bolometric limb darkening; the Sun's measured integrated
+# light follows it to a few per cent of I(1) (Pierce & Slaughter 1977, Sol.
+# Phys. 51, 25).
+EDDINGTON = np.array([0.4, 0.6])
 
 
 def _gl(n, lo=0.0, hi=1.0):
@@ -120,7 +126,7 @@ def band_transmission(profile: ap.Profile, columns):
     """V-band transmission of paths with the given columns (4, n)."""
     if not profile.extinction:
         return np.ones(columns.shape[1])
-    lam, wl = ap.band_weights()
+    lam, wl = ap.band_weights(profile.band)
     tau = profile.species_weights(lam).T @ columns              # (n_lambda, n)
     return wl @ np.exp(-tau)
 

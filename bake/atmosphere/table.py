@@ -36,7 +36,7 @@ def reach(rays: ar.Rays) -> float:
     return float(rays.alpha[0])
 
 
-def bake(rays: ar.Rays, progress=False):
+def bake(rays: ar.Rays, progress=False, law=ar.NL94_559, label="atmosphere"):
     """q (ND, NZ, NT), psi (ND, NZ, NT), alpha_c, h_c. alpha_c is the
     configured grid constant; it must agree with the reference's bending."""
     computed = reach(rays)
@@ -50,11 +50,11 @@ def bake(rays: ar.Rays, progress=False):
     zs, ds = grid_z(), grid_d()
     q = np.empty((ND, NZ, NT))
     psi = np.empty((ND, NZ, NT))
-    bar = Progress(ND * NZ, "atmosphere: rows", progress)
+    bar = Progress(ND * NZ, label + ": rows", progress)
     for k, d in enumerate(ds):
         for i, z in enumerate(zs):
             rho = Window(z, d, alpha_c, h_c).nodes()
-            F, p = ar.fraction(rays, z, rho, d_sun=d)
+            F, p = ar.fraction(rays, z, rho, d_sun=d, law=law)
             q[k, i] = np.log10(F + F_FLOOR)
             psi[k, i] = p
             bar.step()
@@ -62,6 +62,21 @@ def bake(rays: ar.Rays, progress=False):
 
 
 NAME = "oi_atm_vband"
+# The bands (profile.band) and the table of each: its name, its solar disc
+# (limb-darkening law, rays.py), and the text of its provenance.
+BANDS = {
+    "V": dict(name=NAME, law=ar.NL94_559,
+              summary="baked atmosphere table (V band): sunlight refracted into the shadow.",
+              band_text="  V band (Bessell 1990) x 5772 K black body;",
+              disc_text="  solar disc: Neckel & Labs (1994) limb darkening at 559.95 nm."),
+    "total": dict(name="oi_atm_total", law=ar.EDDINGTON,
+                  summary="baked atmosphere table (total solar irradiance): sunlight refracted "
+                          "into the shadow.",
+                  band_text="  total solar irradiance: 5772 K black body, 350-4000 nm (Rayleigh beyond "
+                            "1 um as lambda^-4);",
+                  disc_text="  solar disc: Eddington grey-atmosphere limb darkening (2 + 3 mu) / 5."),
+}
+NAMES = tuple(b["name"] for b in BANDS.values())
 TABLE_FORMAT = 3         # OI_ATM_FORMAT in include/oi_table.h
 GENERATOR = "bake.atmosphere"
 GOAL_ABS_F = float(CFG["goal_abs_f"])  # goal: max |F error| of the lookup (absolute fraction)
@@ -82,6 +97,7 @@ def derived_constants(nz, z_min, z_max, v_mid, h_c, h_a):
 
 
 def table(uq, up, scales, alpha_c, h_c, err, profile: ap.Profile, alpha_c_computed=None):
+    band = BANDS[profile.band]
     """The Table of the atmosphere bake (bake/common/emit.py)."""
     uq, up = uq[0], up[0]
     e_mid, c_iu, ln10 = derived_constants(NZ, Z_MIN, Z_MAX, V_MID, h_c, H_A)
@@ -98,6 +114,8 @@ def table(uq, up, scales, alpha_c, h_c, err, profile: ap.Profile, alpha_c_comput
         "kind", "n0", "top_km", "extinction", "cloud_top_km", "cloud_fraction", "ozone_du",
         "aer_trop_tau", "aer_strat_tau")}
     params = {k: CFG[k] for k in sorted(CFG) if k not in ("name", "description")}
+    if profile.band != "V":
+        prof["band"] = profile.band
     params["profile"] = prof
     if alpha_c_computed is not None:
         err = dict(err, alpha_c_computed_rad=round_sig(alpha_c_computed, 10))
@@ -110,8 +128,8 @@ def table(uq, up, scales, alpha_c, h_c, err, profile: ap.Profile, alpha_c_comput
         f" {profile.aer_strat_tau:g} (strat.) at 550 nm;",
         f"  clouds below {profile.cloud_top_km:g} km stop a fraction {profile.cloud_fraction:g} of the rays"
         " (global cloud amount, Stubenrauch et al. 2013);",
-        "  V band (Bessell 1990) x 5772 K black body;",
-        "  solar disc: Neckel & Labs (1994) limb darkening at 559.95 nm.",
+        band["band_text"],
+        band["disc_text"],
         f"Grid: z = {Z_MIN:g} .. {Z_MAX:g} km behind the Earth's centre, {NZ} rows log-spaced;",
         f"  along rho {NT} nodes: {NA} uniform in a blend ({1 - W_RHO:g} : {W_RHO:g}) of the model ray altitude",
         f"  v (h_a = {H_A:g} km, alpha_c = {alpha_c:.9g} rad at h_c = {h_c:g} km) and rho, up to",
@@ -128,8 +146,8 @@ def table(uq, up, scales, alpha_c, h_c, err, profile: ap.Profile, alpha_c_comput
     ]
     grid = dict(ints + reals[:12])
     t = cemit.Table(
-        name=NAME, kind="atmosphere", ctype="oi_atm_table", format=("OI_ATM_FORMAT", TABLE_FORMAT),
-        summary="baked atmosphere table (V band): sunlight refracted into the shadow.",
+        name=band["name"], kind="atmosphere", ctype="oi_atm_table",
+        format=("OI_ATM_FORMAT", TABLE_FORMAT), summary=band["summary"],
         fields=[(k, v, "int") for k, v in ints] + [(k, v, "real") for k, v in reals],
         arrays=[("q", uq, "u16"), ("psi", up, "u16")], layout=LAYOUT,
         generator=GENERATOR, version=__version__, parameters=params, seed=MEASURE_SEED,
@@ -139,18 +157,19 @@ def table(uq, up, scales, alpha_c, h_c, err, profile: ap.Profile, alpha_c_comput
 
 
 def write(outdir, t):
-    """Write outdir/oi_atm_vband.{c,h,json}."""
+    """Write outdir/<name>.{c,h,json}."""
     return cemit.write(outdir, t)
 
 
-def run(outdir, progress=None, log=print):
-    """The whole bake into outdir; returns the paths written."""
-    prof = ap.us1976()
+def run_band(outdir, band="V", progress=None, log=print):
+    """One band's bake into outdir; returns the paths written."""
+    prof = ap.us1976(band=band)
+    law = BANDS[band]["law"]
     rays = ar.make_rays(prof)
-    q, psi, alpha_c, h_c = bake(rays, progress=progress)
+    q, psi, alpha_c, h_c = bake(rays, progress=progress, law=law, label=BANDS[band]["name"])
     uq, up, q, psi, scales = quantise(q, psi)     # measure what the runtime stores
     err, _ = measure(rays, q, psi, alpha_c, h_c, n=int(CFG["measure"]["n_points"]),
-                     seed=MEASURE_SEED, progress=progress)
+                     seed=MEASURE_SEED, progress=progress, law=law)
     t = table(uq, up, scales, alpha_c, h_c, err, prof, alpha_c_computed=reach(rays))
     paths = write(outdir, t)
     log("%s: %d bytes, max |dF| %.3e (%.3f of the goal)" % (
@@ -158,13 +177,21 @@ def run(outdir, progress=None, log=print):
     return paths
 
 
-def load_table(tables_dir="tables"):
-    """Read the committed table back from its generated C source: (q, psi,
+def run(outdir, progress=None, log=print, bands=tuple(BANDS)):
+    """The whole bake (every band) into outdir; returns the paths written."""
+    paths = []
+    for band in bands:
+        paths += list(run_band(outdir, band, progress=progress, log=log))
+    return paths
+
+
+def load_table(tables_dir="tables", name=NAME):
+    """Read a committed table back from its generated C source: (q, psi,
     alpha_c, h_c) decoded, shaped (1, NZ, NT), for the Python mirror."""
-    with open(os.path.join(tables_dir, NAME + ".c"), encoding="ascii") as f:
+    with open(os.path.join(tables_dir, name + ".c"), encoding="ascii") as f:
         parsed = cemit.parse_c(f.read())
-    t = parsed["structs"][NAME]["fields"]
+    t = parsed["structs"][name]["fields"]
     nz, nt = t["nz"], t["nt"]
-    q = t["q_min"] + t["q_scale"] * parsed["arrays"][NAME + "_q"].astype(float)
-    psi = t["psi_min_rad"] + t["psi_scale_rad"] * parsed["arrays"][NAME + "_psi"].astype(float)
+    q = t["q_min"] + t["q_scale"] * parsed["arrays"][name + "_q"].astype(float)
+    psi = t["psi_min_rad"] + t["psi_scale_rad"] * parsed["arrays"][name + "_psi"].astype(float)
     return q.reshape(1, nz, nt), psi.reshape(1, nz, nt), t["alpha_c_rad"], t["h_c_km"]

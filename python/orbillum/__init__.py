@@ -144,6 +144,7 @@ _MODEL_WORDS = {
     "moon_model": {"phase_law": 0, "lambert": 1},
     "limb_darkening": {"uniform": 0, "darkened": 1},
     "earth_shape": {"sphere": 0, "wgs84": 1},
+    "band": {"V": 0, "total": 1},
     "albedo_model": {"uniform": 0, "knocke": 1, "map": 2},
 }
 
@@ -159,7 +160,7 @@ def _model(model):
     m = L.oi_model()
     types = dict(L.oi_model._fields_)
     for k, v in model.items():
-        if k in ("earth_table", "atm_table"):
+        if k in ("earth_table", "atm_table", "atm_total_table"):
             raise ValueError(f"model: {k} cannot be set from Python")
         if k in ("albedo_map_n_lat", "albedo_map_n_lon"):
             raise ValueError(f"model: {k} is the shape of albedo_map")

@@ -66,6 +66,8 @@ OI_MOON_PHASE_LAW = 0  # oi_model.moon_model
 OI_MOON_LAMBERT = 1
 OI_LIMB_UNIFORM = 0   # oi_model.limb_darkening
 OI_LIMB_DARKENED = 1
+OI_BAND_V = 0         # oi_model.band
+OI_BAND_TOTAL = 1
 OI_EARTH_REFLECT_MOMENTS = 0  # oi_model.earth_reflection
 OI_EARTH_REFLECT_MEAN = 1
 OI_EARTH_SPHERE = 0   # oi_model.earth_shape
@@ -203,6 +205,7 @@ class oi_model(ctypes.Structure):
         ("albedo_model", c_int), ("albedo_map", POINTER(ctypes.c_float)),
         ("albedo_map_n_lat", c_int), ("albedo_map_n_lon", c_int),
         ("sky_table", POINTER(oi_sky_table)),
+        ("band", c_int), ("atm_total_table", POINTER(oi_atm_table)),
     ]
 
 
@@ -310,6 +313,7 @@ _PROTOS = {
     "oi_earthshine": (c_int, [real, real, c_void_p, POINTER(real), POINTER(real)]),
     "oi_earth_table_default": (POINTER(oi_earth_table), []),
     "oi_atm_table_default": (POINTER(oi_atm_table), []),
+    "oi_atm_total_default": (POINTER(oi_atm_table), []),
     "oi_earth_angular_default": (POINTER(oi_earth_angular_table), []),
     "oi_sky_table_default": (POINTER(oi_sky_table), []),
     "oi_skylight": (c_int, [real, real, c_void_p, POINTER(real), POINTER(real)]),
