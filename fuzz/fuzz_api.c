@@ -81,6 +81,7 @@ static void fz_model(fz_in *in, oi_model *m)
         m->limb_darkening = (o & 0x40) ? 7 : ((o >> 2) & 1);
         m->no_atmosphere = (o >> 3) & 1;
         m->earth_shape = (o >> 4) & 1; /* the sphere or the WGS-84 ellipsoid */
+        m->band = (o >> 5) & 1;        /* the V or the total band */
     }
     m->earth_table = NULL; /* a pointer cannot be fuzzed; NULL is the default table */
     if (flags & 128) {
@@ -260,12 +261,12 @@ static void dump_illum(const oi_illum *o)
                 (double)s->target_albedo, (double)s->target_radius_m);
     if (g_model != NULL)
         fprintf(stderr, "model: tsi %.17g au %.17g rsun %.17g rearth %.17g rmoon %.17g "
-                        "moon_albedo %.17g earth %d moon %d limb %d noatm %d shape %d\n",
+                        "moon_albedo %.17g earth %d moon %d limb %d noatm %d shape %d band %d\n",
                 (double)g_model->tsi_w_m2, (double)g_model->au_km,
                 (double)g_model->sun_radius_km, (double)g_model->earth_radius_km,
                 (double)g_model->moon_radius_km, (double)g_model->moon_albedo,
                 g_model->earth_model, g_model->moon_model, g_model->limb_darkening,
-                g_model->no_atmosphere, g_model->earth_shape);
+                g_model->no_atmosphere, g_model->earth_shape, g_model->band);
     fprintf(stderr,
             "illum: fraction %.17g e_sun %.17g e_earth %.17g e_moon %.17g theta %.17g h %.17g "
             "phi %.17g psi %.17g moon_frac %.17g flux %.17g %.17g %.17g obs %.17g mag %.17g "

@@ -3,7 +3,8 @@
 # --gc-sections, on the host and on the Cortex-M cross builds. Included by
 # the Makefile; `make size` runs it (after the option-set report of the
 # cross build), `make size-kinds` alone.
-#   sun_noatm     oi_sun_fraction, atmosphere off, own NULL oi_atm_table_default
+#   sun_noatm     oi_sun_fraction, atmosphere off, own NULL oi_atm_table_default and
+#                 oi_atm_total_default
 #   sun_atm       oi_sun_fraction with the default atmosphere
 #   own_earth     full scene, a caller's earthshine table (oi_earth_leo), own NULL
 #                 oi_earth_table_default
@@ -14,7 +15,7 @@ SIZE_KINDS := sun_noatm sun_atm own_earth full_default
 SIZE_KIND_DIR := $(BUILDDIR)/size
 SIZE_KIND_CROSS := m4f-Os m7-Os
 SIZE_KIND_SRC_DEPS := examples/size/scene.h
-SIZE_TABLE_SYMS := oi_earth_diffuse|oi_earth_leo|oi_earth_geo|oi_earth_angular|oi_atm_vband
+SIZE_TABLE_SYMS := oi_earth_diffuse|oi_earth_leo|oi_earth_geo|oi_earth_angular|oi_atm_vband|oi_atm_total_q
 SIZE_HOST_ELFS := $(foreach k,$(SIZE_KINDS),$(SIZE_KIND_DIR)/host/$(k))
 SIZE_CROSS_ELFS := $(foreach c,$(SIZE_KIND_CROSS),$(foreach k,$(SIZE_KINDS),$(SIZE_KIND_DIR)/$(c)/$(k).elf))
 

@@ -34,6 +34,7 @@ enum column {
     C_TARGET_SHAPE, C_Q_W, C_Q_X, C_Q_Y, C_Q_Z, C_EARTH_SHAPE,
     C_ALBEDO_MODEL, C_EPOCH_JD, C_EARTH_ROTATION_DEG,
     C_SENSOR_TEMP,
+    C_BAND,
     C_COUNT
 };
 
@@ -49,7 +50,8 @@ static const char *const column_name[C_COUNT] = {
     "observer_vx", "observer_vy", "observer_vz",
     "target_shape", "q_w", "q_x", "q_y", "q_z", "earth_shape",
     "albedo_model", "epoch_jd", "earth_rotation_deg",
-    "sensor_temp_c"
+    "sensor_temp_c",
+    "band"
 };
 
 typedef struct batch {
@@ -469,6 +471,20 @@ static int run_row(batch *b, const csv_reader *r, plan_row *row)
         } else {
             row_error(b, r->rec_line, b->col[C_EARTH_SHAPE],
                       "earth_shape must be sphere (default) or wgs84; got", s);
+            return 0;
+        }
+    }
+
+    /* the band of sun_fraction_atm and e_sun: V (default, also an empty
+     * field) or total (total solar irradiance) */
+    s = field_of(b, r, C_BAND, &short_row);
+    if (s != NULL && s[0] != '\0') {
+        if (same_nocase(s, "total")) {
+            model.band = OI_BAND_TOTAL;
+        } else if (same_nocase(s, "v")) {
+            model.band = OI_BAND_V;
+        } else {
+            row_error(b, r->rec_line, b->col[C_BAND], "band must be V (default) or total; got", s);
             return 0;
         }
     }

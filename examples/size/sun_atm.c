@@ -2,8 +2,9 @@
 /*
  * sun_atm.c: program kind "Sun fraction with the atmosphere":
  * oi_sun_fraction with the default model, so the library's default
- * atmosphere table (oi_atm_table_default, tables/oi_atm_vband.c) is linked;
- * no earthshine table.
+ * atmosphere tables (oi_atm_table_default, tables/oi_atm_vband.c, and the
+ * total band's oi_atm_total_default, tables/oi_atm_total.c, which the
+ * lookup may be asked for) are linked; no earthshine table.
  */
 #include <stddef.h>
 

@@ -2,15 +2,22 @@
 /*
  * sun_noatm.c: program kind "Sun fraction only": oi_sun_fraction with the
  * atmosphere off (oi_model.no_atmosphere) and the library's default
- * atmosphere table left out: this program defines oi_atm_table_default
- * itself, returning NULL, so neither src/atm_table_default.c nor
- * tables/oi_atm_vband.c is linked (make size: no table symbol in it).
+ * atmosphere tables left out: this program defines oi_atm_table_default
+ * and oi_atm_total_default itself, returning NULL, so neither
+ * src/atm_table_default.c, src/atm_table_total_default.c nor
+ * tables/oi_atm_vband.c, tables/oi_atm_total.c is linked (make size: no
+ * table symbol in it).
  */
 #include <stddef.h>
 
 #include "orbillum.h"
 
 const oi_atm_table *oi_atm_table_default(void)
+{
+    return NULL;
+}
+
+const oi_atm_table *oi_atm_total_default(void)
 {
     return NULL;
 }
