@@ -242,22 +242,23 @@ static oi_real sun_unit(const oi_real sun_km[3], oi_real s_hat[3])
 #define OI_ATM_TOTAL_SHIFT_C0 OI_R(0.229226)
 #define OI_ATM_TOTAL_SHIFT_C1 OI_R(-0.92399)
 #define OI_ATM_TOTAL_SHIFT_C2 OI_R(2.04122)
+#define ATM_N_BANDS 2
+#else
+#define ATM_N_BANDS 1
 #endif
+/* the coefficients of each band (oi_model.band, checked by oi__model_resolve) */
+static const oi_real shift_c[ATM_N_BANDS][3] = {
+    {OI_ATM_SHIFT_C0, OI_ATM_SHIFT_C1, OI_ATM_SHIFT_C2},
+#ifndef OI_NO_TOTAL_BAND
+    {OI_ATM_TOTAL_SHIFT_C0, OI_ATM_TOTAL_SHIFT_C1, OI_ATM_TOTAL_SHIFT_C2},
+#endif
+};
 static oi_real uniform_shift(oi_real f, int band)
 {
     const oi_real g = f * ((oi_real)1 - f);
-    oi_real c0 = OI_ATM_SHIFT_C0, c1 = OI_ATM_SHIFT_C1, c2 = OI_ATM_SHIFT_C2;
+    const oi_real *c = shift_c[band == OI_BAND_V ? 0 : ATM_N_BANDS - 1];
     if (!(g > (oi_real)0)) return (oi_real)0;
-#ifndef OI_NO_TOTAL_BAND
-    if (band == OI_BAND_TOTAL) {
-        c0 = OI_ATM_TOTAL_SHIFT_C0;
-        c1 = OI_ATM_TOTAL_SHIFT_C1;
-        c2 = OI_ATM_TOTAL_SHIFT_C2;
-    }
-#else
-    (void)band;
-#endif
-    return OI_SQRT(g) * ((oi_real)1 - (oi_real)2 * f) * (c0 + g * (c1 + g * c2));
+    return OI_SQRT(g) * ((oi_real)1 - (oi_real)2 * f) * (c[0] + g * (c[1] + g * c[2]));
 }
 
 /* The table's fraction (limb-darkened disc) at continuous indices iu, it,
