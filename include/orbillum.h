@@ -246,6 +246,10 @@ typedef struct oi_model {
  *   does not read (earth_radius_km, sun_radius_km, au_km, info) are not
  *   checked. The table must be compiled in the caller's precision (its
  *   grid is oi_real).
+ * atm_total_table: the same for band = OI_BAND_TOTAL (the total solar
+ *   irradiance's table), checked the same way where it would be used (band
+ *   total, atmosphere on); NULL: oi_atm_total_default(). atm_table is then
+ *   not used, nor atm_total_table with band V.
  *
  * Defaults: each is returned by a function of its own translation unit
  * (src/earth_table_default.c, src/atm_table_default.c), the only reference
