@@ -58,6 +58,19 @@ function shapedCase() {
   return file;
 }
 
+/* The shipped cases with the band column: total, V, empty and total again on every row in
+ * turn, and an unknown word (the planner's ERR_PARSE row). */
+function bandedCase(name) {
+  const rows = parseCsv(fs.readFileSync(path.join(ROOT, 'tests/golden', name), 'utf8'));
+  const bands = ['total', 'V', '', 'Total'];
+  const lines = [[...rows[0], 'band'].join(',')];
+  rows.slice(1).forEach((r, i) => lines.push([...r, bands[i % bands.length]].join(',')));
+  lines.push([...rows[1], 'infrared'].join(','));
+  const file = path.join(BUILD, 'wasm/banded-' + name);
+  fs.writeFileSync(file, lines.join('\n') + '\n');
+  return file;
+}
+
 /** build/oi-plan --csv's output; exit 1 (some rows with errors) is an answer too. */
 function planner(input, env) {
   const r = spawnSync(path.join(BUILD, 'oi-plan'), ['--csv', input], { encoding: 'utf8', env });
@@ -93,7 +106,8 @@ function maxUlpOf(column, run) {
  * target's flux_obs then differs by an ulp, its V magnitude by a few (docs/viewer.md). */
 const FACET_LIBM_ULP = 8n;
 const INPUTS = [...CASES.map((name) => [name, path.join(ROOT, 'tests/golden', name), 0n]),
-  ['leo-leo-pass with target_shape and q_*', shapedCase(), FACET_LIBM_ULP]];
+  ['leo-leo-pass with target_shape and q_*', shapedCase(), FACET_LIBM_ULP],
+  ...CASES.map((name) => [name + ' with the band column', bandedCase(name), 0n])];
 
 for (const [name, input, extraUlp] of INPUTS) for (const run0 of RUNS) {
   const run = { ...run0, maxUlp: run0.maxUlp > extraUlp ? run0.maxUlp : extraUlp };

@@ -76,7 +76,7 @@ function parseReal(s) {
 const COLUMNS = ['id', 'sun_x', 'sun_y', 'sun_z', 'target_x', 'target_y', 'target_z',
   'moon_x', 'moon_y', 'moon_z', 'observer_x', 'observer_y', 'observer_z', 'terms',
   'earth_albedo', 'target_albedo', 'target_radius_m', 'camera', 'atmosphere', 'target_shape',
-  'q_w', 'q_x', 'q_y', 'q_z'];
+  'q_w', 'q_x', 'q_y', 'q_z', 'band'];
 
 /** The planner's output columns, in its order. */
 export const PLAN_COLUMNS = ['id', 'status', 'sun_fraction', 'sun_fraction_atm', 'e_sun',
@@ -230,7 +230,7 @@ export class Orbillum {
     for (const f of ['tsi_w_m2', 'au_km', 'sun_radius_km', 'earth_radius_km', 'moon_radius_km', 'moon_albedo']) {
       if (model[f] !== undefined) this.setR(p, M, f, model[f]);
     }
-    for (const f of ['earth_model', 'moon_model', 'limb_darkening', 'no_atmosphere']) {
+    for (const f of ['earth_model', 'moon_model', 'limb_darkening', 'no_atmosphere', 'band']) {
       if (model[f] !== undefined) this.setI(p, M, f, model[f] ? Number(model[f]) : 0);
     }
     return p;
@@ -451,6 +451,13 @@ export class Orbillum {
     }
     if (atm !== 0 && atm !== 1) return row;
     const model = { no_atmosphere: atm === 0 ? 1 : 0 };
+    // the band of sun_fraction_atm and e_sun, as examples/oi_plan/batch.c reads it
+    const bs = field('band');
+    if (bs !== null && bs !== '') {
+      const w = bs.toLowerCase();
+      if (w === 'total') model.band = 1;
+      else if (w !== 'v') return row;
+    }
     // the target's shape and attitude, as examples/oi_plan/batch.c reads them
     const shapeName = field('target_shape');
     if (shapeName !== null) {

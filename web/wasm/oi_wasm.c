@@ -38,7 +38,7 @@ static const layout_entry layout[] = {
     OFF(oi_model, tsi_w_m2), OFF(oi_model, au_km), OFF(oi_model, sun_radius_km),
     OFF(oi_model, earth_radius_km), OFF(oi_model, moon_radius_km), OFF(oi_model, moon_albedo),
     OFF(oi_model, earth_model), OFF(oi_model, moon_model), OFF(oi_model, limb_darkening),
-    OFF(oi_model, no_atmosphere), OFF(oi_model, earth_table),
+    OFF(oi_model, no_atmosphere), OFF(oi_model, earth_table), OFF(oi_model, band),
     SIZE(oi_scene),
     OFF(oi_scene, sun_km), OFF(oi_scene, moon_km), OFF(oi_scene, target_km),
     OFF(oi_scene, observer_km), OFF(oi_scene, has_observer), OFF(oi_scene, terms),
