@@ -20,9 +20,12 @@
  *   OI_NO_ATMOSPHERE     no refraction into the shadow (sun_fraction_atm equals
  *                        sun_fraction): the atmosphere's code and its default
  *                        table are removed.
- *   OI_NO_SKY            no zodiacal light: removes oi_zodiacal_radiance, its
- *                        table (src/zodiacal.c) and OI_SKY_ZODIACAL (a goal
- *                        with that bit gets OI_ERR_FLAGS).
+ *   OI_NO_SKY            no zodiacal light and no starlight: removes
+ *                        oi_zodiacal_radiance, oi_starlight_radiance,
+ *                        oi_galactic_from_icrs, their tables (src/zodiacal.c,
+ *                        src/starlight.c, src/galactic.c), OI_SKY_ZODIACAL
+ *                        and OI_SKY_STARLIGHT (a goal with either bit gets
+ *                        OI_ERR_FLAGS).
  *   OI_NO_LIMB_DARKENING no limb-darkened solar disc: removes its integral
  *                        (src/limb_darkening.c); oi_shadow.fraction_ld equals
  *                        fraction (the uniform disc), and a model with
@@ -116,6 +119,8 @@ typedef double oi_real;
 #define oi_expose_batch oi_expose_batch_sp
 #define oi_expose_scene_batch oi_expose_scene_batch_sp
 #define oi_zodiacal_radiance oi_zodiacal_radiance_sp
+#define oi_starlight_radiance oi_starlight_radiance_sp
+#define oi_galactic_from_icrs oi_galactic_from_icrs_sp
 #define oi_shape_check oi_shape_check_sp
 #define oi_shape_builtin oi_shape_builtin_sp
 #define oi_shape_find oi_shape_find_sp

@@ -497,6 +497,39 @@ oi_real oi_moon_phase_law(oi_real alpha);
  *          bound). src/zodiacal.c, docs/camera.md.
  */
 oi_real oi_zodiacal_radiance(oi_real dlambda_rad, oi_real beta_rad);
+
+/*
+ * oi_starlight_radiance: radiance of the integrated starlight (W/m^2/sr, as
+ * sunlight over the whole spectrum, as oi_zodiacal_radiance) in the
+ * direction at galactic longitude l_rad and latitude b_rad.
+ * Given:   l_rad  any finite value (taken modulo 2 pi); b_rad: |b| above
+ *                 pi/2 is taken as pi/2
+ * Returns: the radiance; 0 for a non-finite argument.
+ * Notes:   Leinert et al. 1998 (A&AS 127, 1), Table 35: the Pioneer 10 map at
+ *          440 nm (Toller 1981) of the stars fainter than V ~ 6.5 and the
+ *          diffuse galactic light, in S10_sun on a 10 deg x 4-10 deg grid,
+ *          bilinear between its nodes; 8.9971e-9 W/m^2/sr per S10_sun (a
+ *          V = 10 Sun per square degree). Beyond |b| = 80 deg, linear to the
+ *          mean of the 80 deg row at the pole; 28 cells Pioneer did not map
+ *          hold the interpolation of their row. src/starlight.c,
+ *          docs/camera.md.
+ */
+oi_real oi_starlight_radiance(oi_real l_rad, oi_real b_rad);
+
+/*
+ * oi_galactic_from_icrs: galactic longitude and latitude of a direction
+ * given in ICRS (ICRF/GCRS-aligned) components, the frame of oi_scene.
+ * Given:   dir    the direction, any finite nonzero length
+ * Returns: OI_OK; OI_ERR_NULL (a NULL pointer), OI_ERR_NONFINITE (a
+ *          component NaN/inf), OI_ERR_ZERO_VECTOR (dir is 0): then the
+ *          outputs are 0.
+ * Outputs: *l_rad in [0, 2 pi), *b_rad in [-pi/2, pi/2].
+ * Notes:   the rotation of the Hipparcos catalogue (ESA SP-1200, 1997,
+ *          Vol. 1, Sect. 1.5.3): north galactic pole at RA 192.85948 deg,
+ *          Dec 27.12825 deg, ascending node at l = 32.93192 deg.
+ *          src/galactic.c.
+ */
+int oi_galactic_from_icrs(const oi_real dir[3], oi_real *l_rad, oi_real *b_rad);
 #endif
 
 /* ---------------------------------------------------------------- shapes */
@@ -862,6 +895,7 @@ const char *oi_flag_name(unsigned flag_bit);
  * versions). docs/camera.md, "Sky background". */
 #ifndef OI_NO_SKY
 #define OI_SKY_ZODIACAL (1u)  /* zodiacal light (Leinert et al. 1998), where the ray misses Earth and Moon */
+#define OI_SKY_STARLIGHT (4u) /* integrated starlight (Leinert et al. 1998, Pioneer 10), same places */
 #endif
 #ifndef OI_NO_MOON
 #define OI_SKY_MOON     (2u)  /* the Moon: OI_FLAG_MOON_IN_FOV, its surface behind the target, occultation */
@@ -1084,7 +1118,7 @@ int oi_expose(const oi_camera *camera, const oi_expose_in *in,
  *      illum->sun_moon_hidden > 0 (the Moon hides part of the Sun).
  *   7. Not modelled: the Earth's limb glow in the field, stray light from
  *      the Sun outside the exclusion angle or from a Moon beside the target,
- *      the atmosphere's radiance at the limb, the integrated starlight.
+ *      the atmosphere's radiance at the limb.
  *   8. Sky (goal->sky; positions taken as ICRF/GCRS-aligned, the ecliptic
  *      of J2000): the first surface the boresight ray meets decides. The
  *      Earth: Note 3. OI_SKY_MOON (read only with OI_TERM_MOON in
@@ -1094,6 +1128,9 @@ int oi_expose(const oi_camera *camera, const oi_expose_in *in,
  *      illum->moon_sun_fraction of the Sun. OI_SKY_ZODIACAL, where the ray
  *      meets neither: oi_zodiacal_radiance of the boresight's ecliptic
  *      longitude from the Sun and latitude, seen from the observer.
+ *      OI_SKY_STARLIGHT, where the ray meets neither: oi_starlight_radiance
+ *      of the boresight's galactic longitude and latitude
+ *      (oi_galactic_from_icrs), added to the zodiacal light.
  *      docs/camera.md, "Sky background".
  *   9. Motion: rate_rad_s = |(target_vel - observer_vel) x b^| / range
  *      (clamped at 1e3 rad/s), then oi_expose's Note 7.

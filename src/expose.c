@@ -131,15 +131,17 @@ static OI_NOINLINE void detect_margin(const oi_camera *c, const expose_rates *r,
 /* The sky backgrounds this build knows (oi_expose_goal.sky). */
 #ifndef OI_NO_SKY
 #define SKY_ZODIACAL_BIT OI_SKY_ZODIACAL
+#define SKY_STARLIGHT_BIT OI_SKY_STARLIGHT
 #else
 #define SKY_ZODIACAL_BIT 0u
+#define SKY_STARLIGHT_BIT 0u
 #endif
 #ifndef OI_NO_MOON
 #define SKY_MOON_BIT OI_SKY_MOON
 #else
 #define SKY_MOON_BIT 0u
 #endif
-#define SKY_ALL (SKY_ZODIACAL_BIT | SKY_MOON_BIT)
+#define SKY_ALL (SKY_ZODIACAL_BIT | SKY_MOON_BIT | SKY_STARLIGHT_BIT)
 
 /* Goal with defaults filled in; 0 when a field is out of range. */
 static int goal_resolve(const oi_expose_goal *goal, oi_real *fill, oi_real *snr_min)

@@ -3,8 +3,8 @@
  * expose_scene.c: oi_expose_scene, the exposure choice from a scene and its
  * illumination: the geometric flags (Sun exclusion, Earth in the field,
  * occultation, eclipse), the background where the boresight meets the
- * Earth, and the resolved target's bound on the brightest pixel; the choice
- * itself is oi_expose's (src/expose.c). The contract is in
+ * Earth, the sky's (Moon, zodiacal light, starlight), and the resolved
+ * target's bound on the brightest pixel; the choice itself is oi_expose's (src/expose.c). The contract is in
  * include/orbillum.h; docs/camera.md explains the model.
  */
 #include "oi_internal.h"
@@ -305,6 +305,16 @@ static OI_NOINLINE oi_real zodiacal_background(const oi_scene *scene, const scen
     beta = OI_ATAN2(bz, OI_SQRT(bx * bx + by * by));
     return oi_zodiacal_radiance(dl, beta);
 }
+
+/* Integrated starlight behind the target (OI_SKY_STARLIGHT): the
+ * boresight's galactic longitude and latitude (the ICRS rotation of
+ * src/galactic.c) into oi_starlight_radiance. */
+static OI_NOINLINE oi_real starlight_background(const scene_geom *g)
+{
+    oi_real l, b;
+    if (oi_galactic_from_icrs(g->bh, &l, &b) != OI_OK) return 0;
+    return oi_starlight_radiance(l, b);
+}
 #endif
 
 #ifndef OI_NO_SKYLIGHT
@@ -407,6 +417,9 @@ int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
 #ifndef OI_NO_SKY
     if ((sky & OI_SKY_ZODIACAL) != 0u && s_earth < 0 && !moon_hit) {
         in.background_w_m2_sr = zodiacal_background(scene, &g);
+    }
+    if ((sky & OI_SKY_STARLIGHT) != 0u && s_earth < 0 && !moon_hit) {
+        in.background_w_m2_sr += starlight_background(&g);
     }
 #endif
 #ifndef OI_NO_SKYLIGHT

@@ -19,7 +19,8 @@ three rules:
     (signal_e / psf_peak_fraction), B the background electrons per pixel,
     R the read noise: what a detection that uses the whole PSF reaches.
 Prints the Markdown tables docs/camera.md quotes (the second: the star
-tracker's limit for a goal snr_min of 5, 20 and 50); tests/python/
+tracker's limit for a goal snr_min of 5, 20 and 50; the third: the
+integrated starlight by galactic latitude); tests/python/
 test_validation_table.py checks that the document holds this output.
 Usage: .venv/bin/python tools/validation_table.py
 """
@@ -96,18 +97,62 @@ def limit(rule, name, t, bg, temp):
     return mag_of(math.exp(hi))
 
 
+EPS = 84381.406 / 3600.0 * math.pi / 180.0  # IAU 2006 obliquity of J2000, as the runtime's
+
+
+def galactic_of(v):
+    """Galactic (l, b) of an ICRS direction, by the runtime (src/galactic.c)."""
+    l, b = L.real(), L.real()
+    assert LIB.oi_galactic_from_icrs((L.real * 3)(*v), ctypes.byref(l), ctypes.byref(b)) == 0
+    return l.value, b.value
+
+
+def ecliptic_latitude(v):
+    return math.asin(-math.sin(EPS) * v[1] + math.cos(EPS) * v[2])
+
+
+def sky_at(v, elongation_lon):
+    """Zodiacal light plus starlight towards ICRS direction v, the Sun at
+    `elongation_lon` of ecliptic longitude from it: (total, starlight alone)."""
+    l, b = galactic_of(v)
+    beta = ecliptic_latitude(v)
+    zodi = LIB.oi_zodiacal_radiance(elongation_lon, beta)
+    star = LIB.oi_starlight_radiance(l, b)
+    return zodi + star, star
+
+
 def rows():
     zodi_pole = LIB.oi_zodiacal_radiance(1.0, math.pi / 2)
     zodi_90 = LIB.oi_zodiacal_radiance(math.pi / 2, 0.0)
+    nep = (0.0, -math.sin(EPS), math.cos(EPS))  # north ecliptic pole, ICRS
+    # the north galactic pole and the galactic centre (l = 0, b = 0) in ICRS,
+    # from the Hipparcos definition (pole RA 192.85948, Dec 27.12825 deg;
+    # node, at RA of the pole + 90 deg, at l = 32.93192 deg)
+    ag, dg, lo = math.radians(192.85948), math.radians(27.12825), math.radians(32.93192)
+    ngp = (math.cos(dg) * math.cos(ag), math.cos(dg) * math.sin(ag), math.sin(dg))
+    node = (math.cos(ag + math.pi / 2), math.sin(ag + math.pi / 2), 0.0)
+    m = (ngp[1] * node[2] - ngp[2] * node[1], ngp[2] * node[0] - ngp[0] * node[2],
+         ngp[0] * node[1] - ngp[1] * node[0])
+    gc = tuple(node[i] * math.cos(lo) - m[i] * math.sin(lo) for i in range(3))
+    sl_pole, _ = sky_at(nep, 1.0)
+    sl_ngp, _ = sky_at(ngp, math.pi / 2)
+    sl_gc, _ = sky_at(gc, math.pi / 2)
     cases = [
         ("telescope-15cm", 100.0, "black", 0.0, None),
         ("telescope-15cm", 100.0, "zodiacal, ecliptic pole", zodi_pole, None),
         ("telescope-15cm", 100.0, "zodiacal, ecliptic 90 deg from the Sun", zodi_90, None),
+        ("telescope-15cm", 100.0, "zodiacal + starlight, ecliptic pole", sl_pole, None),
+        ("telescope-15cm", 100.0, "zodiacal + starlight, galactic pole, 90 deg from the Sun",
+         sl_ngp, None),
+        ("telescope-15cm", 100.0, "zodiacal + starlight, galactic centre, 90 deg from the Sun",
+         sl_gc, None),
         ("star-tracker", 0.1, "black", 0.0, None),
         ("star-tracker", 0.1, "zodiacal, ecliptic 90 deg from the Sun", zodi_90, None),
         ("star-tracker", 0.1, "black", 0.0, 45.0),
         ("star-tracker", 0.5, "black", 0.0, None),
         ("star-tracker", 0.5, "zodiacal, ecliptic 90 deg from the Sun", zodi_90, None),
+        ("star-tracker", 0.5, "zodiacal + starlight, galactic centre, 90 deg from the Sun",
+         sl_gc, None),
         ("star-tracker", 0.5, "black", 0.0, 45.0),
     ]
     out = []
@@ -156,7 +201,31 @@ def goal_table():
     return "\n".join(lines)
 
 
+S10_SUN_W_M2_SR = 8.9971174530390225e-09  # src/starlight.c
+ARCSEC2_SR = (math.pi / 180.0 / 3600.0) ** 2
+
+
+def starlight_table():
+    """The starlight of the runtime (Leinert et al. 1998, Table 35) by
+    galactic latitude: mean, least and greatest over the 36 longitudes of
+    the table, in S10_sun and as V mag/arcsec^2 of the mean."""
+    lines = ["| galactic latitude | mean over longitude (S10_sun) | least - greatest "
+             "| mean (W/m^2/sr, as sunlight) | mean (V mag/arcsec^2) |",
+             "|---|---|---|---|---|"]
+    for b in (-80, -50, -30, -12, 0, 12, 30, 50, 80, 90):
+        v = [LIB.oi_starlight_radiance(math.radians(10.0 * j), math.radians(b))
+             for j in range(36)]
+        mean = sum(v) / len(v)
+        mag = L.OI_SUN_MAG_V - 2.5 * math.log10(mean * ARCSEC2_SR / L.OI_TSI_W_M2)
+        lines.append(f"| {b:+d} deg | {mean / S10_SUN_W_M2_SR:.1f} | "
+                     f"{min(v) / S10_SUN_W_M2_SR:.0f} - {max(v) / S10_SUN_W_M2_SR:.0f} | "
+                     f"{mean:.3g} | {mag:.2f} |")
+    return "\n".join(lines)
+
+
 if __name__ == "__main__":
     print(table())
     print()
     print(goal_table())
+    print()
+    print(starlight_table())

@@ -240,7 +240,8 @@ static int parse_terms(const char *s, unsigned *terms)
     }
 }
 
-/* Parse a sky list ("zodiacal+moon", "all", "none"; empty: none) into
+/* Parse a sky list ("zodiacal+moon+starlight", "all", "none"; empty: none;
+ * "all" is zodiacal+moon, as before starlight existed) into
  * oi_expose_goal.sky; 0 or -1. */
 static int parse_sky(const char *s, unsigned *sky)
 {
@@ -262,6 +263,7 @@ static int parse_sky(const char *s, unsigned *sky)
             /* nothing added */
         } else if (same_nocase(tok, "zodiacal")) *sky |= OI_SKY_ZODIACAL;
         else if (same_nocase(tok, "moon")) *sky |= OI_SKY_MOON;
+        else if (same_nocase(tok, "starlight")) *sky |= OI_SKY_STARLIGHT;
         else if (same_nocase(tok, "all")) *sky |= OI_SKY_ZODIACAL | OI_SKY_MOON;
         else return -1;
         if (*p == '\0') return 0;

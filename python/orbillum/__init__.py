@@ -32,6 +32,7 @@ globals().update({n: getattr(L, n) for n in _CONSTANTS})
 
 __all__ = ["illuminate", "expose", "expose_flux", "sun_fraction", "earthshine",
            "lambert_phase", "moon_phase_law", "magnitude_v", "flux_from_magnitude",
+           "starlight_radiance", "galactic",
            "camera", "cameras", "status_name", "flag_names", "terms_mask",
            "Shape", "shape", "shapes", "facet_brdf", "FACET_DTYPE",
            "library_path"] + _CONSTANTS
@@ -858,6 +859,32 @@ def lambert_phase(xi):
 def moon_phase_law(alpha):
     """Lunar phase law relative to full Moon (oi_moon_phase_law), elementwise."""
     return _elementwise(_lib.oi_moon_phase_law, alpha)
+
+
+def starlight_radiance(l_rad, b_rad):
+    """Integrated starlight (W/m^2/sr, as sunlight) at galactic longitude and
+    latitude (oi_starlight_radiance), elementwise; docs/camera.md."""
+    return np.vectorize(lambda l, b: _lib.oi_starlight_radiance(float(l), float(b)),
+                        otypes=[np.float64])(np.asarray(l_rad, dtype=np.float64),
+                                             np.asarray(b_rad, dtype=np.float64))
+
+
+def galactic(direction):
+    """Galactic (l, b) in radians of ICRS direction(s), shape (..., 3)
+    (oi_galactic_from_icrs); ValueError for a zero or non-finite one."""
+    d = np.asarray(direction, dtype=np.float64)
+    if d.shape[-1:] != (3,):
+        raise ValueError(f"direction: shape (..., 3), got {d.shape}")
+    flat = d.reshape(-1, 3)
+    out = np.empty((flat.shape[0], 2))
+    l_out, b_out = L.real(), L.real()
+    for k, v in enumerate(flat):
+        st = _lib.oi_galactic_from_icrs((L.real * 3)(*v), ctypes.byref(l_out), ctypes.byref(b_out))
+        if st != L.OI_OK:
+            raise ValueError(f"direction {v.tolist()}: {status_name(st)}")
+        out[k] = (l_out.value, b_out.value)
+    out = out.reshape(d.shape[:-1] + (2,))
+    return out[..., 0], out[..., 1]
 
 
 def magnitude_v(flux_w_m2, *, model=None):

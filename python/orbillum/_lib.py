@@ -110,6 +110,7 @@ OI_SHININESS_MAX = 1.0e4
 OI_DETECT_MARGIN_NONE = -100.0
 OI_SKY_ZODIACAL = 1
 OI_SKY_MOON = 2
+OI_SKY_STARLIGHT = 4
 
 # ---- include/oi_table.h
 OI_TABLE_FORMAT = 4
@@ -320,6 +321,8 @@ _PROTOS = {
     "oi_earthshine_sphere": (c_int, [real, real, _R3, c_void_p, POINTER(real)]),
     "oi_moon_phase_law": (real, [real]),
     "oi_zodiacal_radiance": (real, [real, real]),
+    "oi_starlight_radiance": (real, [real, real]),
+    "oi_galactic_from_icrs": (c_int, [_R3, POINTER(real), POINTER(real)]),
     "oi_shape_check": (c_int, [POINTER(oi_shape)]),
     "oi_shape_builtin": (POINTER(oi_shape), [c_int]),
     "oi_shape_find": (POINTER(oi_shape), [c_char_p]),

@@ -639,3 +639,20 @@ def test_terms_sky_is_opt_in():
     assert float(got["sky"]["e_sky"]) > 0.05
     assert float(got["all"]["e_sky"]) == 0 and float(got["none"]["e_sky"]) == 0
     assert float(got["sky"]["flux_obs"]) > float(got["all"]["flux_obs"])
+
+
+def test_sky_starlight_word():
+    """sky: `starlight` adds the integrated starlight to the background (the
+    SNR falls, on top of the zodiacal light too); `all` stays zodiacal+moon,
+    its numbers unchanged; a misspelt word is a parse error."""
+    up = dict(LIT, observer_x=0, observer_y=6990, observer_z=0, camera="telescope-15cm")
+    rows = [dict(up, sky="zodiacal"), dict(up, sky="zodiacal+starlight"),
+            dict(up, sky="starlight"), dict(up, sky="all"), dict(up)]
+    code, out, err = run_csv(table(rows))
+    assert code == 0, err
+    zodi, both, star, alls, dark = parse(out)
+    assert float(both["snr"]) < float(zodi["snr"])
+    assert float(star["snr"]) < float(dark["snr"])
+    assert alls["snr"] == zodi["snr"]
+    code, out, err = run_csv(table([dict(up, sky="starlite")]))
+    assert "ERR_PARSE" in out + err
