@@ -4,8 +4,9 @@
  * the model (and the camera) validated once per batch (include/orbillum.h,
  * "batch"). Each row goes through the same internal function the single
  * call uses, so its outputs are the single call's bits; the savings are the
- * model's validation per row and, in oi_sun_fraction_batch, what the
- * outputs mask leaves out.
+ * model's validation per row and, in oi_sun_fraction_batch and
+ * oi_illuminate_batch_outputs (src/illuminate_outputs.c), what the outputs
+ * mask leaves out.
  */
 #include "oi_internal.h"
 
@@ -85,9 +86,9 @@ static int batch_fail(int st, long n, int *status, void *out, size_t size, int z
  * OI_ATM_TOP_MAX_KM), as in src/illuminate.c. */
 #define GRAZING_TOP_KM OI_R(200.0)
 
-#define ROW_UNSURE (0)
-#define ROW_LIT (1)
-#define ROW_UMBRA (2)
+#define ROW_UNSURE OI__ROW_UNSURE
+#define ROW_LIT OI__ROW_LIT
+#define ROW_UMBRA OI__ROW_UMBRA
 
 /*
  * ROW_LIT or ROW_UMBRA when the row certainly is in that region, decided
@@ -105,8 +106,8 @@ static int batch_fail(int st, long n, int *status, void *out, size_t size, int z
  * certainly_lit). UMBRA (only asked without the atmosphere, which lights
  * the umbra): the Sun's disc inside the Earth's, sep + r_sun < r_earth.
  */
-static int certain_region(const oi_real sun[3], const oi_real p[3], const oi_model *m,
-                          int umbra_too)
+int oi__sun_certain_region(const oi_real sun[3], const oi_real p[3], const oi_model *m,
+                           int umbra_too)
 {
     oi_real ds, dp, dsp, rel[3], sin_e, sin_s, cos_e, cos_s, cos_sep, sin_sep, sin_r, cos_r;
     if (!oi__finite3(sun) || !oi__finite3(p)) return ROW_UNSURE;
@@ -150,7 +151,7 @@ static int sun_row(const oi_real sun[3], const oi_real p[3], const oi_model *m,
 #ifndef OI_NO_ATMOSPHERE
         atm_on = (outputs & OI_BATCH_ATMOSPHERE) && !m->no_atmosphere;
 #endif
-        st = certain_region(sun, p, m, !atm_on);
+        st = oi__sun_certain_region(sun, p, m, !atm_on);
         if (st != ROW_UNSURE) {
             const oi_real f = st == ROW_LIT ? (oi_real)1 : (oi_real)0;
             memset(out, 0, sizeof *out);
@@ -258,6 +259,33 @@ int oi_illuminate_batch(long n, const oi_scene *scenes, const oi_model *model, o
     if (st < 0) return batch_fail(st, n, status, out, sizeof *out, 1);
     for (i = 0; i < n; i++) {
         status[i] = oi__illuminate_resolved(&scenes[i], &m, &out[i]);
+        bad += status[i] < 0;
+    }
+    return (int)bad;
+}
+
+int oi_illuminate_batch_outputs(long n, const oi_scene *scenes, const oi_model *model,
+                                unsigned outputs, oi_illum *out, int *status)
+{
+    oi_model m;
+    span in[1], o[2];
+    long i, bad = 0;
+    int st;
+    if (n == 0) return 0;
+    if (check_n(n) != OI_OK) return OI_ERR_INPUT; /* nothing written: n is not the arrays' */
+    if (scenes == NULL || out == NULL || status == NULL)
+        return batch_fail(OI_ERR_NULL, n, status, NULL, 0, 0);
+    if (!span_of(scenes, n, sizeof *scenes, ALIGN_OF(oi_scene), &in[0]) ||
+        !span_of(out, n, sizeof *out, ALIGN_OF(oi_illum), &o[0]) ||
+        !span_of(status, n, sizeof *status, ALIGN_OF(int), &o[1]) ||
+        check_overlap(in, 1, o, 2) != OI_OK)
+        return batch_fail(OI_ERR_INPUT, n, status, NULL, 0, 0);
+    st = (outputs & ~(unsigned)OI_BATCH_SCENE_ALL) != 0u ? OI_ERR_FLAGS
+                                                        : oi__model_resolve(model, &m);
+    if (st == OI_OK) st = oi__albedo_resolve(model, &m);
+    if (st < 0) return batch_fail(st, n, status, out, sizeof *out, 1);
+    for (i = 0; i < n; i++) {
+        status[i] = oi__illuminate_outputs(&scenes[i], &m, outputs, &out[i]);
         bad += status[i] < 0;
     }
     return (int)bad;
