@@ -32,7 +32,8 @@ sys.path.insert(0, ROOT)
 CONFIGS = ["all", "sun", "sun_earth", "all_expose", "sun_fraction", "earthshine", "earthshine_lambert",
            "sun_moon", "sun_earth_mean", "sun_earth_plate", "sun_earth_box_wing",
            "sun_earth_cylinder", "sun_fraction_wgs84", "all_wgs84", "sun_fraction_batch",
-           "sun_fraction_batch_all", "all_batch", "earthshine_batch",
+           "sun_fraction_batch_all", "all_batch", "all_batch_observer", "all_batch_irradiance",
+           "all_batch_full", "earthshine_batch",
            "sun_earth_knocke", "sun_earth_map"]
 LIGHTS = ["lit", "penumbra", "umbra"]
 R_EARTH_KM = 6378.137
@@ -153,7 +154,7 @@ def main():
                 out.put("bench.%s.%s.instructions" % (prec, c), "%.0f" % per, "instructions",
                         "callgrind, (I(%d) - I(%d)) / (%d x %d scenes)" % (args.n2, args.n1,
                                                                            args.n2 - args.n1, ns))
-                if c in ("all_expose", "sun_fraction", "sun_fraction_batch"):
+                if c in ("all_expose", "sun_fraction", "sun_fraction_batch", "all", "all_batch_observer"):
                     for light in LIGHTS:  # where the cost is: lit, penumbra, umbra
                         t1 = callgrind_total(b, c, args.n1, tmp, light)
                         t2 = callgrind_total(b, c, args.n2, tmp, light)
