@@ -159,7 +159,7 @@ int oi__sun_certain_region(const oi_real sun[3], const oi_real p[3], const oi_mo
  * oi__sun_certain_region over CLASSIFY_ROWS rows at once, written so that
  * the compiler vectorises the loop (a fixed count, no call, every value and
  * condition an oi_real, the divisors replaced where a row is not decided;
- * make bench's build notes, -fopt-info-vec). The same tests with the same
+ * gcc -fopt-info-vec, docs/performance.md). The same tests with the same
  * margins, and stricter checks of the positions: every component within
  * OI_POSITION_MAX_KM (so the plain norms neither overflow nor underflow to a
  * wrong decision: |point| > 1.001 R), |sun| > 1.001 (R_sun + R), |sun -
