@@ -104,8 +104,18 @@ static int batch_fail(int st, long n, int *status, void *out, size_t size, int z
  * the Sun and of the Earth enlarged by GRAZING_TOP_KM (outside the
  * atmosphere's window too: its fraction is then 1, src/illuminate.c's
  * certainly_lit). UMBRA (only asked without the atmosphere, which lights
- * the umbra): the Sun's disc inside the Earth's, sep + r_sun < r_earth.
+ * the umbra): the Sun's disc inside the Earth's, sep + r_sun < r_earth (for
+ * the ellipsoid, its inner sphere's: the polar radius).
  */
+/* The radius of the sphere whose umbra is certainly the model Earth's: the
+ * sphere itself, or the ellipsoid's inner sphere (its polar radius). */
+static oi_real umbra_radius(const oi_model *m)
+{
+    if (m->earth_shape == OI_EARTH_WGS84)
+        return m->earth_radius_km * (oi_real)(1.0 - 1.0 / OI_WGS84_INV_FLATTENING);
+    return m->earth_radius_km;
+}
+
 int oi__sun_certain_region(const oi_real sun[3], const oi_real p[3], const oi_model *m,
                            int umbra_too)
 {
@@ -133,8 +143,9 @@ int oi__sun_certain_region(const oi_real sun[3], const oi_real p[3], const oi_mo
         if (cos_sep < cos_e * cos_s - sin_e * sin_s - COS_MARGIN) return ROW_LIT;
     }
     if (!umbra_too) return ROW_UNSURE;
-    /* cos(sep + r_sun) > cos(r_earth) + margin: sep + r_sun < r_earth <= pi/2 */
-    sin_r = m->earth_radius_km / dp;
+    /* cos(sep + r_sun) > cos(r_earth) + margin: sep + r_sun < r_earth <= pi/2
+     * (the ellipsoid's silhouette holds its inner sphere's, the polar radius) */
+    sin_r = umbra_radius(m) / dp;
     cos_r = OI_SQRT(((oi_real)1 - sin_r) * ((oi_real)1 + sin_r));
     sin_sep = OI_SQRT(oi__clamp(((oi_real)1 - cos_sep) * ((oi_real)1 + cos_sep), (oi_real)0,
                                 (oi_real)1));
@@ -171,7 +182,7 @@ static VECTORISE_COMPARES void classify_block(const oi_real *restrict sun,
                                               const oi_real *restrict p, const oi_model *m,
                                               oi_real umbra_too, oi_real *restrict code)
 {
-    const oi_real re = m->earth_radius_km, rs = m->sun_radius_km;
+    const oi_real re = m->earth_radius_km, rs = m->sun_radius_km, r_umbra = umbra_radius(m);
     const oi_real re_top = re + GRAZING_TOP_KM, far = (oi_real)OI_POSITION_MAX_KM;
     const oi_real one = (oi_real)1, zero = (oi_real)0;
     int i;
@@ -203,7 +214,7 @@ static VECTORISE_COMPARES void classify_block(const oi_real *restrict sun,
         cos_e2 = (one - sin_e) * (one + sin_e);
         cos_e = OI_SQRT(cos_e2 > zero ? cos_e2 : zero);
         lit = sin_e < one && cos_sep < cos_e * cos_s - sin_e * sin_s - COS_MARGIN ? ok : zero;
-        sin_r = re / dp;
+        sin_r = r_umbra / dp;
         cos_r2 = (one - sin_r) * (one + sin_r);
         cos_r = OI_SQRT(cos_r2 > zero ? cos_r2 : zero);
         sin_sep2 = (one - cos_sep) * (one + cos_sep);

@@ -211,6 +211,15 @@ static void test_sun_random(void **state)
     geo.limb_darkening = OI_LIMB_DARKENED;
     (void)check_sun_rows(NRAND, &geo);
 #endif
+#ifndef OI_NO_OBLATE
+    /* the ellipsoid without the atmosphere: the umbra decided from cosines
+     * must be the ellipsoid's (its silhouette is smaller than the
+     * equatorial sphere's towards the poles) */
+    memset(&geo, 0, sizeof geo);
+    geo.no_atmosphere = 1;
+    geo.earth_shape = OI_EARTH_WGS84;
+    (void)check_sun_rows(NRAND, &geo);
+#endif
 }
 
 /* Scenes from the Sun rows: Moon, observer, terms and albedos varied. */
@@ -417,6 +426,8 @@ static void test_illuminate_outputs(void **state)
 #ifndef OI_NO_OBLATE
     memset(&m, 0, sizeof m);
     m.earth_shape = OI_EARTH_WGS84;
+    (void)check_illum_outputs(NRAND / 2, &m);
+    m.no_atmosphere = 1;
     (void)check_illum_outputs(NRAND / 2, &m);
 #endif
     /* hostile rows: each the single call's status, the others computed */
