@@ -31,16 +31,19 @@ static OI_NOINLINE int sun_term_outputs(const oi_scene *scene, const oi_model *m
                                         unsigned outputs, oi_illum *out)
 {
     oi_real to_sun[3], sun_distance;
-    int st = OI__ROW_UNSURE, atm_on = 0;
+    int st = OI__ROW_UNSURE;
     if ((outputs & OI_BATCH_FRACTION_LD) && (outputs & OI_BATCH_GEOMETRY))
         return sun_term(scene, m, out);
     oi__sub(scene->sun_km, scene->target_km, to_sun);
     sun_distance = oi__unit_bounded(to_sun, to_sun);
     if (!(outputs & OI_BATCH_GEOMETRY) && moon_leaves_sun(scene, m)) {
+        /* the umbra only without the atmosphere (which lights it) */
 #ifndef OI_NO_ATMOSPHERE
-        atm_on = !m->no_atmosphere;
+        const int umbra_too = m->no_atmosphere != 0;
+#else
+        const int umbra_too = 1;
 #endif
-        st = oi__sun_certain_region(scene->sun_km, scene->target_km, m, !atm_on);
+        st = oi__sun_certain_region(scene->sun_km, scene->target_km, m, umbra_too);
     }
     if (st != OI__ROW_UNSURE) {
         /* the full call's fractions there (1 or 0), its region; the light
