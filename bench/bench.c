@@ -37,6 +37,12 @@
  *   sun_fraction_batch_all  oi_sun_fraction_batch, OI_BATCH_ALL (every output of
  *                  the single call)
  *   all_batch      oi_illuminate_batch, Sun + Earth + Moon (as all)
+ *   all_batch_observer  oi_illuminate_batch_outputs, mask OI_BATCH_OBSERVER (what
+ *                  a planner reads: irradiances, the fluxes at the observer,
+ *                  magnitude; no shadow angles, no limb-darkened fraction, no
+ *                  directions), as all
+ *   all_batch_irradiance  the same, mask 0 (the irradiances at the target)
+ *   all_batch_full  the same, OI_BATCH_SCENE_ALL (every output of oi_illuminate)
  *   earthshine_batch  oi_earthshine_batch (as earthshine)
  * The batch configurations make one call over the mix (or over its lit,
  * penumbra or umbra scenes); costs are per scene.
@@ -72,7 +78,8 @@ static volatile double sink;
 enum { C_ALL, C_SUN, C_SUN_EARTH, C_ALL_EXPOSE, C_SUN_FRACTION, C_EARTHSHINE, C_EARTHSHINE_LAMBERT,
        C_SUN_MOON, C_SUN_EARTH_MEAN, C_SHAPE_PLATE, C_SHAPE_BOX_WING, C_SHAPE_CYLINDER,
        C_SUN_FRACTION_WGS84, C_ALL_WGS84,
-       C_SUN_FRACTION_BATCH, C_SUN_FRACTION_BATCH_ALL, C_ALL_BATCH, C_EARTHSHINE_BATCH,
+       C_SUN_FRACTION_BATCH, C_SUN_FRACTION_BATCH_ALL, C_ALL_BATCH, C_ALL_BATCH_OBSERVER,
+       C_ALL_BATCH_IRRADIANCE, C_ALL_BATCH_FULL, C_EARTHSHINE_BATCH,
        C_SUN_EARTH_KNOCKE, C_SUN_EARTH_MAP, C_N };
 static const char *const config_name[C_N] = {"all",          "sun",        "sun_earth",
                                              "all_expose",   "sun_fraction", "earthshine",
@@ -82,7 +89,8 @@ static const char *const config_name[C_N] = {"all",          "sun",        "sun_
                                              "sun_fraction_wgs84", "all_wgs84",
                                              "sun_fraction_batch",
                                              "sun_fraction_batch_all", "all_batch",
-                                             "earthshine_batch", "sun_earth_knocke",
+                                             "all_batch_observer", "all_batch_irradiance",
+                                             "all_batch_full", "earthshine_batch", "sun_earth_knocke",
                                              "sun_earth_map"};
 
 /* the albedo map of sun_earth_map: 1-degree cells (a CERES grid's size),
@@ -177,6 +185,16 @@ static double run_batch(int cfg)
     case C_ALL_BATCH:
         (void)oi_illuminate_batch(nb, b_scenes, NULL, b_illum, b_status);
         for (i = 0; i < nb; i++) acc += (double)b_illum[i].flux_obs;
+        break;
+    case C_ALL_BATCH_OBSERVER:
+    case C_ALL_BATCH_IRRADIANCE:
+    case C_ALL_BATCH_FULL:
+        (void)oi_illuminate_batch_outputs(nb, b_scenes, NULL,
+                                          cfg == C_ALL_BATCH_OBSERVER ? OI_BATCH_OBSERVER
+                                          : cfg == C_ALL_BATCH_FULL   ? OI_BATCH_SCENE_ALL
+                                                                      : 0u,
+                                          b_illum, b_status);
+        for (i = 0; i < nb; i++) acc += (double)(b_illum[i].flux_obs + b_illum[i].e_sun);
         break;
     default:
         (void)oi_earthshine_batch(nb, b_theta, b_h, NULL, b_phi, b_psi, b_status);

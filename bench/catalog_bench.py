@@ -66,10 +66,15 @@ def main():
         "scenes, oi_illuminate_batch + oi_expose_scene_batch, visibility")
     put("catalog.setup", f"{s.setup_s:.3g}", "s", "epochs, Sun, Moon, rotations, observers")
     put("catalog.serial_run", f"{s.run_s:.3g}", "s", "blocks in one process (wall)")
-    walls = {}
+    walls, cpus = {}, {}
     for w in (1, 2):
         sw = run(workers=w)
         walls[w] = sw.run_s
+        blocks = sw.propagate_cpu_s + sw.illuminate_cpu_s
+        # blocks are equal in size but the last: the larger half's share of C
+        n_half = -(-sw.blocks // 2)
+        cpus[w] = {"blocks": blocks, "client": sw.client_cpu_s,
+                   "largest_half": blocks * n_half / max(sw.blocks, 1)}
         put(f"catalog.dask{w}_run", f"{sw.run_s:.3g}", "s",
             f"blocks on a local cluster of {w} worker(s) (wall)")
         put(f"catalog.dask{w}_end_to_end", f"{plan.rate(sw)['end_to_end']:.4g}", "scenes/CPU-s",
@@ -77,6 +82,23 @@ def main():
     load = os.getloadavg()[0]
     put("catalog.scaling_1_to_2", f"{walls[1] / walls[2]:.3g}", "x",
         f"ideal 2; load average {load:.2f} on {os.cpu_count()} cores during the run")
+    # The same from CPU time, which other jobs on the cores do not change: the
+    # blocks' CPU time C (summed over the workers) and this process's, K,
+    # taking their results (rows, tables). With 1 worker the client overlaps
+    # it on the second core (wall ~ max(C1, K)); with 2 workers and the client
+    # on 2 cores the wall is at least (C2 + K) / 2 and C2 / 2 (blocks are
+    # whole tasks: the larger half of them, imbalance).
+    c1 = cpus[1]["blocks"]
+    c2, k2 = cpus[2]["blocks"], cpus[2]["client"]
+    half = cpus[2]["largest_half"]
+    projected = max(c1, cpus[1]["client"]) / max((c2 + k2) / 2.0, half)
+    put("catalog.client_cpu_share", f"{k2 / c2:.3g}", "1",
+        "this process's CPU taking the results / the blocks' CPU (2 workers)")
+    put("catalog.dask2_over_dask1_cpu_per_scene", f"{c2 / c1:.3g}", "x",
+        "the blocks' CPU per scene with 2 workers over 1 (1: distribution costs nothing)")
+    put("catalog.scaling_1_to_2_cpu_bound", f"{projected:.3g}", "x",
+        "projected on 2 free cores from CPU times: max(C1, K1) / max((C2 + K2) / 2, "
+        "largest half of the blocks); ideal 2")
     os.makedirs(os.path.dirname(os.path.abspath(a.out)), exist_ok=True)
     with open(a.out, "w") as f:
         f.write("\n".join(lines) + "\n")

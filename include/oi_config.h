@@ -116,6 +116,7 @@ typedef double oi_real;
 #define oi_sun_fraction_batch oi_sun_fraction_batch_sp
 #define oi_earthshine_batch oi_earthshine_batch_sp
 #define oi_illuminate_batch oi_illuminate_batch_sp
+#define oi_illuminate_batch_outputs oi_illuminate_batch_outputs_sp
 #define oi_expose_batch oi_expose_batch_sp
 #define oi_expose_scene_batch oi_expose_scene_batch_sp
 #define oi_zodiacal_radiance oi_zodiacal_radiance_sp

@@ -1205,6 +1205,33 @@ int oi_earthshine_batch(long n, const oi_real *theta, const oi_real *h_km,
 int oi_illuminate_batch(long n, const oi_scene *scenes, const oi_model *model,
                         oi_illum *out, int *status);
 
+/* Outputs mask of oi_illuminate_batch_outputs (bits, with OI_BATCH_FRACTION_LD
+ * for shadow.fraction_ld and OI_BATCH_GEOMETRY for the shadow's four angles
+ * and distance; OI_BATCH_ATMOSPHERE is accepted and changes nothing there:
+ * shadow.fraction_atm and e_sun are the scene's sunlight, always formed). */
+#define OI_BATCH_DIRECTIONS  (8u)  /* dir_sun, dir_earth, dir_moon, dir_sky */
+#define OI_BATCH_OBSERVER    (16u) /* what the observer receives: phase_*, flux_*,
+                                      flux_obs, flux_specular, mag_v, range_km */
+#define OI_BATCH_SCENE_ALL (OI_BATCH_ALL | OI_BATCH_DIRECTIONS | OI_BATCH_OBSERVER)
+
+/* oi_illuminate over n scenes with an outputs mask: scenes[n] in, out[n],
+ * status[n]; outputs OI_BATCH_* bits within OI_BATCH_SCENE_ALL (others:
+ * OI_ERR_FLAGS for the batch). Every field asked for (and every field no bit
+ * names: the irradiances e_*, shadow.fraction, fraction_atm and region, the
+ * Earth's and the Moon's angles and fractions, earth_albedo_eff) is the
+ * single call's bits; the fields left out are 0, and what only they need is
+ * not computed: without OI_BATCH_GEOMETRY a target certainly in full
+ * sunlight (or, without the atmosphere, certainly in the umbra) is answered
+ * from cosines (as oi_sun_fraction_batch), without OI_BATCH_FRACTION_LD the
+ * limb-darkened integral runs only where the model's sunlight needs it,
+ * without OI_BATCH_OBSERVER the observer's term is not formed (its position
+ * is still checked, with the single call's statuses; the observer inside
+ * the target, OI_ERR_OBSERVER_AT_TARGET, is then not detected). With
+ * OI_BATCH_SCENE_ALL every row is oi_illuminate's. src/illuminate_outputs.c,
+ * docs/performance.md. */
+int oi_illuminate_batch_outputs(long n, const oi_scene *scenes, const oi_model *model,
+                                unsigned outputs, oi_illum *out, int *status);
+
 #ifndef OI_NO_EXPOSURE
 /* oi_expose over n rows, one camera and goal: in[n], out[n], status[n]. */
 int oi_expose_batch(long n, const oi_camera *camera, const oi_expose_in *in,

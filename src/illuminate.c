@@ -435,6 +435,7 @@ static OI_NOINLINE int observer_term(const oi_scene *scene, const oi_model *m,
     return OI_OK;
 }
 
+#ifndef OI_ILLUMINATE_OUTPUTS_ONLY /* src/illuminate_outputs.c: the helpers above only */
 /*
  * oi_illuminate: the contract (given, returned, statuses) is in
  * include/orbillum.h.
@@ -559,3 +560,4 @@ fail:
     memset(out, 0, sizeof *out);
     return st;
 }
+#endif /* OI_ILLUMINATE_OUTPUTS_ONLY */

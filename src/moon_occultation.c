@@ -191,4 +191,21 @@ oi_real oi__moon_disc_visible(const oi_real point_km[3], const oi_real u_moon[3]
     return frac;
 }
 
+/* oi__moon_shadow's first tests alone (src/oi_internal.h): 1 when it would
+ * return OI_OK without reading or changing the shadow; 0 when not certain
+ * (the point inside the Moon included: the full call returns its error).
+ * Positions bounded by OI_POSITION_MAX_KM, as there. */
+int oi__moon_shadow_none(const oi_real sun_km[3], const oi_real moon_km[3],
+                         const oi_real point_km[3], const oi_model *m)
+{
+    oi_real u_sun[3], u_moon[3], ds, dm;
+    oi__sub(moon_km, point_km, u_moon);
+    oi__sub(sun_km, point_km, u_sun);
+    dm = oi__dot(u_moon, u_moon);
+    ds = oi__dot(u_sun, u_sun);
+    if (!(dm > m->moon_radius_km * m->moon_radius_km)) return 0;
+    if (dm >= ds) return 1;
+    return discs_certainly_apart(u_sun, u_moon, ds, dm, m->sun_radius_km, m->moon_radius_km);
+}
+
 #endif /* OI_NO_MOON */

@@ -382,6 +382,30 @@ int oi__albedo_resolve(const oi_model *in, oi_model *out);
  * scene and out: the model is not validated again. */
 int oi__illuminate_resolved(const oi_scene *scene, const oi_model *m, oi_illum *out);
 
+/* oi__illuminate_resolved with the outputs mask of
+ * oi_illuminate_batch_outputs (OI_BATCH_* bits, checked by the caller):
+ * src/illuminate_outputs.c. */
+int oi__illuminate_outputs(const oi_scene *scene, const oi_model *m, unsigned outputs,
+                           oi_illum *out);
+
+/* The batch's certain regions of the Sun seen from a point (src/batch.c):
+ * OI__ROW_LIT or OI__ROW_UMBRA (asked only with umbra_too) when the point is
+ * certainly there, decided from cosines after every check of
+ * oi__sun_shadow's geometry passed (its status would be OI_OK, its
+ * fractions 1 or 0, the light's direction the Sun's); OI__ROW_UNSURE
+ * otherwise. */
+#define OI__ROW_UNSURE (0)
+#define OI__ROW_LIT (1)
+#define OI__ROW_UMBRA (2)
+int oi__sun_certain_region(const oi_real sun[3], const oi_real p[3], const oi_model *m,
+                           int umbra_too);
+
+/* 1 when oi__moon_shadow would return OI_OK and leave the shadow as it is
+ * (the Moon beyond the Sun, or the two discs certainly apart), so that the
+ * shadow's angles it reads need not be formed (src/moon_occultation.c). */
+int oi__moon_shadow_none(const oi_real sun_km[3], const oi_real moon_km[3],
+                         const oi_real point_km[3], const oi_model *m);
+
 /*
  * oi_earthshine (src/earthshine.c) for callers that already hold a resolved
  * model and non-NULL phi, psi: same results and statuses, the model is not

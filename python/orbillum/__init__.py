@@ -568,13 +568,31 @@ def _batch_status(st, n, what):
                          f"include/orbillum.h)")
 
 
-def _illuminate_raw(sc, m):
-    """oi_illuminate_batch over the scenes: one C call for every row."""
+def _outputs_mask(outputs):
+    """The outputs mask of oi_illuminate_batch_outputs: None (every output: the
+    plain oi_illuminate_batch) or OI_BATCH_* bits within OI_BATCH_SCENE_ALL."""
+    if outputs is None:
+        return None
+    if isinstance(outputs, (bool, np.bool_)) or not isinstance(outputs, (int, np.integer)):
+        raise TypeError(f"outputs: a mask of OI_BATCH_* bits or None, got {outputs!r}")
+    if int(outputs) < 0 or int(outputs) & ~L.OI_BATCH_SCENE_ALL:
+        raise ValueError(f"outputs: unknown bits in {int(outputs):#x} (OI_BATCH_SCENE_ALL is "
+                         f"{L.OI_BATCH_SCENE_ALL:#x})")
+    return int(outputs)
+
+
+def _illuminate_raw(sc, m, outputs=None):
+    """oi_illuminate_batch (or, with an outputs mask,
+    oi_illuminate_batch_outputs) over the scenes: one C call for every row."""
     n = sc.shape[0]
     res = np.empty(n, dtype=ILLUM_DTYPE)  # the batch writes (or zeroes) every row
     status = np.empty(n, dtype=np.intc)
-    st = _lib.oi_illuminate_batch(n, sc.ctypes.data, _mptr(m), res.ctypes.data,
-                                  status.ctypes.data)
+    if outputs is None:
+        st = _lib.oi_illuminate_batch(n, sc.ctypes.data, _mptr(m), res.ctypes.data,
+                                      status.ctypes.data)
+    else:
+        st = _lib.oi_illuminate_batch_outputs(n, sc.ctypes.data, _mptr(m), outputs,
+                                              res.ctypes.data, status.ctypes.data)
     _batch_status(st, n, "model")
     return res, status
 
@@ -584,7 +602,7 @@ def _illuminate_raw(sc, m):
 
 def illuminate(sun, moon, target, observer=None, *, terms=None, earth_albedo=None,
                target_albedo=None, target_radius_m=None, target_shape=None, attitude_q=None,
-               model=None, epoch_jd=None, earth_rotation_rad=None):
+               model=None, epoch_jd=None, earth_rotation_rad=None, outputs=None):
     """Light on the target from Sun, Earth and Moon, and what the observer sees.
 
     Given:
@@ -614,17 +632,26 @@ def illuminate(sun, moon, target, observer=None, *, terms=None, earth_albedo=Non
       epoch_jd         scalar or (N,): Julian date (UTC), read by "knocke"
       earth_rotation_rad  scalar or (N,): the Greenwich meridian from the frame's
                        x axis, read by "map"
+      outputs          None (every field) or a mask of OI_BATCH_* bits
+                       (oi_illuminate_batch_outputs: OI_BATCH_FRACTION_LD,
+                       OI_BATCH_GEOMETRY, OI_BATCH_DIRECTIONS, OI_BATCH_OBSERVER;
+                       the irradiances, shadow fraction, fraction_atm and region
+                       always): the fields left out are 0 and not computed, the
+                       others the same bits (docs/performance.md, "Batch
+                       interface"). TypeError / ValueError for a non-integer or
+                       unknown bits
     Returns: dict of arrays, one entry per oi_illum field (nested shadow fields as
       shadow_*; aliases sun_fraction, sun_fraction_ld, sun_fraction_atm;
       dir_* of shape (N, 3); flux_specular, the facets' specular part of
       flux_obs), plus status (int32) and status_name.
     """
+    mask = _outputs_mask(outputs)
     m = _model(model)
     keep = []
     sc = _scenes(sun, moon, target, observer, terms, earth_albedo, target_albedo,
                  target_radius_m, target_shape=target_shape, attitude_q=attitude_q, keep=keep,
                  epoch_jd=epoch_jd, earth_rotation_rad=earth_rotation_rad)
-    res, status = _illuminate_raw(sc, m)
+    res, status = _illuminate_raw(sc, m, mask)
     return _flatten(res, status)
 
 

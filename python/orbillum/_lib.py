@@ -102,6 +102,9 @@ OI_BATCH_FRACTION_LD = 1
 OI_BATCH_ATMOSPHERE = 2
 OI_BATCH_GEOMETRY = 4
 OI_BATCH_ALL = OI_BATCH_FRACTION_LD | OI_BATCH_ATMOSPHERE | OI_BATCH_GEOMETRY
+OI_BATCH_DIRECTIONS = 8
+OI_BATCH_OBSERVER = 16
+OI_BATCH_SCENE_ALL = OI_BATCH_ALL | OI_BATCH_DIRECTIONS | OI_BATCH_OBSERVER
 OI_FLAG_MOON_IN_FOV = 512
 OI_FLAG_TRAILED = 1024
 OI_FLAG_GLINT = 2048
@@ -342,6 +345,8 @@ _PROTOS = {
     "oi_earthshine_batch": (c_int, [ctypes.c_long, c_void_p, c_void_p, c_void_p, c_void_p,
                                     c_void_p, c_void_p]),
     "oi_illuminate_batch": (c_int, [ctypes.c_long, c_void_p, c_void_p, c_void_p, c_void_p]),
+    "oi_illuminate_batch_outputs": (c_int, [ctypes.c_long, c_void_p, c_void_p, c_uint, c_void_p,
+                                            c_void_p]),
     "oi_expose_batch": (c_int, [ctypes.c_long, c_void_p, c_void_p, c_void_p, c_void_p,
                                 c_void_p]),
     "oi_expose_scene_batch": (c_int, [ctypes.c_long, c_void_p, c_void_p, c_void_p, c_void_p,

@@ -211,6 +211,15 @@ static void test_sun_random(void **state)
     geo.limb_darkening = OI_LIMB_DARKENED;
     (void)check_sun_rows(NRAND, &geo);
 #endif
+#ifndef OI_NO_OBLATE
+    /* the ellipsoid without the atmosphere: the umbra decided from cosines
+     * must be the ellipsoid's (its silhouette is smaller than the
+     * equatorial sphere's towards the poles) */
+    memset(&geo, 0, sizeof geo);
+    geo.no_atmosphere = 1;
+    geo.earth_shape = OI_EARTH_WGS84;
+    (void)check_sun_rows(NRAND, &geo);
+#endif
 }
 
 /* Scenes from the Sun rows: Moon, observer, terms and albedos varied. */
@@ -290,6 +299,152 @@ static void test_illuminate_stability_and_random(void **state)
     random_scenes(NRAND, 777);
     check_illum_rows(NRAND, NULL);
     check_illum_rows(NRAND, &m);
+}
+
+/* The single call's row as oi_illuminate_batch_outputs must give it under
+ * mask: the single call's (without OI_BATCH_OBSERVER: of the scene without
+ * observer, once the observer's own checks passed), the fields left out 0. */
+static int expected_outputs(const oi_scene *s, const oi_model *model, unsigned mask,
+                            int one_status, const oi_illum *one, oi_illum *want)
+{
+    int st = one_status;
+    *want = *one;
+    if (!(mask & OI_BATCH_OBSERVER) && s->has_observer &&
+        (st >= 0 || st == OI_ERR_OBSERVER_AT_TARGET)) {
+        oi_scene alone = *s;
+        alone.has_observer = 0;
+        st = oi_illuminate(&alone, model, want);
+    }
+    if (st < 0) return st;
+    if (!(mask & OI_BATCH_FRACTION_LD)) want->shadow.fraction_ld = 0;
+    if (!(mask & OI_BATCH_GEOMETRY)) {
+        want->shadow.sun_radius_rad = want->shadow.earth_radius_rad = 0;
+        want->shadow.separation_rad = want->shadow.sun_distance_km = 0;
+    }
+    if (!(mask & OI_BATCH_DIRECTIONS)) {
+        memset(want->dir_sun, 0, sizeof want->dir_sun);
+        memset(want->dir_earth, 0, sizeof want->dir_earth);
+        memset(want->dir_moon, 0, sizeof want->dir_moon);
+        memset(want->dir_sky, 0, sizeof want->dir_sky);
+    }
+    return st;
+}
+
+/* Every outputs mask of oi_illuminate_batch_outputs over scenes 0..n-1,
+ * against the single calls. Returns the rows answered without the shadow's
+ * angles' being needed by the single call's region (lit or umbra), so that
+ * a test can require the certain-region path was taken. */
+static long check_illum_outputs(long n, const oi_model *model)
+{
+    static oi_illum want;
+    unsigned mask;
+    long i, certain = 0;
+    for (i = 0; i < n; i++) {
+        one_st[i] = oi_illuminate(&scenes[i], model, &one_il[i]);
+        certain += one_st[i] >= 0 && one_il[i].shadow.region != OI_SHADOW_PENUMBRA;
+    }
+    for (mask = 0; mask <= OI_BATCH_SCENE_ALL; mask++) {
+        int bad, want_bad = 0;
+        memset(bat_il, 0x5a, sizeof bat_il); /* garbage: every field must be written */
+        bad = oi_illuminate_batch_outputs(n, scenes, model, mask, bat_il, bat_st);
+        for (i = 0; i < n; i++) {
+            const int st = expected_outputs(&scenes[i], model, mask, one_st[i], &one_il[i], &want);
+            want_bad += st < 0;
+            if (st != bat_st[i]) {
+                print_error("outputs status row %ld mask %u: single %d batch %d\n", i, mask, st,
+                            bat_st[i]);
+                fail();
+            }
+            if (st < 0) memset(&want, 0, sizeof want);
+            if (memcmp(&want, &bat_il[i], sizeof want) != 0) {
+                const oi_real *a = (const oi_real *)(const void *)&want;
+                const oi_real *b = (const oi_real *)(const void *)&bat_il[i];
+                size_t k;
+                for (k = 0; k < sizeof want / sizeof *a; k++)
+                    if (!same_bits(a[k], b[k]))
+                        print_error("outputs row %ld mask %u: word %u single %.17g batch %.17g\n",
+                                    i, mask, (unsigned)k, (double)a[k], (double)b[k]);
+                fail();
+            }
+        }
+        check_int(want_bad, bad, "outputs rows in error");
+    }
+    return certain;
+}
+
+/* Half the rows of random_scenes with the Moon near the line from the
+ * target to the Sun (solar eclipses by the Moon, alone and with the
+ * Earth's shadow), so that its occultation's path is taken. */
+static void moon_in_front(long n, uint64_t seed)
+{
+    uint64_t rng = seed;
+    long i;
+    for (i = 0; i < n; i += 2) {
+        oi_scene *s = &scenes[i];
+        double u[3], d = 0, r = 384400.0 * (0.95 + 0.1 * lcg01(&rng));
+        int k;
+        for (k = 0; k < 3; k++) {
+            u[k] = (double)s->sun_km[k] - (double)s->target_km[k];
+            d += u[k] * u[k];
+        }
+        d = sqrt(d);
+        for (k = 0; k < 3; k++)
+            s->moon_km[k] = (oi_real)((double)s->target_km[k] + r * u[k] / d +
+                                      3000.0 * (lcg01(&rng) - 0.5));
+        s->has_moon = (int)(i % 4 == 0);
+    }
+}
+
+static void test_illuminate_outputs(void **state)
+{
+    const stab_vec *v = VEC(stab_illum);
+    long n = (long)NELEM(VEC(stab_illum)), i, certain;
+    oi_model m;
+    (void)state;
+    for (i = 0; i < n; i++) {
+        oi_scene *s = &scenes[i];
+        oi_scene_defaults(s);
+        set3(s->sun_km, v[i].in[0], v[i].in[1], v[i].in[2]);
+        set3(s->target_km, v[i].in[3], v[i].in[4], v[i].in[5]);
+        set3(s->observer_km, v[i].in[6], v[i].in[7], v[i].in[8]);
+        s->has_observer = 1;
+        s->terms = OI_TERM_SUN | OI_TERM_EARTH;
+    }
+    (void)check_illum_outputs(n, NULL);
+    random_scenes(NRAND / 2, 4711);
+    moon_in_front(NRAND / 2, 5);
+    certain = check_illum_outputs(NRAND / 2, NULL);
+    assert_true(certain > NRAND / 8);
+    memset(&m, 0, sizeof m);
+    m.no_atmosphere = 1;
+    m.earth_model = OI_EARTH_LAMBERT;
+    (void)check_illum_outputs(NRAND / 2, &m);
+#ifndef OI_NO_LIMB_DARKENING
+    m.limb_darkening = OI_LIMB_DARKENED;
+    (void)check_illum_outputs(NRAND / 2, &m);
+#endif
+#ifndef OI_NO_OBLATE
+    memset(&m, 0, sizeof m);
+    m.earth_shape = OI_EARTH_WGS84;
+    (void)check_illum_outputs(NRAND / 2, &m);
+    m.no_atmosphere = 1;
+    (void)check_illum_outputs(NRAND / 2, &m);
+#endif
+    /* hostile rows: each the single call's status, the others computed */
+    random_scenes(40, 17);
+    scenes[2].target_albedo = (oi_real)NAN;
+    scenes[3].earth_albedo = (oi_real)2;
+    scenes[4].terms = 1u << 9;
+    scenes[5].has_observer = 1;
+    scenes[5].observer_km[1] = (oi_real)NAN;
+    scenes[6].has_observer = 1;
+    memcpy(scenes[6].observer_km, scenes[6].target_km, sizeof scenes[6].observer_km);
+    (void)check_illum_outputs(40, NULL);
+    check_int(OI_ERR_NONFINITE, bat_st[2], "outputs NaN albedo row");
+    check_int(OI_ERR_ALBEDO, bat_st[3], "outputs albedo row");
+    check_int(OI_ERR_TERMS, bat_st[4], "outputs terms row");
+    check_int(OI_ERR_NONFINITE, bat_st[5], "outputs NaN observer row");
+    check_int(OI_ERR_OBSERVER_AT_TARGET, bat_st[6], "observer at target, mask all");
 }
 
 static void test_earthshine(void **state)
@@ -486,6 +641,35 @@ static void test_hostile_arrays(void **state)
     random_scenes(n, 3);
     check_int(OI_ERR_MODEL, oi_illuminate_batch(n, scenes, &bad_model, bat_il, bat_st), "model");
     expect_all(OI_ERR_MODEL, n, bat_st, "model rows illuminate");
+    check_int(OI_ERR_MODEL,
+              oi_illuminate_batch_outputs(n, scenes, &bad_model, 0, bat_il, bat_st), "model");
+    expect_all(OI_ERR_MODEL, n, bat_st, "model rows outputs");
+    for (i = 0; i < n; i++) expect_field(0, bat_il[i].e_sun, "outputs zeroed", i, 0);
+    /* outputs batch: n = 0, n too big, NULL, unknown bits, overlap, misaligned */
+    check_int(0, oi_illuminate_batch_outputs(0, NULL, NULL, 0, NULL, NULL), "n = 0 outputs");
+    bat_st[0] = 12345;
+    check_int(OI_ERR_INPUT, oi_illuminate_batch_outputs(-1, scenes, NULL, 0, bat_il, bat_st),
+              "n<0 outputs");
+    check_int(OI_ERR_INPUT,
+              oi_illuminate_batch_outputs(OI_BATCH_MAX + 1, scenes, NULL, 0, bat_il, bat_st),
+              "n big outputs");
+    check_int(12345, bat_st[0], "outputs status untouched");
+    check_int(OI_ERR_NULL, oi_illuminate_batch_outputs(n, NULL, NULL, 0, bat_il, bat_st),
+              "NULL scenes");
+    expect_all(OI_ERR_NULL, n, bat_st, "NULL scenes rows");
+    check_int(OI_ERR_FLAGS,
+              oi_illuminate_batch_outputs(n, scenes, NULL, OI_BATCH_SCENE_ALL + 1u, bat_il, bat_st),
+              "outputs mask");
+    expect_all(OI_ERR_FLAGS, n, bat_st, "outputs mask rows");
+    check_int(OI_ERR_INPUT,
+              oi_illuminate_batch_outputs(n, scenes, NULL, 0, (oi_illum *)(void *)&scenes[1],
+                                          bat_st),
+              "outputs over scenes");
+    expect_all(OI_ERR_INPUT, n, bat_st, "outputs overlap rows");
+    check_int(OI_ERR_INPUT,
+              oi_illuminate_batch_outputs(n, scenes, NULL, 0, bat_il,
+                                          (int *)(void *)((unsigned char *)bat_st + 1)),
+              "outputs misaligned status");
     bad_model.tsi_w_m2 = 0;
     bad_model.sun_radius_km = (oi_real)-5;
     check_int(OI_ERR_RADIUS, oi_earthshine_batch(n, pt, pt + n, &bad_model, buf, NULL, bat_st),
@@ -511,6 +695,7 @@ int main(void)
         cmocka_unit_test(test_sun_stability_vectors),
         cmocka_unit_test(test_sun_random),
         cmocka_unit_test(test_illuminate_stability_and_random),
+        cmocka_unit_test(test_illuminate_outputs),
         cmocka_unit_test(test_earthshine),
 #ifndef OI_NO_EXPOSURE
         cmocka_unit_test(test_expose),

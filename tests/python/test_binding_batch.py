@@ -85,6 +85,42 @@ def test_illuminate_and_earthshine_equal_single_calls():
     assert phi2.shape == (2, 3)
 
 
+def test_illuminate_outputs_mask_changes_no_requested_output():
+    """illuminate(outputs=mask): every field the mask keeps is the full call's
+    bits (single C calls row by row); the others are 0. Without
+    OI_BATCH_OBSERVER the observer's fields are those of the scene without
+    observer (0)."""
+    sun, tgt = _rows(300, 21)
+    moon = np.tile([3.6e5, 1.2e5, 2.0e4], (len(sun), 1))
+    obs = tgt + np.array([120.0, -60.0, 35.0])
+    full = orbillum.illuminate(sun, moon, tgt, obs, terms="all")
+    geometry = ("shadow_sun_radius_rad", "shadow_earth_radius_rad", "shadow_separation_rad",
+                "shadow_sun_distance_km")
+    observer = ("phase_sun", "phase_earth", "phase_moon", "phase_sky", "flux_sun", "flux_earth",
+                "flux_moon", "flux_sky", "flux_obs", "flux_specular", "mag_v", "range_km")
+    directions = ("dir_sun", "dir_earth", "dir_moon", "dir_sky")
+    for mask in range(L.OI_BATCH_SCENE_ALL + 1):
+        r = orbillum.illuminate(sun, moon, tgt, obs, terms="all", outputs=mask)
+        assert np.array_equal(r["status"], full["status"]), mask
+        for k, v in full.items():
+            if k in ("status_name",) or not isinstance(v, np.ndarray):
+                continue
+            off = ((k in ("shadow_fraction_ld", "sun_fraction_ld")
+                    and not mask & L.OI_BATCH_FRACTION_LD)
+                   or (k in geometry and not mask & L.OI_BATCH_GEOMETRY)
+                   or (k in directions and not mask & L.OI_BATCH_DIRECTIONS)
+                   or (k in observer and not mask & L.OI_BATCH_OBSERVER))
+            if off:
+                assert np.all(r[k] == 0), (mask, k)
+            else:
+                a, b = np.ascontiguousarray(r[k]), np.ascontiguousarray(v)
+                assert a.tobytes() == b.tobytes(), (mask, k)
+    with pytest.raises(ValueError, match="outputs"):
+        orbillum.illuminate(sun, moon, tgt, obs, outputs=L.OI_BATCH_SCENE_ALL + 1)
+    with pytest.raises(TypeError, match="outputs"):
+        orbillum.illuminate(sun, moon, tgt, obs, outputs=1.5)
+
+
 def test_errors_name_the_argument():
     sun, tgt = np.array([AU, 0, 0]), np.array([7000.0, 0, 0])
     with pytest.raises(ValueError, match=r"model\['earth_model'\].*unknown word 'foo'"):

@@ -42,6 +42,7 @@ class Summary:
     sgp4_failures: int = 0
     propagate_cpu_s: float = 0.0
     illuminate_cpu_s: float = 0.0
+    client_cpu_s: float = 0.0  # this process's CPU time taking the blocks' results (rows, output)
     setup_s: float = 0.0
     run_s: float = 0.0         # wall time of the blocks (from the first submitted to the last written)
     wall_s: float = 0.0
@@ -195,6 +196,11 @@ def plan(sets, observers, start, stop, step_s, *, camera="telescope-15cm",
     summary.setup_s = time.perf_counter() - w0
 
     def take(result):
+        c0 = time.thread_time()
+        _take(result)
+        summary.client_cpu_s += time.thread_time() - c0
+
+    def _take(result):
         cols, costs = result
         summary.scenes += costs["scenes"]
         summary.propagate_cpu_s += costs["propagate"]
