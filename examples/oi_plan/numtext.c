@@ -137,16 +137,26 @@ static size_t fallback_format(double x, char *buf)
     return n > 0 ? (size_t)n : 0;
 }
 
+/* Nearest-double 10^k, |k| <= POW_MAX (the decimal exponent's estimate;
+ * the scaled value decides it). */
+static double pow10_hi(int k)
+{
+    if (!pow_ready) pow_init();
+    return k >= 0 ? pow_pos[k].hi : pow_neg[-k].hi;
+}
+
 /* The 17 significant digits of a (> 0) rounded to nearest as an integer in
  * [1e16, 1e17) and the decimal exponent of the first; 0 when double-double
  * cannot decide the rounding. */
 static int digits17(double a, uint64_t *digits, int *e10)
 {
     /* a = f 2^b, f in [1, 2) (a normal number: the caller's range):
-     * log10(a) in [b log10(2), (b + 1) log10(2)); the estimate is the true
-     * exponent or one below */
+     * floor(b log10(2)) (78913 / 2^18, exact for |b| < 1650) is the
+     * exponent or one below; a against 10^(e+1) settles it but for a
+     * at the double nearest a power of ten, which the scaled value catches */
     const int b = (int)((bits_of(a) >> 52) & 0x7FF) - 1023;
-    int e = (int)floor((double)b * 0.30102999566398120), tries;
+    int e = b >= 0 ? (b * 78913) >> 18 : -((-b * 78913) >> 18) - 1, tries;
+    if (a >= pow10_hi(e + 1)) e++;
     for (tries = 0; tries < 3; tries++) {
         dd y = scale10((dd){a, 0.0}, 16 - e);
         double fl, frac;
@@ -185,11 +195,44 @@ static const char DIGIT_PAIRS[201] =
     "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
     "8081828384858687888990919293949596979899";
 
+/* The 8 decimal digits of v < 10^8, two at a time. */
+static void put8(uint32_t v, char *d)
+{
+    const uint32_t hi = v / 10000u, lo = v % 10000u;
+    memcpy(d, DIGIT_PAIRS + 2 * (hi / 100u), 2);
+    memcpy(d + 2, DIGIT_PAIRS + 2 * (hi % 100u), 2);
+    memcpy(d + 4, DIGIT_PAIRS + 2 * (lo / 100u), 2);
+    memcpy(d + 6, DIGIT_PAIRS + 2 * (lo % 100u), 2);
+}
+
+/* The decimal digits of an integer 0 < v < 10^17 (what %.17g prints for
+ * it: every digit, no point) at buf; returns their count. */
+static size_t put_integer(uint64_t v, char *buf)
+{
+    char d[24];
+    size_t n;
+    const uint32_t lo = (uint32_t)(v % 100000000u);
+    const uint64_t rest = v / 100000000u;
+    put8((uint32_t)(rest % 100000000u), d);
+    put8(lo, d + 8);
+    d[16] = (char)('0' + (int)(rest / 100000000u));
+    /* d: digits 2..17 of the 17, the first in d[16] */
+    if (d[16] != '0') {
+        buf[0] = d[16];
+        memcpy(buf + 1, d, 16);
+        return 17;
+    }
+    for (n = 0; n < 15 && d[n] == '0'; n++) {
+    }
+    memcpy(buf, d + n, 16 - n);
+    return 16 - n;
+}
+
 size_t num_format17(double x, char *buf)
 {
     char d[17];
     uint64_t digits;
-    int e10, i, last;
+    int e10, last;
     size_t n = 0;
     double a = fabs(x);
     if (a == 0.0) { /* "0" or "-0" */
@@ -198,31 +241,28 @@ size_t num_format17(double x, char *buf)
         buf[n] = '\0';
         return n;
     }
+    if (x < 0) buf[n++] = '-';
+    if (a < 1e17 && a == (double)(int64_t)a) { /* an integer: its digits exactly */
+        n += put_integer((uint64_t)a, buf + n);
+        buf[n] = '\0';
+        return n;
+    }
     if (!(a >= 1e-280 && a <= 1e280) || !digits17(a, &digits, &e10))
         return fallback_format(x, buf);
-    {
-        /* two digits at a time from 32-bit halves: 9 high digits, 8 low */
-        uint32_t hi = (uint32_t)(digits / 100000000u), lo = (uint32_t)(digits % 100000000u);
-        for (i = 16; i > 8; i -= 2) {
-            memcpy(d + i - 1, DIGIT_PAIRS + 2 * (lo % 100u), 2);
-            lo /= 100u;
-        }
-        for (i = 8; i > 0; i -= 2) {
-            memcpy(d + i - 1, DIGIT_PAIRS + 2 * (hi % 100u), 2);
-            hi /= 100u;
-        }
-        d[0] = (char)('0' + (int)hi);
-    }
+    /* 9 high digits, 8 low */
+    put8((uint32_t)(digits % 100000000u), d + 9);
+    put8((uint32_t)((digits / 100000000u) % 100000000u), d + 1);
+    d[0] = (char)('0' + (int)(digits / 10000000000000000ULL));
     for (last = 16; last > 0 && d[last] == '0'; last--) {
     }
-    if (x < 0) buf[n++] = '-';
     if (e10 < -4 || e10 >= 17) {
         /* d.ddde+XX */
         int ex = e10 < 0 ? -e10 : e10;
         buf[n++] = d[0];
         if (last > 0) {
             buf[n++] = '.';
-            for (i = 1; i <= last; i++) buf[n++] = d[i];
+            memcpy(buf + n, d + 1, (size_t)last);
+            n += (size_t)last;
         }
         buf[n++] = 'e';
         buf[n++] = e10 < 0 ? '-' : '+';
@@ -230,16 +270,20 @@ size_t num_format17(double x, char *buf)
         buf[n++] = (char)('0' + (ex / 10) % 10);
         buf[n++] = (char)('0' + ex % 10);
     } else if (e10 >= 0) {
-        for (i = 0; i <= e10; i++) buf[n++] = d[i];
+        memcpy(buf + n, d, (size_t)e10 + 1);
+        n += (size_t)e10 + 1;
         if (last > e10) {
             buf[n++] = '.';
-            for (i = e10 + 1; i <= last; i++) buf[n++] = d[i];
+            memcpy(buf + n, d + e10 + 1, (size_t)(last - e10));
+            n += (size_t)(last - e10);
         }
     } else {
         buf[n++] = '0';
         buf[n++] = '.';
-        for (i = 0; i < -e10 - 1; i++) buf[n++] = '0';
-        for (i = 0; i <= last; i++) buf[n++] = d[i];
+        memcpy(buf + n, "0000", (size_t)(-e10 - 1));
+        n += (size_t)(-e10 - 1);
+        memcpy(buf + n, d, (size_t)last + 1);
+        n += (size_t)last + 1;
     }
     buf[n] = '\0';
     return n;

@@ -197,6 +197,45 @@ static void test_near_midpoints(void **state)
 #endif
 }
 
+/* Integers (the formatter's own path: every digit, no point), decimals with
+ * few digits (trailing zeros dropped), exact halfway cases of the 17th digit
+ * (odd multiples of 2^-s: round half to even), subnormals. */
+static void test_integers_short_and_halfway(void **state)
+{
+    long i;
+    int s;
+    (void)state;
+    failures = 0;
+    for (i = 0; i <= 100000; i++) check_format((double)i);
+    for (i = 0; i < 400000; i++) {
+        /* an integer of 1 to 18 digits, and its neighbours */
+        uint64_t m = rand64() % 1000000000000000000ULL;
+        double x = (double)(m >> (rand64() % 60u));
+        check_format(x);
+        check_format(nextafter(x, INFINITY));
+        check_format(-nextafter(x, 0.0));
+    }
+    for (i = 0; i < 300000; i++) {
+        /* 1 to 6 significant digits times a power of ten */
+        double d = (double)(rand64() % 1000000u);
+        int k = (int)(rand64() % 80u) - 40;
+        check_format(d * pow(10.0, (double)k));
+    }
+    for (s = 1; s <= 40; s++) {
+        for (i = 0; i < 20000; i++) {
+            /* odd m 2^-s: 18 significant digits ending in 5 for s near 2..4 */
+            uint64_t m = (rand64() >> 11) | 1u;
+            check_format(ldexp((double)m, -s));
+            check_format(ldexp((double)(m >> (rand64() % 40u) | 1u), -s));
+        }
+    }
+    for (i = 0; i < 200000; i++) {
+        /* subnormals and the smallest normals */
+        check_format(from_bits(rand64() & 0x001FFFFFFFFFFFFFULL));
+    }
+    assert_int_equal(failures, 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -206,6 +245,7 @@ int main(void)
         cmocka_unit_test(test_random_planner_magnitudes),
         cmocka_unit_test(test_random_decimal_strings),
         cmocka_unit_test(test_near_midpoints),
+        cmocka_unit_test(test_integers_short_and_halfway),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
