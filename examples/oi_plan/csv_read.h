@@ -42,6 +42,7 @@ typedef struct csv_reader {
     unsigned char *in;        /* the block read (malloc'd on first use) */
     size_t in_pos, in_len;
     int in_nomem;             /* the block could not be allocated: a read error */
+    int byte_by_byte;         /* 1: no whole-line copies (tests compare both ways) */
 } csv_reader;
 
 void csv_init(csv_reader *r, FILE *fp);
@@ -51,6 +52,10 @@ int csv_next(csv_reader *r);
 size_t csv_nfields(const csv_reader *r);
 /* Field i of the last record (NUL-terminated), or NULL past the end. */
 const char *csv_field(const csv_reader *r, size_t i);
+/* Bytes readable from field i of the last record to the end of the record's
+ * text (its NUL and the fields after it; 0 past the end): what
+ * num_parse_n may read. */
+size_t csv_field_avail(const csv_reader *r, size_t i);
 /* Human-readable text of a csv_result. */
 const char *csv_result_text(int result);
 

@@ -312,11 +312,100 @@ static int round_dd(dd v, double *out)
     return 1;
 }
 
+/* Whether this machine stores integers least significant byte first (the
+ * eight-digit step below reads text as one such integer). */
+static int little_endian(void)
+{
+    const uint32_t one = 1u;
+    unsigned char first;
+    memcpy(&first, &one, 1);
+    return first == 1u;
+}
+
+/* Eight digit values (0..9, one a byte, the first in the lowest) as their
+ * decimal number: pairs, then quads, then the eight (three multiplies
+ * instead of eight multiply-adds). */
+static inline uint32_t eight_values(uint64_t x)
+{
+    x = x * 10u + (x >> 8); /* pairs: 10 d0 + d1 in the even bytes */
+    x = (((x & 0x000000FF000000FFULL) * (100u + (1000000ULL << 32))) +
+         (((x >> 16) & 0x000000FF000000FFULL) * (1u + (10000ULL << 32)))) >> 32;
+    return (uint32_t)x;
+}
+
+/* Index of the lowest nonzero byte of x != 0. */
+static int lowest_byte(uint64_t x)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    return __builtin_ctzll(x) >> 3;
+#else
+    int n = 0;
+    while ((x & 0xFFu) == 0u) {
+        x >>= 8;
+        n++;
+    }
+    return n;
+#endif
+}
+
+static const uint64_t POW10_U64[9] = {1u, 10u, 100u, 1000u, 10000u, 100000u, 1000000u,
+                                      10000000u, 100000000u};
+
+/* Digits at *pp into *m (m = 10 m + digit each; wraps past 19 digits, which
+ * the caller refuses); returns their count and advances *pp. lim: the end
+ * of the readable bytes. Eight bytes at a time as one little-endian word:
+ * a byte is a digit when its high nibble is 3 and adding 6 leaves it 3 (a
+ * carry out of a byte only follows a byte that is no digit, so the lowest
+ * failing byte is exact); the run of digits below it is converted at once. */
+static inline int read_digits(const char **pp, const char *lim, uint64_t *m)
+{
+    const char *p = *pp;
+    uint64_t v = *m;
+    if (little_endian()) {
+        while (lim - p >= 8) {
+            uint64_t x, bad;
+            int n;
+            memcpy(&x, p, 8);
+            bad = ((x & 0xF0F0F0F0F0F0F0F0ULL) |
+                   (((x + 0x0606060606060606ULL) & 0xF0F0F0F0F0F0F0F0ULL) >> 4)) ^
+                  0x3333333333333333ULL;
+            x -= 0x3030303030303030ULL;
+            if (bad == 0u) {
+                v = v * 100000000u + eight_values(x);
+                p += 8;
+                continue;
+            }
+            n = lowest_byte(bad);
+            if (n > 0) {
+                /* the n digits in the high bytes, zeros before them */
+                v = v * POW10_U64[n] + eight_values(x << (8 * (8 - n)));
+                p += n;
+            }
+            *m = v;
+            n = (int)(p - *pp);
+            *pp = p;
+            return n;
+        }
+    }
+    for (; is_digit(*p); p++) v = 10u * v + (uint64_t)(*p - '0');
+    *m = v;
+    {
+        const int n = (int)(p - *pp);
+        *pp = p;
+        return n;
+    }
+}
+
 double num_parse(const char *s, char **end)
 {
-    const char *p = s;
+    return num_parse_n(s, strlen(s), end);
+}
+
+double num_parse_n(const char *s, size_t len, char **end)
+{
+    const char *p = s, *lim = s + len;
     uint64_t m = 0;
-    int neg = 0, nd = 0, any = 0, e = 0, exp_frac = 0;
+    int neg = 0, nd = 0, any = 0, e = 0, exp_frac = 0, k;
     double v;
     if (*p == '+' || *p == '-') neg = *p++ == '-';
     if (!is_digit(*p) && !(*p == '.' && is_digit(p[1]))) return strtod(s, end);
@@ -326,7 +415,7 @@ double num_parse(const char *s, char **end)
         p++;
         any = 1;
     }
-    for (; is_digit(*p); p++, nd++) m = 10u * m + (uint64_t)(*p - '0');
+    nd = read_digits(&p, lim, &m);
     if (nd > 0) any = 1;
     if (*p == '.') {
         p++;
@@ -337,8 +426,10 @@ double num_parse(const char *s, char **end)
                 any = 1;
             }
         }
-        for (; is_digit(*p); p++, nd++, exp_frac--) m = 10u * m + (uint64_t)(*p - '0');
-        if (nd > 0) any = 1;
+        k = read_digits(&p, lim, &m);
+        nd += k;
+        exp_frac -= k;
+        if (k > 0) any = 1;
     }
     if (nd > 19) return strtod(s, end);
     if (!any) return strtod(s, end);

@@ -16,4 +16,9 @@ size_t num_format17(double x, char *buf);
  * text at s; *end is set as strtod's endptr. */
 double num_parse(const char *s, char **end);
 
+/* num_parse reading eight digits at a time: s NUL-terminated as for
+ * num_parse, and len bytes readable at s, len = strlen(s) or more (bytes
+ * past the NUL are read, never used; they must be initialised). */
+double num_parse_n(const char *s, size_t len, char **end);
+
 #endif
