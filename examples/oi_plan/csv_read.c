@@ -344,21 +344,6 @@ int csv_next(csv_reader *r)
     return st;
 }
 
-size_t csv_nfields(const csv_reader *r)
-{
-    return r->nfields;
-}
-
-const char *csv_field(const csv_reader *r, size_t i)
-{
-    return i < r->nfields ? r->buf + r->start[i] : NULL;
-}
-
-size_t csv_field_avail(const csv_reader *r, size_t i)
-{
-    return i < r->nfields ? r->len - r->start[i] : 0;
-}
-
 const char *csv_result_text(int result)
 {
     switch (result) {

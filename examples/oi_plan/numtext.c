@@ -190,47 +190,129 @@ static int digits17(double a, uint64_t *digits, int *e10)
     return 0;
 }
 
+/* Whether this machine stores integers least significant byte first (the
+ * eight-digit steps read and write text as one such integer). */
+static int little_endian(void)
+{
+    const uint32_t one = 1u;
+    unsigned char first;
+    memcpy(&first, &one, 1);
+    return first == 1u;
+}
+
+/* Index of the lowest nonzero byte of x != 0. */
+static int lowest_byte(uint64_t x)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    return __builtin_ctzll(x) >> 3;
+#else
+    int n = 0;
+    while ((x & 0xFFu) == 0u) {
+        x >>= 8;
+        n++;
+    }
+    return n;
+#endif
+}
+
+/* Index of the highest nonzero byte of x != 0. */
+static int highest_byte(uint64_t x)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    return (63 - __builtin_clzll(x)) >> 3;
+#else
+    int n = 7;
+    while ((x >> 56) == 0u) {
+        x <<= 8;
+        n--;
+    }
+    return n;
+#endif
+}
+
 static const char DIGIT_PAIRS[201] =
     "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
     "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
     "8081828384858687888990919293949596979899";
 
-/* The 8 decimal digits of v < 10^8, two at a time. */
+/* The 8 decimal digits of v < 10^8 at d. Little-endian: in one 64-bit word,
+ * split into two 4-digit lanes, each into two 2-digit lanes (x / 100 as
+ * x 10486 / 2^20, exact below 10^4), each into two digits (x 103 / 2^10,
+ * exact below 100): no lane carries into the next. Otherwise two digits at
+ * a time from a table. */
 static void put8(uint32_t v, char *d)
 {
-    const uint32_t hi = v / 10000u, lo = v % 10000u;
-    memcpy(d, DIGIT_PAIRS + 2 * (hi / 100u), 2);
-    memcpy(d + 2, DIGIT_PAIRS + 2 * (hi % 100u), 2);
-    memcpy(d + 4, DIGIT_PAIRS + 2 * (lo / 100u), 2);
-    memcpy(d + 6, DIGIT_PAIRS + 2 * (lo % 100u), 2);
+    if (little_endian()) {
+        const uint64_t y = (uint64_t)(v / 10000u) | ((uint64_t)(v % 10000u) << 32);
+        const uint64_t q = ((y * 10486u) >> 20) & 0x0000007F0000007FULL;
+        const uint64_t z = q | ((y - q * 100u) << 16);
+        const uint64_t t = ((z * 103u) >> 10) & 0x000F000F000F000FULL;
+        const uint64_t w = (t | ((z - t * 10u) << 8)) + 0x3030303030303030ULL;
+        memcpy(d, &w, 8);
+    } else {
+        const uint32_t hi = v / 10000u, lo = v % 10000u;
+        memcpy(d, DIGIT_PAIRS + 2 * (hi / 100u), 2);
+        memcpy(d + 2, DIGIT_PAIRS + 2 * (hi % 100u), 2);
+        memcpy(d + 4, DIGIT_PAIRS + 2 * (lo / 100u), 2);
+        memcpy(d + 6, DIGIT_PAIRS + 2 * (lo % 100u), 2);
+    }
+}
+
+/* Count of '0' characters leading the 8 at d (8 if all are). */
+static int leading_zeros8(const char *d)
+{
+    uint64_t x;
+    int n;
+    if (!little_endian()) {
+        for (n = 0; n < 8 && d[n] == '0'; n++) {
+        }
+        return n;
+    }
+    memcpy(&x, d, 8);
+    x ^= 0x3030303030303030ULL;
+    return x == 0u ? 8 : lowest_byte(x);
+}
+
+/* Count of '0' characters ending the 8 at d (8 if all are). */
+static int trailing_zeros8(const char *d)
+{
+    uint64_t x;
+    int n;
+    if (!little_endian()) {
+        for (n = 0; n < 8 && d[7 - n] == '0'; n++) {
+        }
+        return n;
+    }
+    memcpy(&x, d, 8);
+    x ^= 0x3030303030303030ULL;
+    return x == 0u ? 8 : 7 - highest_byte(x);
 }
 
 /* The decimal digits of an integer 0 < v < 10^17 (what %.17g prints for
  * it: every digit, no point) at buf; returns their count. */
 static size_t put_integer(uint64_t v, char *buf)
 {
-    char d[24];
-    size_t n;
-    const uint32_t lo = (uint32_t)(v % 100000000u);
-    const uint64_t rest = v / 100000000u;
-    put8((uint32_t)(rest % 100000000u), d);
-    put8(lo, d + 8);
-    d[16] = (char)('0' + (int)(rest / 100000000u));
-    /* d: digits 2..17 of the 17, the first in d[16] */
-    if (d[16] != '0') {
-        buf[0] = d[16];
-        memcpy(buf + 1, d, 16);
-        return 17;
+    char d[32];
+    size_t z;
+    if (v < 100000000u) {
+        put8((uint32_t)v, d);
+        memset(d + 8, '0', 8); /* read by the fixed-size copy, not printed */
+        z = (size_t)leading_zeros8(d); /* < 8: v > 0 */
+        memcpy(buf, d + z, 8);
+        return 8 - z;
     }
-    for (n = 0; n < 15 && d[n] == '0'; n++) {
-    }
-    memcpy(buf, d + n, 16 - n);
-    return 16 - n;
+    d[0] = (char)('0' + (int)(v / 10000000000000000ULL));
+    put8((uint32_t)((v / 100000000u) % 100000000u), d + 1);
+    put8((uint32_t)(v % 100000000u), d + 9);
+    memset(d + 17, '0', 8);
+    z = d[0] != '0' ? 0 : 1 + (size_t)leading_zeros8(d + 1); /* < 9: v >= 10^8 */
+    memcpy(buf, d + z, 17);
+    return 17 - z;
 }
 
 size_t num_format17(double x, char *buf)
 {
-    char d[17];
+    char d[40];
     uint64_t digits;
     int e10, last;
     size_t n = 0;
@@ -249,11 +331,16 @@ size_t num_format17(double x, char *buf)
     }
     if (!(a >= 1e-280 && a <= 1e280) || !digits17(a, &digits, &e10))
         return fallback_format(x, buf);
-    /* 9 high digits, 8 low */
-    put8((uint32_t)(digits % 100000000u), d + 9);
-    put8((uint32_t)((digits / 100000000u) % 100000000u), d + 1);
+    /* 17 digits: 1, then 8 and 8; copies of fixed size (buf holds
+     * NUM_TEXT_MAX bytes, d 16 zeros more), the length set after */
     d[0] = (char)('0' + (int)(digits / 10000000000000000ULL));
-    for (last = 16; last > 0 && d[last] == '0'; last--) {
+    put8((uint32_t)((digits / 100000000u) % 100000000u), d + 1);
+    put8((uint32_t)(digits % 100000000u), d + 9);
+    memset(d + 17, '0', 16);
+    {
+        const int t = trailing_zeros8(d + 9);
+        last = t < 8 ? 16 - t : 8 - trailing_zeros8(d + 1);
+        if (last < 0) last = 0;
     }
     if (e10 < -4 || e10 >= 17) {
         /* d.ddde+XX */
@@ -261,7 +348,7 @@ size_t num_format17(double x, char *buf)
         buf[n++] = d[0];
         if (last > 0) {
             buf[n++] = '.';
-            memcpy(buf + n, d + 1, (size_t)last);
+            memcpy(buf + n, d + 1, 16);
             n += (size_t)last;
         }
         buf[n++] = 'e';
@@ -270,19 +357,19 @@ size_t num_format17(double x, char *buf)
         buf[n++] = (char)('0' + (ex / 10) % 10);
         buf[n++] = (char)('0' + ex % 10);
     } else if (e10 >= 0) {
-        memcpy(buf + n, d, (size_t)e10 + 1);
+        memcpy(buf + n, d, 17);
         n += (size_t)e10 + 1;
         if (last > e10) {
-            buf[n++] = '.';
-            memcpy(buf + n, d + e10 + 1, (size_t)(last - e10));
-            n += (size_t)(last - e10);
+            buf[n] = '.';
+            memcpy(buf + n + 1, d + e10 + 1, 16);
+            n += (size_t)(last - e10) + 1;
         }
     } else {
         buf[n++] = '0';
         buf[n++] = '.';
-        memcpy(buf + n, "0000", (size_t)(-e10 - 1));
+        memcpy(buf + n, "0000", 4);
         n += (size_t)(-e10 - 1);
-        memcpy(buf + n, d, (size_t)last + 1);
+        memcpy(buf + n, d, 17);
         n += (size_t)last + 1;
     }
     buf[n] = '\0';
@@ -312,16 +399,6 @@ static int round_dd(dd v, double *out)
     return 1;
 }
 
-/* Whether this machine stores integers least significant byte first (the
- * eight-digit step below reads text as one such integer). */
-static int little_endian(void)
-{
-    const uint32_t one = 1u;
-    unsigned char first;
-    memcpy(&first, &one, 1);
-    return first == 1u;
-}
-
 /* Eight digit values (0..9, one a byte, the first in the lowest) as their
  * decimal number: pairs, then quads, then the eight (three multiplies
  * instead of eight multiply-adds). */
@@ -331,21 +408,6 @@ static inline uint32_t eight_values(uint64_t x)
     x = (((x & 0x000000FF000000FFULL) * (100u + (1000000ULL << 32))) +
          (((x >> 16) & 0x000000FF000000FFULL) * (1u + (10000ULL << 32)))) >> 32;
     return (uint32_t)x;
-}
-
-/* Index of the lowest nonzero byte of x != 0. */
-static int lowest_byte(uint64_t x)
-{
-#if defined(__GNUC__) || defined(__clang__)
-    return __builtin_ctzll(x) >> 3;
-#else
-    int n = 0;
-    while ((x & 0xFFu) == 0u) {
-        x >>= 8;
-        n++;
-    }
-    return n;
-#endif
 }
 
 static const uint64_t POW10_U64[9] = {1u, 10u, 100u, 1000u, 10000u, 100000u, 1000000u,

@@ -5,8 +5,9 @@
 
 #include <stddef.h>
 
-/* Longest text num_format17 writes, with its NUL. */
-#define NUM_TEXT_MAX 32
+/* Bytes num_format17 may write (the longest text, 24 with its NUL, and
+ * fixed-size copies past it). */
+#define NUM_TEXT_MAX 40
 
 /* Writes x as printf's "%.17g" does, byte for byte, into buf (NUM_TEXT_MAX
  * bytes); returns the length. */
