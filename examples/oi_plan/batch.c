@@ -61,6 +61,8 @@ typedef struct batch {
     const char *path;
     int warned_extra;
     unsigned long messages;   /* row messages printed so far */
+    char last_camera_name[64]; /* the camera column's last text and its camera */
+    const oi_camera *last_camera;
 } batch;
 
 /* Output buffer of the batch (bytes). */
@@ -201,7 +203,6 @@ static int parse_real(const char *s, size_t avail, double *out)
     const char *p = s;
     while (*p == ' ' || *p == '\t') p++;
     if (*p == '\0') return 1;
-    errno = 0;
     /* strtod's double and end, faster (numtext.c); avail: bytes readable at s */
     *out = avail > (size_t)(p - s) ? num_parse_n(p, avail - (size_t)(p - s), &end)
                                    : num_parse(p, &end);
@@ -545,7 +546,16 @@ static int run_row(batch *b, const csv_reader *r, plan_row *row)
 
     s = field_of(b, r, C_CAMERA, &short_row);
     if (s != NULL && s[0] != '\0') {
-        cam = oi_camera_find(s);
+        /* rows of one pass name one camera: the last name's look-up again */
+        if (b->last_camera != NULL && strcmp(s, b->last_camera_name) == 0) {
+            cam = b->last_camera;
+        } else {
+            cam = oi_camera_find(s);
+            if (cam != NULL && strlen(s) < sizeof b->last_camera_name) {
+                memcpy(b->last_camera_name, s, strlen(s) + 1);
+                b->last_camera = cam;
+            }
+        }
         if (cam == NULL) {
             int i;
             char detail[400];

@@ -106,6 +106,49 @@ static dd dd_div(dd a, dd b)
 static dd pow_pos[POW_MAX + 1], pow_neg[POW_MAX + 1];
 static int pow_ready = 0;
 
+#if defined(__SIZEOF_INT128__)
+/* Where the compiler has 128-bit integers (GCC, Clang on 64-bit targets):
+ * the scaling as integer products, whose latency is a few multiplies where
+ * double-double's is a chain of some twenty dependent floating-point
+ * operations. 10^k = P 2^E with P the double-double's value as a 128-bit
+ * integer (P in [2^127, 2^128), hi and lo words; E in wide_exp): its
+ * relative error is the double-double's, below 2^-98. */
+#define NUM_WIDE 1
+__extension__ typedef unsigned __int128 u128;
+static uint64_t wide_hi[2 * POW_MAX + 1], wide_lo[2 * POW_MAX + 1];
+static int wide_exp[2 * POW_MAX + 1];
+
+/* The double-double v > 0 (normal, |lo| <= half an ulp of hi) as P 2^E. */
+static void wide_of(dd v, uint64_t *hi, uint64_t *lo, int *e)
+{
+    const uint64_t bh = bits_of(v.hi), bl = bits_of(v.lo);
+    const int eh = (int)((bh >> 52) & 0x7FF) - 1075;
+    u128 p = (u128)((bh & 0xFFFFFFFFFFFFFULL) | (1ULL << 52)) << 75;
+    if (v.lo != 0.0) {
+        /* lo = fl 2^el: at 2^(el - eh + 75) in P's units, el - eh <= -53 */
+        const int el = (int)((bl >> 52) & 0x7FF) - 1075;
+        const uint64_t fl = (bl & 0xFFFFFFFFFFFFFULL) | (((bl >> 52) & 0x7FF) ? 1ULL << 52 : 0u);
+        const int sh = el - eh + 75;
+        const u128 t = sh >= 0 ? (u128)fl << sh : (sh > -64 ? (u128)(fl >> -sh) : 0u);
+        p = (bl >> 63) ? p - t : p + t;
+    }
+    *hi = (uint64_t)(p >> 64);
+    *lo = (uint64_t)p;
+    *e = eh - 75;
+}
+
+/* The upper 128 bits of the 192-bit product m * P (m, P's words). */
+static u128 mul_hi128(uint64_t m, uint64_t ph, uint64_t pl)
+{
+    return (u128)m * ph + (((u128)m * pl) >> 64);
+}
+
+static int clz64(uint64_t x)
+{
+    return __builtin_clzll(x);
+}
+#endif
+
 static void pow_init(void)
 {
     dd sq[10];
@@ -121,15 +164,28 @@ static void pow_init(void)
         pow_pos[k] = r;
         pow_neg[k] = dd_div((dd){1.0, 0.0}, r);
     }
+#ifdef NUM_WIDE
+    for (k = 0; k <= POW_MAX; k++) {
+        wide_of(pow_pos[k], &wide_hi[POW_MAX + k], &wide_lo[POW_MAX + k], &wide_exp[POW_MAX + k]);
+        /* 10^-k from 2^200 / 10^k: its lo stays a normal number (10^-k's own
+         * goes subnormal below 10^-292 and loses bits) */
+        wide_of(dd_div((dd){1606938044258990275541962092341162602522202993782792835301376.0, 0.0},
+                       pow_pos[k]),
+                &wide_hi[POW_MAX - k], &wide_lo[POW_MAX - k], &wide_exp[POW_MAX - k]);
+        wide_exp[POW_MAX - k] -= 200;
+    }
+#endif
     pow_ready = 1;
 }
 
+#ifndef NUM_WIDE
 /* a * 10^k in double-double, |k| <= POW_MAX. */
 static dd scale10(dd a, int k)
 {
     if (!pow_ready) pow_init();
     return dd_mul(a, k >= 0 ? pow_pos[k] : pow_neg[-k]);
 }
+#endif
 
 static size_t fallback_format(double x, char *buf)
 {
@@ -157,6 +213,58 @@ static int digits17(double a, uint64_t *digits, int *e10)
     const int b = (int)((bits_of(a) >> 52) & 0x7FF) - 1023;
     int e = b >= 0 ? (b * 78913) >> 18 : -((-b * 78913) >> 18) - 1, tries;
     if (a >= pow10_hi(e + 1)) e++;
+#ifdef NUM_WIDE
+    {
+        /* a = f 2^ea, f shifted to 64 bits; y = a 10^(16-e) = H 2^-sh with H
+         * the product's upper 128 bits: sh bits of fraction (about 70) */
+        const uint64_t ab = bits_of(a);
+        const uint64_t f = ((ab & 0xFFFFFFFFFFFFFULL) | (1ULL << 52)) << 11;
+        const int ea = (int)((ab >> 52) & 0x7FF) - 1075;
+        for (tries = 0; tries < 3; tries++) {
+            const int i = POW_MAX + 16 - e;
+            const u128 h = mul_hi128(f, wide_hi[i], wide_lo[i]);
+            const int sh = -(53 + ea + wide_exp[i]);
+            /* H's words: the integer part n = H >> sh, the fraction as 64 bits
+             * (frac / 2^64), sh - 64 in [0, 36] */
+            const uint64_t hh = (uint64_t)(h >> 64), hl = (uint64_t)h;
+            const int s64 = sh - 64;
+            /* error: P's (2^-98 of H < 2^128) and the truncation: 2^31 of H's
+             * units, 2^(31 - s64) of the fraction's */
+            const uint64_t margin = (2147483648u >> (s64 < 31 ? s64 : 31)) + 1u;
+            const uint64_t half = 1ULL << 63;
+            uint64_t n, frac;
+            if (s64 < 0 || s64 > 36) return 0; /* not the expected scale: printf */
+            n = hh >> s64;
+            frac = s64 == 0 ? hl : (hh << (64 - s64)) | (hl >> s64);
+            /* the unrounded value decides the exponent: y in [1e16, 1e17);
+             * within the error of a boundary, printf decides */
+            if ((n == 10000000000000000ULL - 1u || n == 100000000000000000ULL - 1u) &&
+                frac >= 0u - margin)
+                return 0;
+            if ((n == 10000000000000000ULL || n == 100000000000000000ULL) && frac <= margin)
+                return 0;
+            if (n < 10000000000000000ULL) {
+                e--;
+                continue;
+            }
+            if (n >= 100000000000000000ULL) {
+                e++;
+                continue;
+            }
+            if ((frac > half ? frac - half : half - frac) <= margin) return 0;
+            n += frac > half ? 1u : 0u;
+            if (n == 100000000000000000ULL) { /* rounded up to 10^17 */
+                *digits = 10000000000000000ULL;
+                *e10 = e + 1;
+                return 1;
+            }
+            *digits = n;
+            *e10 = e;
+            return 1;
+        }
+        return 0;
+    }
+#else
     for (tries = 0; tries < 3; tries++) {
         dd y = scale10((dd){a, 0.0}, 16 - e);
         double fl, frac;
@@ -188,6 +296,7 @@ static int digits17(double a, uint64_t *digits, int *e10)
         return 1;
     }
     return 0;
+#endif
 }
 
 /* Whether this machine stores integers least significant byte first (the
@@ -381,6 +490,7 @@ static int is_digit(char c)
     return c >= '0' && c <= '9';
 }
 
+#ifndef NUM_WIDE
 /* The nearest double to the double-double v, or 0 when v lies too near a
  * midpoint between doubles to tell. */
 static int round_dd(dd v, double *out)
@@ -398,6 +508,7 @@ static int round_dd(dd v, double *out)
     *out = c;
     return 1;
 }
+#endif
 
 /* Eight digit values (0..9, one a byte, the first in the lowest) as their
  * decimal number: pairs, then quads, then the eight (three multiplies
@@ -515,12 +626,44 @@ double num_parse_n(const char *s, size_t len, char **end)
         /* Clinger's fast path: two exact operands, one rounding */
         v = e < 0 ? (double)m / POW10_EXACT[-e] : (double)m * POW10_EXACT[e];
     } else {
-        dd mm;
         if (e + nd > 280 || e + nd < -280) return strtod(s, end);
-        mm.hi = (double)m;
-        /* m < 10^19 < 2^64: (double)m converts back, the difference is exact */
-        mm.lo = (double)(int64_t)(m - (uint64_t)mm.hi);
-        if (!round_dd(scale10(mm, e), &v)) return strtod(s, end);
+#ifdef NUM_WIDE
+        {
+            /* m (normalised to 64 bits) times P: the upper 128 bits, their
+             * top 53 the significand, the 75 below decide the rounding */
+            const int zm = clz64(m), i = POW_MAX + e;
+            u128 h;
+            int zh;
+            uint64_t sig, hh, hl, rest;
+            const uint64_t half = 1ULL << 63, margin = (1ULL << 21) + 1u;
+            if (!pow_ready) pow_init();
+            h = mul_hi128(m << zm, wide_hi[i], wide_lo[i]);
+            zh = h >> 127 ? 0 : 1; /* h >= 2^126 */
+            h <<= zh;
+            hh = (uint64_t)(h >> 64);
+            hl = (uint64_t)h;
+            sig = hh >> 11;
+            /* the 75 bits below as a 64-bit fraction; the error (P's 2^-98 of
+             * h and the truncation, 2^32 of h's units) is 2^21 of its units */
+            rest = (hh << 53) | (hl >> 11);
+            if ((rest > half ? rest - half : half - rest) <= margin) return strtod(s, end);
+            if (rest > half && ++sig == (1ULL << 53)) {
+                sig = 1ULL << 52;
+                zh--;
+            }
+            /* value = sig 2^(139 + E - zh - zm); biased exponent + 52 + 1023 */
+            v = of_bits(((uint64_t)(139 + wide_exp[i] - zh - zm + 1075) << 52) |
+                        (sig & 0xFFFFFFFFFFFFFULL));
+        }
+#else
+        {
+            dd mm;
+            mm.hi = (double)m;
+            /* m < 10^19 < 2^64: (double)m converts back, the difference is exact */
+            mm.lo = (double)(int64_t)(m - (uint64_t)mm.hi);
+            if (!round_dd(scale10(mm, e), &v)) return strtod(s, end);
+        }
+#endif
     }
     if (end != NULL) *end = (char *)p;
     return neg ? -v : v;
