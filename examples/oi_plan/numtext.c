@@ -12,9 +12,14 @@
  * rare cases, and everything outside the plain decimal forms and magnitudes
  * 1e-280..1e280 (subnormals, infinities, NaN, hexadecimal text, more than 19
  * digits), are handed to snprintf and strtod themselves, so the result is
- * always theirs. Needs IEEE double arithmetic without contraction into fused
- * multiply-adds and without excess precision (the C99 build: -std=c99 turns
- * contraction off in GCC; x86-64 and AArch64 have no excess precision).
+ * always theirs. Where the compiler has 128-bit integers the scaling itself
+ * is an integer product: the 64-bit significand times the double-double
+ * 10^k as a 128-bit integer (the same error bound, a few multiplies of
+ * latency instead of a chain of dependent floating-point operations); the
+ * double-double arithmetic then only builds the table. Needs IEEE double
+ * arithmetic without contraction into fused multiply-adds and without excess
+ * precision (the C99 build: -std=c99 turns contraction off in GCC; x86-64 and
+ * AArch64 have no excess precision).
  * Tested against printf and strtod on millions of doubles
  * (tests/c/test_numtext.c).
  */
