@@ -75,6 +75,8 @@ demo: $(PLAN) ## run the exposure planner on its built-in scenario
 # ---- tests
 # test_numtext compiles the planner's number text into itself
 $(BUILDDIR)/tests/double/test_numtext $(BUILDDIR)/tests/float/test_numtext: examples/oi_plan/numtext.c examples/oi_plan/numtext.h
+# test_csv_read compiles the planner's CSV reader into itself
+$(BUILDDIR)/tests/double/test_csv_read $(BUILDDIR)/tests/float/test_csv_read: examples/oi_plan/csv_read.c examples/oi_plan/csv_read.h
 $(BUILDDIR)/tests/double/%: tests/c/%.c $(LIB_double) | deps-c
 	@mkdir -p $(dir $@)
 	$(CC) $(TEST_CFLAGS) $(DEF_double) $< $(LIB_double) -lcmocka -lm -o $@

@@ -9,6 +9,12 @@ output is checked to be the golden output repeated, byte for byte. With
 valgrind, callgrind counts the instructions per row on --cg-copies copies and
 the part inside the library (oi_illuminate and oi_expose_scene, inclusive).
 --plan points at another build (e.g. one of an earlier commit) to compare.
+--baseline names the original planner (make plan-bench builds it: the
+planner's sources from before its own number text, against today's
+library): it runs in the same loop, alternating with --plan so that the
+machine's load weighs on both alike, its rows checked to be the golden rows'
+leading fields (it writes fewer columns), and the ratios are printed with
+the goal line (4x the original's rows per CPU-second).
 
 Prints `name value unit` lines, also written to --out.
 """
@@ -36,6 +42,13 @@ def repeated(case, copies, tmp):
     with open(os.path.join(ROOT, "tests", "golden", case + ".plan.csv")) as f:
         ohead, *orows = f.read().splitlines(keepends=True)
     return path, len(rows) * copies, ohead + "".join(orows) * copies
+
+
+def leading_fields(got, want):
+    """Each row of got is the start of want's row, up to a field separator
+    (the original planner writes the leading columns of today's output)."""
+    g, w = got.splitlines(), want.splitlines()
+    return len(g) == len(w) and all(x == y or y.startswith(x + ",") for x, y in zip(g, w))
 
 
 def cpu_run(plan, path):
@@ -75,6 +88,7 @@ def main():
     p.add_argument("--cg-copies", type=int, default=20)
     p.add_argument("--runs", type=int, default=5)
     p.add_argument("--out", default=os.path.join(ROOT, "build", "bench", "plan.txt"))
+    p.add_argument("--baseline", help="the original planner, for the speed-up ratios")
     a = p.parse_args()
     lines = []
 
@@ -84,10 +98,11 @@ def main():
         lines.append(line)
 
     ok = True
+    speedups = []
     with tempfile.TemporaryDirectory() as tmp:
         for case in CASES:
             path, rows, want = repeated(case, a.copies, tmp)
-            best = None
+            best = base_best = None
             for _ in range(a.runs):
                 cpu, got = cpu_run(a.plan, path)
                 if got != want:
@@ -95,15 +110,39 @@ def main():
                     put(f"plan.{case}.output", "DIFFERS", "-", "not the golden output repeated")
                     break
                 best = cpu if best is None else min(best, cpu)
+                if a.baseline:
+                    bcpu, bgot = cpu_run(a.baseline, path)
+                    if not leading_fields(bgot, want):
+                        put(f"plan.{case}.baseline_output", "DIFFERS", "-",
+                            "not the golden rows' leading fields")
+                        a.baseline = None
+                        continue
+                    base_best = bcpu if base_best is None else min(base_best, bcpu)
             if best:
                 put(f"plan.{case}.rows_per_cpu_s", f"{rows / best:.4g}", "rows/CPU-s",
                     f"{rows} rows, best of {a.runs}")
+            if best and base_best:
+                put(f"plan.{case}.baseline_rows_per_cpu_s", f"{rows / base_best:.4g}", "rows/CPU-s",
+                    "the original planner, same runs")
+                put(f"plan.{case}.speedup", f"{base_best / best:.2f}", "x",
+                    "rows per CPU-second over the original's (goal 4)")
+                speedups.append(base_best / best)
             if shutil.which("valgrind") and shutil.which("callgrind_annotate"):
                 cpath, crows, _ = repeated(case, a.cg_copies, tmp)
                 total, lib = callgrind(a.plan, cpath, tmp)
                 put(f"plan.{case}.instructions_per_row", f"{total / crows:.0f}", "instructions",
                     f"callgrind, {crows} rows; the library (oi_illuminate + oi_expose_scene) "
                     f"{lib / crows:.0f} ({100.0 * lib / total:.0f} %)")
+                if a.baseline:
+                    btotal, blib = callgrind(a.baseline, cpath, tmp)
+                    put(f"plan.{case}.baseline_instructions_per_row", f"{btotal / crows:.0f}",
+                        "instructions", f"the original planner; its library part {blib / crows:.0f}")
+                    put(f"plan.{case}.instruction_ratio", f"{btotal / total:.2f}", "x",
+                        "the original's instructions per row over these")
+    if speedups:
+        worst = min(speedups)
+        put("goal.plan_4x_rows_per_cpu_s", "met" if worst >= 4.0 else "missed", "-",
+            f"speed-ups {', '.join(f'{x:.2f}' for x in speedups)} (GEO, LEO, LEO-LEO); goal 4")
     os.makedirs(os.path.dirname(os.path.abspath(a.out)), exist_ok=True)
     with open(a.out, "w") as f:
         f.write("\n".join(lines) + "\n")

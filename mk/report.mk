@@ -65,6 +65,20 @@ catalog-bench: binding ## catalogue planner: scenes per CPU-second per core, 1 -
 # ---- the planner's speed (bench/plan_speed.py): oi-plan --csv rows per CPU-second on the golden
 # cases repeated, output checked against the golden files; instructions per row with valgrind
 .PHONY: plan-bench
-plan-bench: $(PLAN) deps-py ## oi-plan --csv rows per CPU-second and instructions per row (build/bench/plan.txt)
+plan-bench: $(PLAN) deps-py ## oi-plan --csv rows per CPU-second and instructions per row, and the ratio to the original planner (build/bench/plan.txt)
 	@mkdir -p $(BENCH_DIR)
-	nice -n 5 $(PY) bench/plan_speed.py --plan $(PLAN) --out $(BENCH_DIR)/plan.txt
+	-@$(MAKE) --no-print-directory $(PLAN_BASELINE)
+	nice -n 5 $(PY) bench/plan_speed.py --plan $(PLAN) --out $(BENCH_DIR)/plan.txt \
+	  $$([ -x $(PLAN_BASELINE) ] && echo --baseline $(PLAN_BASELINE))
+
+# The original planner, the baseline of the planner's speed goal: its sources as they were
+# before it had its own number text (the parent of the commit that added
+# examples/oi_plan/numtext.c), built against today's library. Needs the git history.
+PLAN_BASELINE := $(BUILDDIR)/plan-baseline/oi-plan
+$(PLAN_BASELINE): $(LIB_double)
+	@rev=$$(git log --diff-filter=A --format=%H -- examples/oi_plan/numtext.c | tail -n 1); \
+	  [ -n "$$rev" ] || { echo "plan-baseline: no git history of examples/oi_plan/numtext.c"; exit 1; }; \
+	  rm -rf $(BUILDDIR)/plan-baseline && mkdir -p $(BUILDDIR)/plan-baseline && \
+	  git archive "$$rev^" examples/oi_plan | tar -x -C $(BUILDDIR)/plan-baseline && \
+	  $(CC) -std=c99 $(OPT) -g -Iinclude -I$(BUILDDIR)/plan-baseline/examples/oi_plan \
+	    $(BUILDDIR)/plan-baseline/examples/oi_plan/*.c $(LIB_double) -lm -o $@

@@ -63,7 +63,12 @@ typedef struct batch {
     const char *path;
     int warned_extra;
     unsigned long messages;   /* row messages printed so far */
+    char last_camera_name[64]; /* the camera column's last text and its camera */
+    const oi_camera *last_camera;
 } batch;
+
+/* Output buffer of the batch (bytes). */
+#define OUT_BUFFER (1u << 16)
 
 /* Row messages beyond this many are counted, not printed. */
 #define MAX_ROW_MESSAGES 50
@@ -194,14 +199,15 @@ static const char *field_of(batch *b, const csv_reader *r, int k, int *short_row
 /* Parse a real; returns 0 and *out, 1 for an empty field, -1 for text that
  * is not a number. NaN and infinities are numbers here (the library then
  * reports ERR_NONFINITE); values out of the double range read as inf. */
-static int parse_real(const char *s, double *out)
+static int parse_real(const char *s, size_t avail, double *out)
 {
     char *end;
     const char *p = s;
     while (*p == ' ' || *p == '\t') p++;
     if (*p == '\0') return 1;
-    errno = 0;
-    *out = num_parse(p, &end); /* strtod's double and end, faster (numtext.c) */
+    /* strtod's double and end, faster (numtext.c); avail: bytes readable at s */
+    *out = avail > (size_t)(p - s) ? num_parse_n(p, avail - (size_t)(p - s), &end)
+                                   : num_parse(p, &end);
     if (end == p) return -1;
     while (*end == ' ' || *end == '\t') end++;
     return *end == '\0' ? 0 : -1;
@@ -282,7 +288,7 @@ static int parse_vec(batch *b, const csv_reader *r, int k0, oi_real v[3], int re
         double x = 0;
         int st;
         if (s == NULL) return 0;
-        st = parse_real(s, &x);
+        st = parse_real(s, csv_field_avail(r, (size_t)b->col[k0 + i]), &x);
         if (st < 0) {
             char detail[96];
             snprintf(detail, sizeof detail, "for %s, got \"%.60s\"", column_name[k0 + i], s);
@@ -312,7 +318,7 @@ static int parse_opt(batch *b, const csv_reader *r, int k, double *value)
     int sr = 0, st;
     const char *s = field_of(b, r, k, &sr);
     if (s == NULL) return 0;
-    st = parse_real(s, value);
+    st = parse_real(s, csv_field_avail(r, (size_t)b->col[k]), value);
     if (st == 1) return 0;
     if (st < 0) {
         char detail[96];
@@ -558,7 +564,16 @@ static int run_row(batch *b, const csv_reader *r, plan_row *row)
 
     s = field_of(b, r, C_CAMERA, &short_row);
     if (s != NULL && s[0] != '\0') {
-        cam = oi_camera_find(s);
+        /* rows of one pass name one camera: the last name's look-up again */
+        if (b->last_camera != NULL && strcmp(s, b->last_camera_name) == 0) {
+            cam = b->last_camera;
+        } else {
+            cam = oi_camera_find(s);
+            if (cam != NULL && strlen(s) < sizeof b->last_camera_name) {
+                memcpy(b->last_camera_name, s, strlen(s) + 1);
+                b->last_camera = cam;
+            }
+        }
         if (cam == NULL) {
             int i;
             char detail[400];
@@ -649,6 +664,9 @@ int batch_run_map(const char *path, const oi_camera *default_camera, const plan_
         if (fp != stdin) fclose(fp);
         return st;
     }
+    /* rows go out in blocks of OUT_BUFFER bytes (a pipe's default is 4 KiB:
+     * a write per ~13 rows); a terminal keeps its line buffering */
+    if (!isatty(fileno(out))) (void)setvbuf(out, NULL, _IOFBF, OUT_BUFFER);
     out_csv_header(out);
     tty = isatty(fileno(stderr));
     last = time(NULL);
@@ -661,7 +679,7 @@ int batch_run_map(const char *path, const oi_camera *default_camera, const plan_
         st = csv_next(&r);
         if (st == CSV_END) break;
         rows++;
-        snprintf(idbuf, sizeof idbuf, "%lu", rows);
+        if (b.col[C_ID] < 0) snprintf(idbuf, sizeof idbuf, "%lu", rows);
         if (st == CSV_IO || st == CSV_NOMEM) {
             fprintf(stderr, "oi-plan: %s: line %lu: %s\n", b.path, r.line, csv_result_text(st));
             result = PLAN_EXIT_INPUT;

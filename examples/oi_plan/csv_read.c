@@ -239,6 +239,84 @@ static int read_record(csv_reader *r, int *blank)
     return CSV_RECORD;
 }
 
+/* Room for n bytes of record text and nf field starts; 0 if the record
+ * buffer would pass its limit or memory is short (the caller then reads the
+ * record byte by byte, which reports either). */
+static int reserve(csv_reader *r, size_t n, size_t nf)
+{
+    if (n > r->cap) {
+        size_t cap = r->cap ? 2 * r->cap : 256;
+        char *p;
+        while (cap < n) cap *= 2;
+        if (cap > CSV_MAX_RECORD + 16) cap = CSV_MAX_RECORD + 16;
+        if (n > cap) return 0;
+        p = (char *)realloc(r->buf, cap);
+        if (p == NULL) return 0;
+        r->buf = p;
+        r->cap = cap;
+    }
+    if (nf > r->fcap) {
+        size_t cap = r->fcap ? 2 * r->fcap : 32;
+        size_t *p;
+        while (cap < nf) cap *= 2;
+        p = (size_t *)realloc(r->start, cap * sizeof *p);
+        if (p == NULL) return 0;
+        r->start = p;
+        r->fcap = cap;
+    }
+    return 1;
+}
+
+static int is_blank(char c)
+{
+    return c == ' ' || c == '\t';
+}
+
+/* The common record at once: a whole line in the block, ended by LF, with
+ * no quote, CR or NUL. Copied in one piece, split at its commas, each field
+ * trimmed of blanks and NUL-terminated in place: the fields read_record
+ * gives, without its per-byte steps. Returns -1 when the line is not such a
+ * one (nothing consumed: read_record takes it). */
+static int quick_record(csv_reader *r, int *blank)
+{
+    const unsigned char *p;
+    const unsigned char *nl;
+    size_t len, q, nf = 0;
+    int content = 0;
+    if (r->byte_by_byte || r->in == NULL || r->in_pos >= r->in_len) return -1;
+    p = r->in + r->in_pos;
+    nl = (const unsigned char *)memchr(p, '\n', r->in_len - r->in_pos);
+    if (nl == NULL) return -1;
+    len = (size_t)(nl - p);
+    if (memchr(p, '"', len) != NULL || memchr(p, '\r', len) != NULL ||
+        memchr(p, '\0', len) != NULL)
+        return -1;
+    if (!reserve(r, len + 1, r->fcap > 0 ? r->fcap : 32)) return -1;
+    memcpy(r->buf, p, len);
+    r->buf[len] = ','; /* a sentinel: every search below finds a comma */
+    for (q = 0;;) {
+        const size_t e = (size_t)((char *)memchr(r->buf + q, ',', len + 1 - q) - r->buf);
+        size_t a = q, z = e;
+        while (a < z && is_blank(r->buf[a])) a++;
+        while (z > a && is_blank(r->buf[z - 1])) z--;
+        if (z > a) content = 1;
+        r->buf[z] = '\0';
+        if (nf == r->fcap && !reserve(r, 0, nf + 1)) return -1;
+        r->start[nf++] = a;
+        if (e == len) break;
+        content = 1; /* a separator makes the record not blank */
+        q = e + 1;
+    }
+    r->nfields = nf;
+    r->len = len + 1;
+    r->rec_line = r->line;
+    r->in_pos += len + 1;
+    r->line++;
+    r->col = 1;
+    *blank = !content;
+    return CSV_RECORD;
+}
+
 int csv_next(csv_reader *r)
 {
     int st, blank;
@@ -260,19 +338,10 @@ int csv_next(csv_reader *r)
         }
     }
     do {
-        st = read_record(r, &blank);
+        st = quick_record(r, &blank);
+        if (st < 0) st = read_record(r, &blank);
     } while (st == CSV_RECORD && blank);
     return st;
-}
-
-size_t csv_nfields(const csv_reader *r)
-{
-    return r->nfields;
-}
-
-const char *csv_field(const csv_reader *r, size_t i)
-{
-    return i < r->nfields ? r->buf + r->start[i] : NULL;
 }
 
 const char *csv_result_text(int result)

@@ -42,15 +42,30 @@ typedef struct csv_reader {
     unsigned char *in;        /* the block read (malloc'd on first use) */
     size_t in_pos, in_len;
     int in_nomem;             /* the block could not be allocated: a read error */
+    int byte_by_byte;         /* 1: no whole-line copies (tests compare both ways) */
 } csv_reader;
 
 void csv_init(csv_reader *r, FILE *fp);
 void csv_free(csv_reader *r);
 /* Read the next non-blank record; returns an enum csv_result. */
 int csv_next(csv_reader *r);
-size_t csv_nfields(const csv_reader *r);
+/* (inline: called a few times per field) */
+static inline size_t csv_nfields(const csv_reader *r)
+{
+    return r->nfields;
+}
 /* Field i of the last record (NUL-terminated), or NULL past the end. */
-const char *csv_field(const csv_reader *r, size_t i);
+static inline const char *csv_field(const csv_reader *r, size_t i)
+{
+    return i < r->nfields ? r->buf + r->start[i] : NULL;
+}
+/* Bytes readable from field i of the last record to the end of the record's
+ * text (its NUL and the fields after it; 0 past the end): what
+ * num_parse_n may read. */
+static inline size_t csv_field_avail(const csv_reader *r, size_t i)
+{
+    return i < r->nfields ? r->len - r->start[i] : 0;
+}
 /* Human-readable text of a csv_result. */
 const char *csv_result_text(int result);
 

@@ -12,9 +12,14 @@
  * rare cases, and everything outside the plain decimal forms and magnitudes
  * 1e-280..1e280 (subnormals, infinities, NaN, hexadecimal text, more than 19
  * digits), are handed to snprintf and strtod themselves, so the result is
- * always theirs. Needs IEEE double arithmetic without contraction into fused
- * multiply-adds and without excess precision (the C99 build: -std=c99 turns
- * contraction off in GCC; x86-64 and AArch64 have no excess precision).
+ * always theirs. Where the compiler has 128-bit integers the scaling itself
+ * is an integer product: the 64-bit significand times the double-double
+ * 10^k as a 128-bit integer (the same error bound, a few multiplies of
+ * latency instead of a chain of dependent floating-point operations); the
+ * double-double arithmetic then only builds the table. Needs IEEE double
+ * arithmetic without contraction into fused multiply-adds and without excess
+ * precision (the C99 build: -std=c99 turns contraction off in GCC; x86-64 and
+ * AArch64 have no excess precision).
  * Tested against printf and strtod on millions of doubles
  * (tests/c/test_numtext.c).
  */
@@ -106,6 +111,49 @@ static dd dd_div(dd a, dd b)
 static dd pow_pos[POW_MAX + 1], pow_neg[POW_MAX + 1];
 static int pow_ready = 0;
 
+#if defined(__SIZEOF_INT128__)
+/* Where the compiler has 128-bit integers (GCC, Clang on 64-bit targets):
+ * the scaling as integer products, whose latency is a few multiplies where
+ * double-double's is a chain of some twenty dependent floating-point
+ * operations. 10^k = P 2^E with P the double-double's value as a 128-bit
+ * integer (P in [2^127, 2^128), hi and lo words; E in wide_exp): its
+ * relative error is the double-double's, below 2^-98. */
+#define NUM_WIDE 1
+__extension__ typedef unsigned __int128 u128;
+static uint64_t wide_hi[2 * POW_MAX + 1], wide_lo[2 * POW_MAX + 1];
+static int wide_exp[2 * POW_MAX + 1];
+
+/* The double-double v > 0 (normal, |lo| <= half an ulp of hi) as P 2^E. */
+static void wide_of(dd v, uint64_t *hi, uint64_t *lo, int *e)
+{
+    const uint64_t bh = bits_of(v.hi), bl = bits_of(v.lo);
+    const int eh = (int)((bh >> 52) & 0x7FF) - 1075;
+    u128 p = (u128)((bh & 0xFFFFFFFFFFFFFULL) | (1ULL << 52)) << 75;
+    if (v.lo != 0.0) {
+        /* lo = fl 2^el: at 2^(el - eh + 75) in P's units, el - eh <= -53 */
+        const int el = (int)((bl >> 52) & 0x7FF) - 1075;
+        const uint64_t fl = (bl & 0xFFFFFFFFFFFFFULL) | (((bl >> 52) & 0x7FF) ? 1ULL << 52 : 0u);
+        const int sh = el - eh + 75;
+        const u128 t = sh >= 0 ? (u128)fl << sh : (sh > -64 ? (u128)(fl >> -sh) : 0u);
+        p = (bl >> 63) ? p - t : p + t;
+    }
+    *hi = (uint64_t)(p >> 64);
+    *lo = (uint64_t)p;
+    *e = eh - 75;
+}
+
+/* The upper 128 bits of the 192-bit product m * P (m, P's words). */
+static u128 mul_hi128(uint64_t m, uint64_t ph, uint64_t pl)
+{
+    return (u128)m * ph + (((u128)m * pl) >> 64);
+}
+
+static int clz64(uint64_t x)
+{
+    return __builtin_clzll(x);
+}
+#endif
+
 static void pow_init(void)
 {
     dd sq[10];
@@ -121,20 +169,41 @@ static void pow_init(void)
         pow_pos[k] = r;
         pow_neg[k] = dd_div((dd){1.0, 0.0}, r);
     }
+#ifdef NUM_WIDE
+    for (k = 0; k <= POW_MAX; k++) {
+        wide_of(pow_pos[k], &wide_hi[POW_MAX + k], &wide_lo[POW_MAX + k], &wide_exp[POW_MAX + k]);
+        /* 10^-k from 2^200 / 10^k: its lo stays a normal number (10^-k's own
+         * goes subnormal below 10^-292 and loses bits) */
+        wide_of(dd_div((dd){1606938044258990275541962092341162602522202993782792835301376.0, 0.0},
+                       pow_pos[k]),
+                &wide_hi[POW_MAX - k], &wide_lo[POW_MAX - k], &wide_exp[POW_MAX - k]);
+        wide_exp[POW_MAX - k] -= 200;
+    }
+#endif
     pow_ready = 1;
 }
 
+#ifndef NUM_WIDE
 /* a * 10^k in double-double, |k| <= POW_MAX. */
 static dd scale10(dd a, int k)
 {
     if (!pow_ready) pow_init();
     return dd_mul(a, k >= 0 ? pow_pos[k] : pow_neg[-k]);
 }
+#endif
 
 static size_t fallback_format(double x, char *buf)
 {
     int n = snprintf(buf, NUM_TEXT_MAX, "%.17g", x);
     return n > 0 ? (size_t)n : 0;
+}
+
+/* Nearest-double 10^k, |k| <= POW_MAX (the decimal exponent's estimate;
+ * the scaled value decides it). */
+static double pow10_hi(int k)
+{
+    if (!pow_ready) pow_init();
+    return k >= 0 ? pow_pos[k].hi : pow_neg[-k].hi;
 }
 
 /* The 17 significant digits of a (> 0) rounded to nearest as an integer in
@@ -143,10 +212,64 @@ static size_t fallback_format(double x, char *buf)
 static int digits17(double a, uint64_t *digits, int *e10)
 {
     /* a = f 2^b, f in [1, 2) (a normal number: the caller's range):
-     * log10(a) in [b log10(2), (b + 1) log10(2)); the estimate is the true
-     * exponent or one below */
+     * floor(b log10(2)) (78913 / 2^18, exact for |b| < 1650) is the
+     * exponent or one below; a against 10^(e+1) settles it but for a
+     * at the double nearest a power of ten, which the scaled value catches */
     const int b = (int)((bits_of(a) >> 52) & 0x7FF) - 1023;
-    int e = (int)floor((double)b * 0.30102999566398120), tries;
+    int e = b >= 0 ? (b * 78913) >> 18 : -((-b * 78913) >> 18) - 1, tries;
+    if (a >= pow10_hi(e + 1)) e++;
+#ifdef NUM_WIDE
+    {
+        /* a = f 2^ea, f shifted to 64 bits; y = a 10^(16-e) = H 2^-sh with H
+         * the product's upper 128 bits: sh bits of fraction (about 70) */
+        const uint64_t ab = bits_of(a);
+        const uint64_t f = ((ab & 0xFFFFFFFFFFFFFULL) | (1ULL << 52)) << 11;
+        const int ea = (int)((ab >> 52) & 0x7FF) - 1075;
+        for (tries = 0; tries < 3; tries++) {
+            const int i = POW_MAX + 16 - e;
+            const u128 h = mul_hi128(f, wide_hi[i], wide_lo[i]);
+            const int sh = -(53 + ea + wide_exp[i]);
+            /* H's words: the integer part n = H >> sh, the fraction as 64 bits
+             * (frac / 2^64), sh - 64 in [0, 36] */
+            const uint64_t hh = (uint64_t)(h >> 64), hl = (uint64_t)h;
+            const int s64 = sh - 64;
+            /* error: P's (2^-98 of H < 2^128) and the truncation: 2^31 of H's
+             * units, 2^(31 - s64) of the fraction's */
+            const uint64_t margin = (2147483648u >> (s64 < 31 ? s64 : 31)) + 1u;
+            const uint64_t half = 1ULL << 63;
+            uint64_t n, frac;
+            if (s64 < 0 || s64 > 36) return 0; /* not the expected scale: printf */
+            n = hh >> s64;
+            frac = s64 == 0 ? hl : (hh << (64 - s64)) | (hl >> s64);
+            /* the unrounded value decides the exponent: y in [1e16, 1e17);
+             * within the error of a boundary, printf decides */
+            if ((n == 10000000000000000ULL - 1u || n == 100000000000000000ULL - 1u) &&
+                frac >= 0u - margin)
+                return 0;
+            if ((n == 10000000000000000ULL || n == 100000000000000000ULL) && frac <= margin)
+                return 0;
+            if (n < 10000000000000000ULL) {
+                e--;
+                continue;
+            }
+            if (n >= 100000000000000000ULL) {
+                e++;
+                continue;
+            }
+            if ((frac > half ? frac - half : half - frac) <= margin) return 0;
+            n += frac > half ? 1u : 0u;
+            if (n == 100000000000000000ULL) { /* rounded up to 10^17 */
+                *digits = 10000000000000000ULL;
+                *e10 = e + 1;
+                return 1;
+            }
+            *digits = n;
+            *e10 = e;
+            return 1;
+        }
+        return 0;
+    }
+#else
     for (tries = 0; tries < 3; tries++) {
         dd y = scale10((dd){a, 0.0}, 16 - e);
         double fl, frac;
@@ -178,6 +301,47 @@ static int digits17(double a, uint64_t *digits, int *e10)
         return 1;
     }
     return 0;
+#endif
+}
+
+/* Whether this machine stores integers least significant byte first (the
+ * eight-digit steps read and write text as one such integer). */
+static int little_endian(void)
+{
+    const uint32_t one = 1u;
+    unsigned char first;
+    memcpy(&first, &one, 1);
+    return first == 1u;
+}
+
+/* Index of the lowest nonzero byte of x != 0. */
+static int lowest_byte(uint64_t x)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    return __builtin_ctzll(x) >> 3;
+#else
+    int n = 0;
+    while ((x & 0xFFu) == 0u) {
+        x >>= 8;
+        n++;
+    }
+    return n;
+#endif
+}
+
+/* Index of the highest nonzero byte of x != 0. */
+static int highest_byte(uint64_t x)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    return (63 - __builtin_clzll(x)) >> 3;
+#else
+    int n = 7;
+    while ((x >> 56) == 0u) {
+        x <<= 8;
+        n--;
+    }
+    return n;
+#endif
 }
 
 static const char DIGIT_PAIRS[201] =
@@ -185,11 +349,86 @@ static const char DIGIT_PAIRS[201] =
     "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
     "8081828384858687888990919293949596979899";
 
+/* The 8 decimal digits of v < 10^8 at d. Little-endian: in one 64-bit word,
+ * split into two 4-digit lanes, each into two 2-digit lanes (x / 100 as
+ * x 10486 / 2^20, exact below 10^4), each into two digits (x 103 / 2^10,
+ * exact below 100): no lane carries into the next. Otherwise two digits at
+ * a time from a table. */
+static void put8(uint32_t v, char *d)
+{
+    if (little_endian()) {
+        const uint64_t y = (uint64_t)(v / 10000u) | ((uint64_t)(v % 10000u) << 32);
+        const uint64_t q = ((y * 10486u) >> 20) & 0x0000007F0000007FULL;
+        const uint64_t z = q | ((y - q * 100u) << 16);
+        const uint64_t t = ((z * 103u) >> 10) & 0x000F000F000F000FULL;
+        const uint64_t w = (t | ((z - t * 10u) << 8)) + 0x3030303030303030ULL;
+        memcpy(d, &w, 8);
+    } else {
+        const uint32_t hi = v / 10000u, lo = v % 10000u;
+        memcpy(d, DIGIT_PAIRS + 2 * (hi / 100u), 2);
+        memcpy(d + 2, DIGIT_PAIRS + 2 * (hi % 100u), 2);
+        memcpy(d + 4, DIGIT_PAIRS + 2 * (lo / 100u), 2);
+        memcpy(d + 6, DIGIT_PAIRS + 2 * (lo % 100u), 2);
+    }
+}
+
+/* Count of '0' characters leading the 8 at d (8 if all are). */
+static int leading_zeros8(const char *d)
+{
+    uint64_t x;
+    int n;
+    if (!little_endian()) {
+        for (n = 0; n < 8 && d[n] == '0'; n++) {
+        }
+        return n;
+    }
+    memcpy(&x, d, 8);
+    x ^= 0x3030303030303030ULL;
+    return x == 0u ? 8 : lowest_byte(x);
+}
+
+/* Count of '0' characters ending the 8 at d (8 if all are). */
+static int trailing_zeros8(const char *d)
+{
+    uint64_t x;
+    int n;
+    if (!little_endian()) {
+        for (n = 0; n < 8 && d[7 - n] == '0'; n++) {
+        }
+        return n;
+    }
+    memcpy(&x, d, 8);
+    x ^= 0x3030303030303030ULL;
+    return x == 0u ? 8 : 7 - highest_byte(x);
+}
+
+/* The decimal digits of an integer 0 < v < 10^17 (what %.17g prints for
+ * it: every digit, no point) at buf; returns their count. */
+static size_t put_integer(uint64_t v, char *buf)
+{
+    char d[32];
+    size_t z;
+    if (v < 100000000u) {
+        put8((uint32_t)v, d);
+        memset(d + 8, '0', 8); /* read by the fixed-size copy, not printed */
+        z = (size_t)leading_zeros8(d); /* < 8: v > 0 */
+        memcpy(buf, d + z, 8);
+        return 8 - z;
+    }
+    d[0] = (char)('0' + (int)(v / 10000000000000000ULL));
+    put8((uint32_t)((v / 100000000u) % 100000000u), d + 1);
+    put8((uint32_t)(v % 100000000u), d + 9);
+    memset(d + 17, '0', 8);
+    z = d[0] != '0' ? 0 : 1 + (size_t)leading_zeros8(d + 1); /* < 9: v >= 10^8 */
+    memcpy(buf, d + z, 17);
+    return 17 - z;
+}
+
 size_t num_format17(double x, char *buf)
 {
-    char d[17];
+    char d[40];
     uint64_t digits;
-    int e10, i, last;
+    int e10, last;
     size_t n = 0;
     double a = fabs(x);
     if (a == 0.0) { /* "0" or "-0" */
@@ -198,31 +437,33 @@ size_t num_format17(double x, char *buf)
         buf[n] = '\0';
         return n;
     }
+    if (x < 0) buf[n++] = '-';
+    if (a < 1e17 && a == (double)(int64_t)a) { /* an integer: its digits exactly */
+        n += put_integer((uint64_t)a, buf + n);
+        buf[n] = '\0';
+        return n;
+    }
     if (!(a >= 1e-280 && a <= 1e280) || !digits17(a, &digits, &e10))
         return fallback_format(x, buf);
+    /* 17 digits: 1, then 8 and 8; copies of fixed size (buf holds
+     * NUM_TEXT_MAX bytes, d 16 zeros more), the length set after */
+    d[0] = (char)('0' + (int)(digits / 10000000000000000ULL));
+    put8((uint32_t)((digits / 100000000u) % 100000000u), d + 1);
+    put8((uint32_t)(digits % 100000000u), d + 9);
+    memset(d + 17, '0', 16);
     {
-        /* two digits at a time from 32-bit halves: 9 high digits, 8 low */
-        uint32_t hi = (uint32_t)(digits / 100000000u), lo = (uint32_t)(digits % 100000000u);
-        for (i = 16; i > 8; i -= 2) {
-            memcpy(d + i - 1, DIGIT_PAIRS + 2 * (lo % 100u), 2);
-            lo /= 100u;
-        }
-        for (i = 8; i > 0; i -= 2) {
-            memcpy(d + i - 1, DIGIT_PAIRS + 2 * (hi % 100u), 2);
-            hi /= 100u;
-        }
-        d[0] = (char)('0' + (int)hi);
+        const int t = trailing_zeros8(d + 9);
+        last = t < 8 ? 16 - t : 8 - trailing_zeros8(d + 1);
+        if (last < 0) last = 0;
     }
-    for (last = 16; last > 0 && d[last] == '0'; last--) {
-    }
-    if (x < 0) buf[n++] = '-';
     if (e10 < -4 || e10 >= 17) {
         /* d.ddde+XX */
         int ex = e10 < 0 ? -e10 : e10;
         buf[n++] = d[0];
         if (last > 0) {
             buf[n++] = '.';
-            for (i = 1; i <= last; i++) buf[n++] = d[i];
+            memcpy(buf + n, d + 1, 16);
+            n += (size_t)last;
         }
         buf[n++] = 'e';
         buf[n++] = e10 < 0 ? '-' : '+';
@@ -230,16 +471,20 @@ size_t num_format17(double x, char *buf)
         buf[n++] = (char)('0' + (ex / 10) % 10);
         buf[n++] = (char)('0' + ex % 10);
     } else if (e10 >= 0) {
-        for (i = 0; i <= e10; i++) buf[n++] = d[i];
+        memcpy(buf + n, d, 17);
+        n += (size_t)e10 + 1;
         if (last > e10) {
-            buf[n++] = '.';
-            for (i = e10 + 1; i <= last; i++) buf[n++] = d[i];
+            buf[n] = '.';
+            memcpy(buf + n + 1, d + e10 + 1, 16);
+            n += (size_t)(last - e10) + 1;
         }
     } else {
         buf[n++] = '0';
         buf[n++] = '.';
-        for (i = 0; i < -e10 - 1; i++) buf[n++] = '0';
-        for (i = 0; i <= last; i++) buf[n++] = d[i];
+        memcpy(buf + n, "0000", 4);
+        n += (size_t)(-e10 - 1);
+        memcpy(buf + n, d, 17);
+        n += (size_t)last + 1;
     }
     buf[n] = '\0';
     return n;
@@ -250,6 +495,7 @@ static int is_digit(char c)
     return c >= '0' && c <= '9';
 }
 
+#ifndef NUM_WIDE
 /* The nearest double to the double-double v, or 0 when v lies too near a
  * midpoint between doubles to tell. */
 static int round_dd(dd v, double *out)
@@ -267,12 +513,77 @@ static int round_dd(dd v, double *out)
     *out = c;
     return 1;
 }
+#endif
+
+/* Eight digit values (0..9, one a byte, the first in the lowest) as their
+ * decimal number: pairs, then quads, then the eight (three multiplies
+ * instead of eight multiply-adds). */
+static inline uint32_t eight_values(uint64_t x)
+{
+    x = x * 10u + (x >> 8); /* pairs: 10 d0 + d1 in the even bytes */
+    x = (((x & 0x000000FF000000FFULL) * (100u + (1000000ULL << 32))) +
+         (((x >> 16) & 0x000000FF000000FFULL) * (1u + (10000ULL << 32)))) >> 32;
+    return (uint32_t)x;
+}
+
+static const uint64_t POW10_U64[9] = {1u, 10u, 100u, 1000u, 10000u, 100000u, 1000000u,
+                                      10000000u, 100000000u};
+
+/* Digits at *pp into *m (m = 10 m + digit each; wraps past 19 digits, which
+ * the caller refuses); returns their count and advances *pp. lim: the end
+ * of the readable bytes. Eight bytes at a time as one little-endian word:
+ * a byte is a digit when its high nibble is 3 and adding 6 leaves it 3 (a
+ * carry out of a byte only follows a byte that is no digit, so the lowest
+ * failing byte is exact); the run of digits below it is converted at once. */
+static inline int read_digits(const char **pp, const char *lim, uint64_t *m)
+{
+    const char *p = *pp;
+    uint64_t v = *m;
+    if (little_endian()) {
+        while (lim - p >= 8) {
+            uint64_t x, bad;
+            int n;
+            memcpy(&x, p, 8);
+            bad = ((x & 0xF0F0F0F0F0F0F0F0ULL) |
+                   (((x + 0x0606060606060606ULL) & 0xF0F0F0F0F0F0F0F0ULL) >> 4)) ^
+                  0x3333333333333333ULL;
+            x -= 0x3030303030303030ULL;
+            if (bad == 0u) {
+                v = v * 100000000u + eight_values(x);
+                p += 8;
+                continue;
+            }
+            n = lowest_byte(bad);
+            if (n > 0) {
+                /* the n digits in the high bytes, zeros before them */
+                v = v * POW10_U64[n] + eight_values(x << (8 * (8 - n)));
+                p += n;
+            }
+            *m = v;
+            n = (int)(p - *pp);
+            *pp = p;
+            return n;
+        }
+    }
+    for (; is_digit(*p); p++) v = 10u * v + (uint64_t)(*p - '0');
+    *m = v;
+    {
+        const int n = (int)(p - *pp);
+        *pp = p;
+        return n;
+    }
+}
 
 double num_parse(const char *s, char **end)
 {
-    const char *p = s;
+    return num_parse_n(s, strlen(s), end);
+}
+
+double num_parse_n(const char *s, size_t len, char **end)
+{
+    const char *p = s, *lim = s + len;
     uint64_t m = 0;
-    int neg = 0, nd = 0, any = 0, e = 0, exp_frac = 0;
+    int neg = 0, nd = 0, any = 0, e = 0, exp_frac = 0, k;
     double v;
     if (*p == '+' || *p == '-') neg = *p++ == '-';
     if (!is_digit(*p) && !(*p == '.' && is_digit(p[1]))) return strtod(s, end);
@@ -282,7 +593,7 @@ double num_parse(const char *s, char **end)
         p++;
         any = 1;
     }
-    for (; is_digit(*p); p++, nd++) m = 10u * m + (uint64_t)(*p - '0');
+    nd = read_digits(&p, lim, &m);
     if (nd > 0) any = 1;
     if (*p == '.') {
         p++;
@@ -293,8 +604,10 @@ double num_parse(const char *s, char **end)
                 any = 1;
             }
         }
-        for (; is_digit(*p); p++, nd++, exp_frac--) m = 10u * m + (uint64_t)(*p - '0');
-        if (nd > 0) any = 1;
+        k = read_digits(&p, lim, &m);
+        nd += k;
+        exp_frac -= k;
+        if (k > 0) any = 1;
     }
     if (nd > 19) return strtod(s, end);
     if (!any) return strtod(s, end);
@@ -318,12 +631,44 @@ double num_parse(const char *s, char **end)
         /* Clinger's fast path: two exact operands, one rounding */
         v = e < 0 ? (double)m / POW10_EXACT[-e] : (double)m * POW10_EXACT[e];
     } else {
-        dd mm;
         if (e + nd > 280 || e + nd < -280) return strtod(s, end);
-        mm.hi = (double)m;
-        /* m < 10^19 < 2^64: (double)m converts back, the difference is exact */
-        mm.lo = (double)(int64_t)(m - (uint64_t)mm.hi);
-        if (!round_dd(scale10(mm, e), &v)) return strtod(s, end);
+#ifdef NUM_WIDE
+        {
+            /* m (normalised to 64 bits) times P: the upper 128 bits, their
+             * top 53 the significand, the 75 below decide the rounding */
+            const int zm = clz64(m), i = POW_MAX + e;
+            u128 h;
+            int zh;
+            uint64_t sig, hh, hl, rest;
+            const uint64_t half = 1ULL << 63, margin = (1ULL << 21) + 1u;
+            if (!pow_ready) pow_init();
+            h = mul_hi128(m << zm, wide_hi[i], wide_lo[i]);
+            zh = h >> 127 ? 0 : 1; /* h >= 2^126 */
+            h <<= zh;
+            hh = (uint64_t)(h >> 64);
+            hl = (uint64_t)h;
+            sig = hh >> 11;
+            /* the 75 bits below as a 64-bit fraction; the error (P's 2^-98 of
+             * h and the truncation, 2^32 of h's units) is 2^21 of its units */
+            rest = (hh << 53) | (hl >> 11);
+            if ((rest > half ? rest - half : half - rest) <= margin) return strtod(s, end);
+            if (rest > half && ++sig == (1ULL << 53)) {
+                sig = 1ULL << 52;
+                zh--;
+            }
+            /* value = sig 2^(139 + E - zh - zm); biased exponent + 52 + 1023 */
+            v = of_bits(((uint64_t)(139 + wide_exp[i] - zh - zm + 1075) << 52) |
+                        (sig & 0xFFFFFFFFFFFFFULL));
+        }
+#else
+        {
+            dd mm;
+            mm.hi = (double)m;
+            /* m < 10^19 < 2^64: (double)m converts back, the difference is exact */
+            mm.lo = (double)(int64_t)(m - (uint64_t)mm.hi);
+            if (!round_dd(scale10(mm, e), &v)) return strtod(s, end);
+        }
+#endif
     }
     if (end != NULL) *end = (char *)p;
     return neg ? -v : v;

@@ -5,8 +5,9 @@
 
 #include <stddef.h>
 
-/* Longest text num_format17 writes, with its NUL. */
-#define NUM_TEXT_MAX 32
+/* Bytes num_format17 may write (the longest text, 24 with its NUL, and
+ * fixed-size copies past it). */
+#define NUM_TEXT_MAX 40
 
 /* Writes x as printf's "%.17g" does, byte for byte, into buf (NUM_TEXT_MAX
  * bytes); returns the length. */
@@ -15,5 +16,10 @@ size_t num_format17(double x, char *buf);
 /* Reads a number as strtod does (the same double, the same end), for the
  * text at s; *end is set as strtod's endptr. */
 double num_parse(const char *s, char **end);
+
+/* num_parse reading eight digits at a time: s NUL-terminated as for
+ * num_parse, and len bytes readable at s, len = strlen(s) or more (bytes
+ * past the NUL are read, never used; they must be initialised). */
+double num_parse_n(const char *s, size_t len, char **end);
 
 #endif

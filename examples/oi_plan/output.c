@@ -39,17 +39,13 @@ static void put_field(FILE *fp, const char *s)
     fputc('"', fp);
 }
 
-/* ",%.17g" (negative zero printed as 0), or "," when absent. */
-static void put_num(FILE *fp, int present, double x)
+/* ",%.17g" (negative zero printed as 0), or "," when absent, at line;
+ * returns the length (at most NUM_TEXT_MAX). */
+static size_t put_num(char *line, int present, double x)
 {
-    if (present) {
-        char text[NUM_TEXT_MAX + 1];
-        text[0] = ',';
-        (void)num_format17(x + 0.0 == 0.0 ? 0.0 : x, text + 1);
-        fputs(text, fp);
-    } else {
-        fputc(',', fp);
-    }
+    line[0] = ',';
+    if (!present) return 1;
+    return 1 + num_format17(x + 0.0 == 0.0 ? 0.0 : x, line + 1);
 }
 
 void out_flags(unsigned flags, char *buf, size_t size)
@@ -72,36 +68,58 @@ void out_flags(unsigned flags, char *buf, size_t size)
     }
 }
 
+/* Longest id copied into the row's text; a longer one (or one to quote) is
+ * written on its own first. */
+#define ID_INLINE_MAX 256
+
 void out_csv_row(FILE *fp, const char *id, const plan_row *row)
 {
     const oi_illum *il = &row->illum;
     int num = row->has_numbers;
     int obs = num && row->has_observer;
-    char flags[160];
+    /* the row's text, written at once: id, status (a library name), 14
+     * numbers, flags (out_flags' 160) */
+    char line[ID_INLINE_MAX + 64 + 14 * NUM_TEXT_MAX + 160 + 8];
+    size_t n = strcspn(id, ",\"\n\r"), k;
 
-    put_field(fp, id);
-    fputc(',', fp);
-    fputs(row->status_name, fp);
-    put_num(fp, num, (double)il->shadow.fraction);
-    put_num(fp, num, (double)il->shadow.fraction_atm);
-    put_num(fp, num, (double)il->e_sun);
-    put_num(fp, num, (double)il->e_earth);
-    put_num(fp, num, (double)il->e_moon);
-    put_num(fp, num, (double)il->earth_theta * RAD_TO_DEG);
-    put_num(fp, num, (double)il->earth_h_km);
-    put_num(fp, obs, (double)il->flux_obs);
-    put_num(fp, obs, (double)il->mag_v);
-    put_num(fp, obs, (double)row->expo.exposure_s);
-    put_num(fp, obs, (double)row->expo.gain);
-    put_num(fp, obs, (double)row->expo.snr);
-    fputc(',', fp);
-    if (num) {
-        out_flags(row->flags, flags, sizeof flags);
-        fputs(flags, fp);
+    if (id[n] != '\0' || n > ID_INLINE_MAX ||
+        (n > 0 && (id[0] == ' ' || id[0] == '\t' || id[n - 1] == ' ' || id[n - 1] == '\t'))) {
+        put_field(fp, id);
+        n = 0;
+    } else {
+        memcpy(line, id, n);
     }
-    put_num(fp, obs, (double)row->expo.detect_margin_mag);
-    put_num(fp, num, (double)il->e_sky);
-    fputc('\n', fp);
+    line[n++] = ',';
+    k = strlen(row->status_name);
+    if (k > 63) { /* not a library name: on its own */
+        (void)fwrite(line, 1, n, fp);
+        fputs(row->status_name, fp);
+        n = 0;
+    } else {
+        memcpy(line + n, row->status_name, k);
+        n += k;
+    }
+    n += put_num(line + n, num, (double)il->shadow.fraction);
+    n += put_num(line + n, num, (double)il->shadow.fraction_atm);
+    n += put_num(line + n, num, (double)il->e_sun);
+    n += put_num(line + n, num, (double)il->e_earth);
+    n += put_num(line + n, num, (double)il->e_moon);
+    n += put_num(line + n, num, (double)il->earth_theta * RAD_TO_DEG);
+    n += put_num(line + n, num, (double)il->earth_h_km);
+    n += put_num(line + n, obs, (double)il->flux_obs);
+    n += put_num(line + n, obs, (double)il->mag_v);
+    n += put_num(line + n, obs, (double)row->expo.exposure_s);
+    n += put_num(line + n, obs, (double)row->expo.gain);
+    n += put_num(line + n, obs, (double)row->expo.snr);
+    line[n++] = ',';
+    if (num) {
+        out_flags(row->flags, line + n, 160);
+        n += strlen(line + n);
+    }
+    n += put_num(line + n, obs, (double)row->expo.detect_margin_mag);
+    n += put_num(line + n, num, (double)il->e_sky);
+    line[n++] = '\n';
+    (void)fwrite(line, 1, n, fp);
 }
 
 void out_table_header(FILE *fp)

@@ -57,6 +57,27 @@ static void check_parse(const char *text)
     }
 }
 
+/* num_parse_n(text) read in a buffer with bytes after its NUL (as the CSV
+ * record holds the next fields there): the same as strtod. */
+static void check_parse_padded(const char *text)
+{
+    char buf[128], *e1, *e2;
+    size_t n = strlen(text), i;
+    double a, b;
+    int same;
+    if (n + 17 > sizeof buf) return;
+    memcpy(buf, text, n + 1);
+    for (i = n + 1; i < n + 17; i++) buf[i] = "0123456789.e,-"[rand64() % 14u];
+    a = strtod(buf, &e1);
+    b = num_parse_n(buf, n + 17, &e2);
+    same = (isnan(a) && isnan(b)) || to_bits(a) == to_bits(b);
+    if (!same || e1 != e2) {
+        if (failures++ < 10)
+            print_error("num_parse_n(\"%s\") = %.17g end +%d, strtod %.17g end +%d\n", text, b,
+                        (int)(e2 - buf), a, (int)(e1 - buf));
+    }
+}
+
 /* num_format17(x) against snprintf("%.17g"), then both parsers on the text. */
 static void check_format(double x)
 {
@@ -68,6 +89,7 @@ static void check_format(double x)
         if (failures++ < 10) print_error("num_format17(%a) = \"%s\", printf \"%s\"\n", x, got, want);
     }
     check_parse(want);
+    check_parse_padded(want);
 }
 
 static void test_random_bit_patterns(void **state)
@@ -147,7 +169,10 @@ static void test_strtod_forms(void **state)
     size_t i;
     (void)state;
     failures = 0;
-    for (i = 0; i < sizeof texts / sizeof texts[0]; i++) check_parse(texts[i]);
+    for (i = 0; i < sizeof texts / sizeof texts[0]; i++) {
+        check_parse(texts[i]);
+        check_parse_padded(texts[i]);
+    }
     assert_int_equal(failures, 0);
 }
 
@@ -169,6 +194,7 @@ static void test_random_decimal_strings(void **state)
         if (rand64() % 3u) n += snprintf(text + n, sizeof text - (size_t)n, "e%d", ex);
         text[n] = '\0';
         check_parse(text);
+        check_parse_padded(text);
     }
     assert_int_equal(failures, 0);
 }
@@ -197,6 +223,45 @@ static void test_near_midpoints(void **state)
 #endif
 }
 
+/* Integers (the formatter's own path: every digit, no point), decimals with
+ * few digits (trailing zeros dropped), exact halfway cases of the 17th digit
+ * (odd multiples of 2^-s: round half to even), subnormals. */
+static void test_integers_short_and_halfway(void **state)
+{
+    long i;
+    int s;
+    (void)state;
+    failures = 0;
+    for (i = 0; i <= 100000; i++) check_format((double)i);
+    for (i = 0; i < 400000; i++) {
+        /* an integer of 1 to 18 digits, and its neighbours */
+        uint64_t m = rand64() % 1000000000000000000ULL;
+        double x = (double)(m >> (rand64() % 60u));
+        check_format(x);
+        check_format(nextafter(x, INFINITY));
+        check_format(-nextafter(x, 0.0));
+    }
+    for (i = 0; i < 300000; i++) {
+        /* 1 to 6 significant digits times a power of ten */
+        double d = (double)(rand64() % 1000000u);
+        int k = (int)(rand64() % 80u) - 40;
+        check_format(d * pow(10.0, (double)k));
+    }
+    for (s = 1; s <= 40; s++) {
+        for (i = 0; i < 20000; i++) {
+            /* odd m 2^-s: 18 significant digits ending in 5 for s near 2..4 */
+            uint64_t m = (rand64() >> 11) | 1u;
+            check_format(ldexp((double)m, -s));
+            check_format(ldexp((double)(m >> (rand64() % 40u) | 1u), -s));
+        }
+    }
+    for (i = 0; i < 200000; i++) {
+        /* subnormals and the smallest normals */
+        check_format(from_bits(rand64() & 0x001FFFFFFFFFFFFFULL));
+    }
+    assert_int_equal(failures, 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -206,6 +271,7 @@ int main(void)
         cmocka_unit_test(test_random_planner_magnitudes),
         cmocka_unit_test(test_random_decimal_strings),
         cmocka_unit_test(test_near_midpoints),
+        cmocka_unit_test(test_integers_short_and_halfway),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,0 +1,148 @@
+/* SPDX-License-Identifier: MIT */
+/* test_csv_read.c: the planner's CSV reader (examples/oi_plan/csv_read.c):
+ * its whole-line path gives, record for record, what its byte-by-byte path
+ * gives (status, fields, line numbers, error positions) on random texts of
+ * the bytes that matter (separators, blanks, quotes, CR, LF, NUL), on texts
+ * longer than one read block, and on hand-written cases. */
+#define _POSIX_C_SOURCE 200809L /* fmemopen */
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../../examples/oi_plan/csv_read.c"
+
+static uint64_t rng_state = 0x2545F4914F6CDD1DULL;
+
+static uint64_t rand64(void)
+{
+    rng_state = rng_state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return rng_state ^ (rng_state >> 29);
+}
+
+static long failures = 0;
+
+/* Both ways over the same bytes: every record the same. */
+static void check_same(const char *text, size_t n)
+{
+    FILE *fa = fmemopen((void *)text, n, "rb"), *fb = fmemopen((void *)text, n, "rb");
+    csv_reader a, b;
+    long rec;
+    assert_non_null(fa);
+    assert_non_null(fb);
+    csv_init(&a, fa);
+    csv_init(&b, fb);
+    b.byte_by_byte = 1;
+    for (rec = 0; rec < 100000; rec++) {
+        int sa = csv_next(&a), sb = csv_next(&b);
+        size_t i;
+        int same = sa == sb && a.line == b.line && a.col == b.col;
+        if (same && sa == CSV_RECORD) {
+            same = a.nfields == b.nfields && a.rec_line == b.rec_line;
+            for (i = 0; same && i < a.nfields; i++)
+                same = strcmp(csv_field(&a, i), csv_field(&b, i)) == 0;
+        } else if (same && sa != CSV_END) {
+            same = a.err_line == b.err_line && a.err_col == b.err_col;
+        }
+        if (!same) {
+            if (failures++ < 5)
+                print_error("record %ld differs (status %d / %d, line %lu / %lu, fields %lu / %lu)"
+                            " in \"%.80s\"\n", rec, sa, sb, a.line, b.line,
+                            (unsigned long)a.nfields, (unsigned long)b.nfields, text);
+            break;
+        }
+        if (sa == CSV_END || sa == CSV_IO || sa == CSV_NOMEM) break;
+    }
+    csv_free(&a);
+    csv_free(&b);
+    fclose(fa);
+    fclose(fb);
+}
+
+static void test_hand_written(void **state)
+{
+    static const char *const texts[] = {
+        "a,b,c\n1,2,3\n",
+        "a,b\n\n\n1,2\n",
+        "  a ,\tb\t,c  \n",
+        "a,b\n   \n\t\n1,2",
+        ",\n,,\n , \n",
+        "x\r\ny\rz\n",
+        "\"q,1\",2\n3,\"a\"\"b\"\n",
+        "1,\"open\n",
+        "1,\"x\" y,3\n4,5\n",
+        "\xEF\xBB\xBF" "a,b\n1,2\n",
+        "\xEF\xBB" "a\n",
+        "",
+        "\n",
+        "a",
+        "1,2\n3,4\n5,6"};
+    size_t i;
+    (void)state;
+    failures = 0;
+    for (i = 0; i < sizeof texts / sizeof texts[0]; i++) check_same(texts[i], strlen(texts[i]));
+    {
+        static const char nul[] = "a,b\n1,\0,3\n4,5\n";
+        check_same(nul, sizeof nul - 1);
+    }
+    assert_int_equal(failures, 0);
+}
+
+static void test_random_texts(void **state)
+{
+    static const char alphabet[] = "0123456789.e-,,,,   \t\n\n\n\"\r\0ab";
+    char text[400];
+    long k;
+    (void)state;
+    failures = 0;
+    for (k = 0; k < 200000; k++) {
+        size_t n = (size_t)(rand64() % sizeof text), i;
+        /* mostly plain bytes, sometimes the rare ones */
+        int rare = (int)(rand64() % 4u);
+        for (i = 0; i < n; i++) {
+            uint64_t u = rand64();
+            text[i] = rare == 0 || (u & 7u) == 0 ? alphabet[(u >> 3) % (sizeof alphabet - 1)]
+                                                 : alphabet[(u >> 3) % 27u];
+        }
+        check_same(text, n);
+    }
+    assert_int_equal(failures, 0);
+}
+
+static void test_across_read_blocks(void **state)
+{
+    /* 3.5 blocks of planner-like rows: records cut by the block boundaries */
+    const size_t n = CSV_READ_BLOCK * 7 / 2;
+    char *text = malloc(n);
+    size_t i = 0;
+    (void)state;
+    failures = 0;
+    assert_non_null(text);
+    while (i < n) {
+        int w = snprintf(text + i, n - i, "%llu,%.17g, %d ,x%d\n",
+                         (unsigned long long)(rand64() % 1000000u),
+                         (double)(rand64() >> 11) * 1e-9, (int)(rand64() % 100u),
+                         (int)(rand64() % 7u));
+        if (w < 0 || (size_t)w >= n - i) break;
+        i += (size_t)w;
+    }
+    check_same(text, i);
+    text[CSV_READ_BLOCK + 3] = '"'; /* a quote near the first boundary */
+    check_same(text, i);
+    free(text);
+    assert_int_equal(failures, 0);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_hand_written),
+        cmocka_unit_test(test_random_texts),
+        cmocka_unit_test(test_across_read_blocks),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
