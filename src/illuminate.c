@@ -365,8 +365,9 @@ static OI_NOINLINE int earth_flux_moments(const oi_scene *scene, const oi_model 
     o[0] = oi__dot(obs_hat, x);
     o[1] = oi__dot(obs_hat, y);
     o[2] = oi__dot(obs_hat, r_hat);
-    if (!oi__earth_sphere_shape(t, out->earth_theta, cos_theta, sin_theta, out->earth_h_km,
-                                m->earth_radius_km, o, &shape))
+    (void)t;
+    if (!oi__earth_sphere_shape(m, out->earth_theta, cos_theta, sin_theta, out->earth_h_km,
+                                m->earth_radius_km, o, out->earth_phi, &shape))
         return 0;
     /* the albedo field's change (0 when uniform), the sum kept non-negative */
     shape += shape_add;
