@@ -406,9 +406,9 @@ static OI_NOINLINE int observer_term(const oi_scene *scene, const oi_model *m,
 #if !defined(OI_NO_EARTH_ANGULAR) && !defined(OI_NO_EARTH_TABLE)
     {
         /* the angular distribution where the table serves (phase_earth stays
-         * the mean direction's) */
+         * the mean direction's); not for a shape, whose facets replace it */
         const oi_earth_angular_table *t = oi__earth_angular_of(m);
-        if (t != NULL && out->e_earth > (oi_real)0)
+        if (t != NULL && out->e_earth > (oi_real)0 && scene->shape == NULL)
             (void)earth_flux_moments(scene, m, t, obs_hat, ratio, shape_add, out);
     }
 #else

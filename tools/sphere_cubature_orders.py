@@ -49,9 +49,18 @@ def _rules(na, nb):
     return ta, wa, (x + 1) / 2, w / 2
 
 
+# the runtime's acos polynomial (Abramowitz & Stegun 4.4.46)
+ACOS_POLY = [1.5707963050, -0.2145988016, 0.0889789874, -0.0501743046, 0.0308918810,
+             -0.0170881256, 0.0066700901, -0.0012624911]
+
+
 def _phase(c):
-    t = np.arccos(np.clip(c, -1.0, 1.0))
-    return 2.0 / (3.0 * np.pi) * ((np.pi - t) * np.cos(t) + np.sin(t))
+    """p(acos c) as the runtime forms it (within 1e-8 of the closed form)."""
+    ac = np.minimum(np.abs(c), 1.0)
+    q = np.sqrt(1.0 - ac)
+    acos_abs = q * np.polyval(ACOS_POLY[::-1], ac)
+    f = np.where(c < 0, acos_abs, np.pi - acos_abs) * c + q * np.sqrt(1.0 + ac)
+    return np.maximum(2.0 / (3.0 * np.pi) * f, 0.0)
 
 
 def sphere(theta, h, obs, na, nb):
