@@ -447,6 +447,17 @@ static inline int oi__plate_cubature(const oi_model *m)
  * unit Earth albedo and solar irradiance (src/facet_earth.c). */
 oi_real oi__plate_earth(oi_real cos_theta, oi_real sin_theta, oi_real h_km, oi_real R,
                         const oi_real nrm[3]);
+/* The specular earthshine radiance a face of unit normal nrm sends towards
+ * the unit direction obs (both local frame) per unit albedo_specular, Earth
+ * albedo and solar irradiance: the integral over the visible sunlit Earth
+ * of L(omega) (N.omega) f(omega -> obs), f the Phong lobe of oi__phong_lobe
+ * (src/facet_earth.c): the cap cubature's rings for shininess below
+ * OI_LOBE_RULE_SHININESS, nodes about the lobe's axis from it up. */
+#ifndef OI_LOBE_RULE_SHININESS
+#define OI_LOBE_RULE_SHININESS 64
+#endif
+oi_real oi__plate_earth_specular(oi_real cos_theta, oi_real sin_theta, oi_real h_km, oi_real R,
+                                 const oi_real nrm[3], const oi_real obs[3], oi_real shininess);
 /* The attitude quaternion's check and rotation (src/quaternion.c). */
 int oi__quat_unit(const oi_real q[4], oi_real out[4]);
 void oi__quat_rotate(const oi_real q[4], const oi_real v[3], oi_real out[3]);
