@@ -316,7 +316,7 @@ static oi_real earth_radiance(const oi_real om[3], oi_real cos_theta, oi_real si
  * that is linear across the lobe, in error where the limb or the
  * terminator cuts it (docs/shapes.md measures it).
  */
-static oi_real lobe_rule(oi_real cos_theta, oi_real sin_theta, oi_real h_km, oi_real R,
+static OI_NOINLINE oi_real lobe_rule(oi_real cos_theta, oi_real sin_theta, oi_real h_km, oi_real R,
                          const oi_real nrm[3], const oi_real obs[3], oi_real shininess)
 {
     oi_real m[3], e1[3], e2[3], rp, hp, total = (oi_real)0, no;
