@@ -349,9 +349,10 @@ static OI_NOINLINE int sky_term(const oi_scene *scene, const oi_model *m, oi_ill
 #endif
 
 #if !defined(OI_NO_EARTH_ANGULAR) && !defined(OI_NO_EARTH_TABLE)
-/* The earthshine a Lambertian sphere sends towards obs_hat from the angular
- * table's moments (src/earthshine_angular.c); 0 when the table does not
- * serve this altitude (then the caller keeps the mean direction's flux). */
+/* The earthshine a Lambertian sphere sends towards obs_hat from its angular
+ * distribution (the cubature, or the table's moments with
+ * OI_EARTH_REFLECT_TABLE: src/earthshine_angular.c); 0 below 100 km (then
+ * the caller keeps the mean direction's flux). */
 static OI_NOINLINE int earth_flux_moments(const oi_scene *scene, const oi_model *m,
                                           const oi_earth_angular_table *t,
                                           const oi_real obs_hat[3], oi_real ratio,
@@ -457,7 +458,8 @@ static OI_NOINLINE int observer_term(const oi_scene *scene, const oi_model *m,
  *     from the scattered-sunlight table (src/skylight.c), reflected from its
  *     mean direction (docs/skylight.md).
  *  4. The target is a Lambertian sphere; earthshine is reflected from its
- *     angular distribution (the angular table's moments, from 100 km up;
+ *     angular distribution (a cubature over the visible sunlit Earth, or
+ *     the angular table's moments with OI_EARTH_REFLECT_TABLE, from 100 km up;
  *     docs/earthshine-angular.md), or, with OI_EARTH_REFLECT_MEAN, below
  *     the table or without it, as if it came from its mean incidence
  *     direction (exact in the far field).
