@@ -335,16 +335,16 @@ static OI_NOINLINE oi_real lobe_rule(oi_real cos_theta, oi_real sin_theta, oi_re
     for (i = 0; i < N_LOBE_S; i++) {
         const oi_real mu = OI_POW(lobe_s[i][0], (oi_real)1 / (shininess + (oi_real)1));
         const oi_real sg = OI_SQRT(((oi_real)1 - mu) * ((oi_real)1 + mu));
-        oi_real ring = (oi_real)0;
+        oi_real circle = (oi_real)0;
         for (j = 0; j < N_LOBE_PHI; j++) {
             const oi_real c = j < N_LOBE_PHI / 2 ? lobe_phi[j][0] : -lobe_phi[j - N_LOBE_PHI / 2][0];
             const oi_real sn = j < N_LOBE_PHI / 2 ? lobe_phi[j][1] : -lobe_phi[j - N_LOBE_PHI / 2][1];
             oi_real om[3], cn;
             for (k = 0; k < 3; k++) om[k] = mu * m[k] + sg * (c * e1[k] + sn * e2[k]);
             cn = oi__dot(om, nrm);
-            if (cn > (oi_real)0) ring += cn * earth_radiance(om, cos_theta, sin_theta, rp, hp);
+            if (cn > (oi_real)0) circle += cn * earth_radiance(om, cos_theta, sin_theta, rp, hp);
         }
-        total += lobe_s[i][1] * ring;
+        total += lobe_s[i][1] * circle;
     }
     return total / (oi_real)N_LOBE_PHI * (shininess + OI_R(2.0)) / (shininess + (oi_real)1);
 }
