@@ -21,7 +21,9 @@
  *   sun_earth      oi_illuminate, Sun + Earth
  *   sun_earth_mean oi_illuminate, Sun + Earth, earthshine reflected from its
  *                  mean direction (OI_EARTH_REFLECT_MEAN): the difference
- *                  with sun_earth is the cost of the angular moments
+ *                  with sun_earth is the cost of the sphere's cubature
+ *   sun_earth_table  as sun_earth_mean with the angular table's moments
+ *                  (OI_EARTH_REFLECT_TABLE)
  *   sun_earth_plate, sun_earth_box_wing, sun_earth_cylinder  as sun_earth with the
  *                  built-in shape (docs/shapes.md) instead of the sphere, the
  *                  scene's attitude the identity: the facets' cost (without
@@ -80,7 +82,7 @@ enum { C_ALL, C_SUN, C_SUN_EARTH, C_ALL_EXPOSE, C_SUN_FRACTION, C_EARTHSHINE, C_
        C_SUN_FRACTION_WGS84, C_ALL_WGS84,
        C_SUN_FRACTION_BATCH, C_SUN_FRACTION_BATCH_ALL, C_ALL_BATCH, C_ALL_BATCH_OBSERVER,
        C_ALL_BATCH_IRRADIANCE, C_ALL_BATCH_FULL, C_EARTHSHINE_BATCH,
-       C_SUN_EARTH_KNOCKE, C_SUN_EARTH_MAP, C_N };
+       C_SUN_EARTH_KNOCKE, C_SUN_EARTH_MAP, C_SUN_EARTH_TABLE, C_N };
 static const char *const config_name[C_N] = {"all",          "sun",        "sun_earth",
                                              "all_expose",   "sun_fraction", "earthshine",
                                              "earthshine_lambert", "sun_moon", "sun_earth_mean",
@@ -91,7 +93,7 @@ static const char *const config_name[C_N] = {"all",          "sun",        "sun_
                                              "sun_fraction_batch_all", "all_batch",
                                              "all_batch_observer", "all_batch_irradiance",
                                              "all_batch_full", "earthshine_batch", "sun_earth_knocke",
-                                             "sun_earth_map"};
+                                             "sun_earth_map", "sun_earth_table"};
 
 /* the albedo map of sun_earth_map: 1-degree cells (a CERES grid's size),
  * a smooth zonal and tesseral pattern (filled by setup) */
@@ -209,7 +211,7 @@ static double run_config(int cfg)
 {
     static oi_illum il;
     static oi_exposure ex;
-    oi_model lambert, mean, wgs84, knocke, map;
+    oi_model lambert, mean, wgs84, knocke, map, table;
     oi_real phi, psi;
     double acc = 0.0;
     int i;
@@ -222,6 +224,8 @@ static double run_config(int cfg)
     lambert.earth_model = OI_EARTH_LAMBERT;
     memset(&mean, 0, sizeof mean);
     mean.earth_reflection = OI_EARTH_REFLECT_MEAN;
+    memset(&table, 0, sizeof table);
+    table.earth_reflection = OI_EARTH_REFLECT_TABLE;
     memset(&wgs84, 0, sizeof wgs84);
     wgs84.earth_shape = OI_EARTH_WGS84;
     memset(&knocke, 0, sizeof knocke);
@@ -264,8 +268,9 @@ static double run_config(int cfg)
             acc += (double)il.flux_obs;
             break;
         case C_SUN_EARTH_MEAN:
+        case C_SUN_EARTH_TABLE:
             s->terms = OI_TERM_SUN | OI_TERM_EARTH;
-            (void)oi_illuminate(s, &mean, &il);
+            (void)oi_illuminate(s, cfg == C_SUN_EARTH_MEAN ? &mean : &table, &il);
             acc += (double)il.flux_obs;
             break;
         case C_SHAPE_PLATE:

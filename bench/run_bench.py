@@ -34,7 +34,7 @@ CONFIGS = ["all", "sun", "sun_earth", "all_expose", "sun_fraction", "earthshine"
            "sun_earth_cylinder", "sun_fraction_wgs84", "all_wgs84", "sun_fraction_batch",
            "sun_fraction_batch_all", "all_batch", "all_batch_observer", "all_batch_irradiance",
            "all_batch_full", "earthshine_batch",
-           "sun_earth_knocke", "sun_earth_map"]
+           "sun_earth_knocke", "sun_earth_map", "sun_earth_table"]
 LIGHTS = ["lit", "penumbra", "umbra"]
 R_EARTH_KM = 6378.137
 

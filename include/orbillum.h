@@ -121,10 +121,14 @@ const char *oi_status_name(int status);
 #define OI_MOON_LAMBERT   (1) /* Lambert sphere of albedo moon_albedo (seed) */
 
 /* oi_model.earth_reflection: how a sphere reflects earthshine */
-#define OI_EARTH_REFLECT_MOMENTS (0) /* from its angular distribution, the
-                                        angular table's moments (default) */
+#define OI_EARTH_REFLECT_MOMENTS (0) /* from its angular distribution, by a
+                                        cubature over the visible sunlit
+                                        Earth (default) */
 #define OI_EARTH_REFLECT_MEAN    (1) /* as if all of it came from its mean
                                         direction (exact in the far field) */
+#define OI_EARTH_REFLECT_TABLE   (2) /* from its angular distribution, the
+                                        angular table's moments (cheaper,
+                                        less accurate near the terminator) */
 
 /* oi_model.earth_shape: the Earth as occulter (its shadow, its hiding the
  * Moon and the target) and the surface the altitudes are measured from */
@@ -185,7 +189,7 @@ typedef struct oi_model {
     int no_atmosphere;        /* nonzero: as if the Earth had no atmosphere */
     const oi_earth_table *earth_table; /* earthshine table; NULL: oi_earth_table_default() */
     const oi_atm_table *atm_table;     /* atmosphere table; NULL: oi_atm_table_default() */
-    int earth_reflection;     /* OI_EARTH_REFLECT_MOMENTS or OI_EARTH_REFLECT_MEAN */
+    int earth_reflection;     /* OI_EARTH_REFLECT_MOMENTS, _MEAN or _TABLE */
     int earth_shape;          /* OI_EARTH_SPHERE or OI_EARTH_WGS84 (OI_ERR_MODEL with
                                  OI_NO_OBLATE) */
     int albedo_model;         /* OI_ALBEDO_UNIFORM, OI_ALBEDO_KNOCKE or OI_ALBEDO_MAP */
@@ -275,7 +279,7 @@ const oi_atm_table *oi_atm_table_default(void);
 const oi_atm_table *oi_atm_total_default(void);
 /* oi_earth_angular_default: the earthshine angular table (oi_earth_angular,
  * include/oi_table.h) a sphere's reflection of earthshine uses with
- * earth_reflection = OI_EARTH_REFLECT_MOMENTS; NULL with OI_NO_EARTH_ANGULAR
+ * earth_reflection = OI_EARTH_REFLECT_TABLE; NULL with OI_NO_EARTH_ANGULAR
  * or OI_NO_EARTH_TABLE. Its own translation unit, as the others; trusted. */
 const oi_earth_angular_table *oi_earth_angular_default(void);
 /* oi_sky_table_default: the scattered-sunlight table (oi_sky_vband,
@@ -448,16 +452,18 @@ int oi_earthshine(oi_real theta, oi_real h_km, const oi_model *model,
  * sphere's radius, d the observer's range): F such that the flux at the
  * observer is earth_albedo TSI (1 AU / |sun|)^2 target_albedo (a/d)^2 F.
  * Given:   theta, h_km, model  as oi_earthshine (earth_reflection chooses
- *                 the moments or the mean direction)
+ *                 the cubature, the table's moments or the mean direction)
  *          obs    direction from the target towards the observer in the
  *                 local frame (z the zenith, x towards the Sun's side in the
  *                 Sun-Earth-target plane, y normal to it); any length > 0
- * Returned: flux  F (>= 0 up to the series' ringing, see Notes)
+ * Returned: flux  F (>= 0)
  * Returns: oi_earthshine's statuses; OI_ERR_NULL (obs or flux NULL),
  *          OI_ERR_NONFINITE (a component of obs), OI_ERR_ZERO_VECTOR (obs
  *          zero). On error *flux is 0.
- * Notes:   With the moments (default) F = phi S(o), S from the angular
- *          table (docs/earthshine-angular.md, with its measured error
+ * Notes:   By default F = phi S(o), S from a cubature over the visible
+ *          sunlit Earth (10 x 6 nodes per piece, at most 8 pieces), with
+ *          OI_EARTH_REFLECT_TABLE from the angular table's moments
+ *          (docs/earthshine-angular.md, with the measured errors of both
  *          against a quadrature over the visible sunlit Earth); below the
  *          table's lowest altitude (100 km), without the table, with the
  *          Lambert far field or with OI_EARTH_REFLECT_MEAN: phi p(xi), xi

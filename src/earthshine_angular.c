@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* earthshine_angular.c: the flux a Lambertian sphere sends to an observer
- * under earthshine, from the angular table's moments (oi_earth_angular_table,
- * include/oi_table.h; docs/earthshine-angular.md), and oi_earthshine_sphere. */
+ * under earthshine, by a cubature over the visible sunlit cap (default) or
+ * from the angular table's moments (oi_earth_angular_table, include/oi_table.h;
+ * docs/earthshine-angular.md), and oi_earthshine_sphere. */
 #include "oi_tables_internal.h"
 
 #ifndef OI_NO_EARTH_ANGULAR
@@ -92,22 +93,17 @@ static oi_real truncated_phase(oi_real mu, int l_max)
 }
 
 /* The shape S(o) = F / phi of the sphere's flux at (theta, h) towards the
- * unit local direction o, from table t: 1 when the table serves the
- * altitude (*shape set, >= 0), 0 below its first row. */
-int oi__earth_sphere_shape(const oi_earth_angular_table *t, oi_real theta, oi_real cos_theta,
-                           oi_real sin_theta, oi_real h_km, oi_real R, const oi_real o[3],
-                           oi_real *shape)
+ * unit local direction o, from table t's moments (w the visible cap's
+ * half-angle, s = R tan w; w >= the table's first row and theta below
+ * pi / 2 + w, both checked by the caller). */
+static OI_NOINLINE oi_real table_shape(const oi_earth_angular_table *t, oi_real theta,
+                                       oi_real cos_theta, oi_real sin_theta, oi_real w,
+                                       oi_real s, oi_real R, const oi_real o[3])
 {
-    oi_real c[NC_MAX + 1], wr[6], wc[6], w, s, beta, sum;
+    oi_real c[NC_MAX + 1], wr[6], wc[6], beta, sum;
     int ir[6], ic[6], nr, nk, k, a, b;
     const int nt = t->n_lit + t->n_term, nc = t->n_coef;
     const oi_real w_min = (oi_real)t->w_min, w_max = (oi_real)t->w_max;
-
-    *shape = (oi_real)0;
-    s = OI_SQRT(h_km) * OI_SQRT(OI_R(2.0) * R + h_km);
-    w = OI_ATAN2(s, R);
-    if (w < w_min) return 0;
-    if (theta >= OI_HALF_PI_R + w) return 1; /* nothing lit is visible: phi = 0 */
 
     nr = stencil((w - w_min) / (w_max - w_min) * (oi_real)(t->n_alt - 1), t->n_alt, ir, wr);
     if (theta <= OI_HALF_PI_R - w) {
@@ -148,21 +144,219 @@ int oi__earth_sphere_shape(const oi_earth_angular_table *t, oi_real theta, oi_re
                            truncated_phase(mu, t->l_max));
         }
     }
-    *shape = sum > (oi_real)0 ? sum : (oi_real)0;
+    return sum > (oi_real)0 ? sum : (oi_real)0;
+}
+
+/* The cubature's rule in the polar angle a about the sub-target point: the
+ * 10-point Gauss rule of the Legendre weight on [0, 1], its nodes t mapped
+ * by a = (1 - cos(pi t)) / 2 (the sqrt behaviour where the terminator
+ * touches a ring becomes analytic), the mapped node and the weight times
+ * the map's derivative; and in the azimuth b over the lit arc [0, b_m], the
+ * plain 6-point rule on [0, 1] (node, weight), its lower half: the rule is
+ * symmetric, node 1 - t with the same weight. mpmath, 21 digits; checked
+ * in tests/python/test_earth_angular.py. */
+#define NA_SPHERE 10
+#define NB_SPHERE 6
+static const oi_real a_rule[NA_SPHERE][2] = {
+    { OI_R(0.000419935591495131607748), OI_R(0.00214565169645935617036) },
+    { OI_R(0.0111895587633796293737), OI_R(0.0246935039388389605608) },
+    { OI_R(0.0620702491149801029453), OI_R(0.0830351781875070095885) },
+    { OI_R(0.185301925983683730791), OI_R(0.164339086101387778717) },
+    { OI_R(0.384137164650774476665), OI_R(0.22578658007580689496) },
+    { OI_R(0.615862835349225523335), OI_R(0.22578658007580689496) },
+    { OI_R(0.814698074016316269209), OI_R(0.164339086101387778717) },
+    { OI_R(0.937929750885019897055), OI_R(0.0830351781875070095885) },
+    { OI_R(0.988810441236620370626), OI_R(0.0246935039388389605608) },
+    { OI_R(0.999580064408504868392), OI_R(0.00214565169645935617036) },
+};
+static const oi_real b_rule[NB_SPHERE / 2][2] = {
+    { OI_R(0.0337652428984239860938), OI_R(0.0856622461895851725201) },
+    { OI_R(0.169395306766867743169), OI_R(0.180380786524069303785) },
+    { OI_R(0.380690406958401545685), OI_R(0.233956967286345523695) },
+};
+
+/* Break points of the a range: 0, the horizon, the terminator's tangency
+ * and up to N_GEO_SPHERE multiples of the altitude (the 1/d^3 peak). */
+#define N_GEO_SPHERE 6
+#define N_BREAK_SPHERE (3 + N_GEO_SPHERE)
+
+/* Insert x into the sorted list bp[0..n-1] when 0 < x < a_max. */
+static int add_break(oi_real bp[N_BREAK_SPHERE], int n, oi_real x, oi_real a_max)
+{
+    int i;
+    if (!(x > (oi_real)0 && x < a_max) || n >= N_BREAK_SPHERE) return n;
+    for (i = n; i > 0 && bp[i - 1] > x; i--) bp[i] = bp[i - 1];
+    bp[i] = x;
+    return n + 1;
+}
+
+/* acos(x) = sqrt(1 - x) (a_0 + a_1 x + ... + a_7 x^7) on [0, 1], within
+ * 2.2e-8 absolute (Abramowitz & Stegun 1964, 4.4.46, after Hastings; the
+ * bound checked in tests/python/test_earth_angular.py): the cubature's
+ * error is 1e-4 of its goal's scale, so the kernel needs no more, and this
+ * is a quarter of an atan2's cost. */
+static const oi_real acos_poly[8] = {
+    OI_R(1.5707963050), OI_R(-0.2145988016), OI_R(0.0889789874), OI_R(-0.0501743046),
+    OI_R(0.0308918810), OI_R(-0.0170881256), OI_R(0.0066700901), OI_R(-0.0012624911)};
+
+/* p(acos c), the Lambert phase function 2 / (3 pi) ((pi - xi) cos xi +
+ * sin xi) at the angle xi of cosine c, within 1e-8 absolute (p(0) = 2/3). */
+static oi_real phase_of_cos(oi_real c)
+{
+    oi_real ac = OI_FABS(c), q, poly, acos_abs, f;
+    int i;
+    if (ac > (oi_real)1) ac = (oi_real)1;
+    q = OI_SQRT((oi_real)1 - ac);
+    poly = acos_poly[7];
+    for (i = 6; i >= 0; i--) poly = poly * ac + acos_poly[i];
+    acos_abs = q * poly; /* acos |c| */
+    /* pi - xi is acos |c| for c < 0, pi - acos |c| otherwise; sin xi = q sqrt(1 + |c|) */
+    f = (c < (oi_real)0 ? acos_abs : OI_PI_R - acos_abs) * c + q * OI_SQRT((oi_real)1 + ac);
+    return f > (oi_real)0 ? OI_R(2.0) / (OI_R(3.0) * OI_PI_R) * f : (oi_real)0;
+}
+
+/*
+ * cubature_flux: F, the sphere's flux at theta (cos_theta, sin_theta) and
+ * h_km above an Earth of radius R towards the unit local direction o (per
+ * unit albedo, solar irradiance and (a / d)^2, oi_earthshine_sphere's).
+ * Notes:
+ *  1. Unit r = |target|: R' = R / r, h' = h / r. A surface point at polar
+ *     angle a, azimuth b about the sub-target point sends radiance (n.s) /
+ *     pi, n.s = cos a cos theta + sin a sin theta cos b, and subtends cos(e)
+ *     dA / d'^2 (d'^2 = h'^2 + 4 R' sin^2(a/2), cos e = (cos a - R') / d')
+ *     from the incoming direction omega = (P - T) / d'. Then
+ *       F = R'^2 / pi int sin a (cos a - R') / d'^3 int (n.s) p(omega.o) db da
+ *  2. The lit arc is |b| < b_m(a); b and -b are folded (omega's mirror
+ *     image in y), so b runs over [0, b_m] with the plain 6-point rule: the
+ *     lit factor vanishes at b_m and the kernel p is smooth (its first
+ *     non-analytic term is |xi|^3), so nothing is clipped.
+ *  3. The a range is split at the horizon, the terminator's tangency and
+ *     multiples of the altitude; each piece gets the mapped 10-point rule.
+ *     docs/earthshine-angular.md measures it against the quadrature of
+ *     bake/earthshine/angular.py.
+ */
+static OI_NOINLINE oi_real cubature_flux(oi_real cos_theta, oi_real sin_theta, oi_real h_km,
+                                         oi_real R, const oi_real o[3])
+{
+    oi_real bp[N_BREAK_SPHERE], r, rp, hp, a_max, d, flux = (oi_real)0;
+    int n = 2, p, q, k, g;
+
+    r = R + h_km;
+    rp = R / r;
+    hp = h_km / r;
+    a_max = OI_ATAN2(OI_SQRT(hp * ((oi_real)1 + rp)), rp);
+    bp[0] = (oi_real)0;
+    bp[1] = a_max;
+    n = add_break(bp, n, OI_FABS(OI_HALF_PI_R - OI_ATAN2(sin_theta, cos_theta)), a_max);
+    d = OI_R(2.0) * hp;
+    for (g = 0; g < N_GEO_SPHERE && d * d < OI_R(0.5) * hp * ((oi_real)1 + rp); g++) {
+        const oi_real x = (d * d - hp * hp) / (OI_R(4.0) * rp);
+        n = add_break(bp, n, OI_R(2.0) * OI_ASIN(OI_SQRT(x)), a_max);
+        d *= OI_R(4.0);
+    }
+    for (p = 0; p + 1 < n; p++) {
+        const oi_real a0 = bp[p], width = bp[p + 1] - bp[p];
+        if (!(width > (oi_real)0)) continue;
+        for (q = 0; q < NA_SPHERE; q++) {
+            const oi_real a = a0 + width * a_rule[q][0];
+            oi_real sh, ch, sa, sh2, lit0, lit1, bm, cbm, sbm, d2, dd, rho, zc, wgt, ring = (oi_real)0;
+            OI_SINCOS(OI_R(0.5) * a, &sh, &ch);
+            sa = OI_R(2.0) * sh * ch;
+            sh2 = sh * sh;
+            lit0 = ((oi_real)1 - OI_R(2.0) * sh2) * cos_theta;
+            lit1 = sa * sin_theta;
+            /* the lit arc's half-width b_m, its cosine and sine */
+            cbm = OI_R(-1.0);
+            if (lit1 > (oi_real)0) cbm = -lit0 / lit1;
+            else if (!(lit0 > (oi_real)0)) continue;
+            if (cbm >= (oi_real)1) continue;
+            if (cbm <= OI_R(-1.0)) {
+                bm = OI_PI_R;
+                cbm = OI_R(-1.0);
+                sbm = (oi_real)0;
+            } else {
+                bm = OI_ACOS(cbm);
+                sbm = OI_SQRT(((oi_real)1 - cbm) * ((oi_real)1 + cbm));
+            }
+            d2 = hp * hp + OI_R(4.0) * rp * sh2;
+            dd = OI_SQRT(d2);
+            rho = rp * sa / dd;                        /* omega's horizontal part */
+            zc = -(hp + OI_R(2.0) * rp * sh2) / dd;    /* omega_z = R' cos a - 1 */
+            for (k = 0; k < NB_SPHERE / 2; k++) {
+                oi_real sc[2][2]; /* (sin, cos) of the node b and its mirror b_m - b */
+                int side;
+                OI_SINCOS(bm * b_rule[k][0], &sc[0][0], &sc[0][1]);
+                sc[1][0] = sbm * sc[0][1] - cbm * sc[0][0];
+                sc[1][1] = cbm * sc[0][1] + sbm * sc[0][0];
+                for (side = 0; side < 2; side++) {
+                    const oi_real lit = lit0 + lit1 * sc[side][1];
+                    oi_real u, v;
+                    if (!(lit > (oi_real)0)) continue;
+                    u = rho * sc[side][1] * o[0] + zc * o[2];
+                    v = rho * sc[side][0] * o[1];
+                    ring += b_rule[k][1] * lit * (phase_of_cos(u + v) + phase_of_cos(u - v));
+                }
+            }
+            wgt = width * a_rule[q][1] * sa * (hp - OI_R(2.0) * sh2) / (d2 * dd);
+            flux += wgt * bm * ring;
+        }
+    }
+    flux *= rp * rp / OI_PI_R;
+    return flux > (oi_real)0 ? flux : (oi_real)0;
+}
+
+/* The sphere's flux F at (theta, h) towards the unit local direction o
+ * under the resolved model m: the cubature's, or phi times the table's
+ * shape with OI_EARTH_REFLECT_TABLE (phi the earthshine table's): 1 when
+ * the angular distribution serves the altitude (*flux set, >= 0), 0 below
+ * the table's first row (100 km; then the caller reflects from the mean
+ * direction). The cubature's F does not go through phi: on the far night
+ * side phi is a small fraction of phi(0), and the earthshine table's error
+ * there, within its goal of phi(0), can be a large part of phi. */
+static int sphere_flux(const oi_model *m, oi_real theta, oi_real cos_theta, oi_real sin_theta,
+                       oi_real h_km, oi_real R, const oi_real o[3], oi_real phi, oi_real *flux)
+{
+    const oi_earth_angular_table *t = oi_earth_angular_default();
+    oi_real w, s;
+    *flux = (oi_real)0;
+    s = OI_SQRT(h_km) * OI_SQRT(OI_R(2.0) * R + h_km);
+    w = OI_ATAN2(s, R);
+    if (!(w >= (oi_real)t->w_min)) return 0;
+    if (theta >= OI_HALF_PI_R + w) return 1; /* nothing lit is visible: phi = 0 */
+    if (m->earth_reflection == OI_EARTH_REFLECT_TABLE)
+        *flux = phi * table_shape(t, theta, cos_theta, sin_theta, w, s, R, o);
+    else
+        *flux = cubature_flux(cos_theta, sin_theta, h_km, R, o);
     return 1;
+}
+
+/* The shape S(o) = F / phi (sphere_flux's F; 0 where phi is 0, so that phi
+ * S, what oi_illuminate forms with its e_earth, is 0 there too, and where
+ * phi is below 1e-20 F, at the lit crescent's vanishing edge, so that S
+ * stays finite in single precision). */
+int oi__earth_sphere_shape(const oi_model *m, oi_real theta, oi_real cos_theta, oi_real sin_theta,
+                           oi_real h_km, oi_real R, const oi_real o[3], oi_real phi,
+                           oi_real *shape)
+{
+    oi_real f;
+    const int served = sphere_flux(m, theta, cos_theta, sin_theta, h_km, R, o, phi, &f);
+    *shape = phi > OI_R(1e-20) * f && phi > (oi_real)0 ? f / phi : (oi_real)0;
+    return served;
 }
 
 #endif /* OI_NO_EARTH_TABLE */
 #endif /* OI_NO_EARTH_ANGULAR */
 
-/* The angular table a resolved model uses, or NULL (mean direction). */
+/* The angular table of a resolved model whose sphere reflects earthshine
+ * from its angular distribution (the cubature or the table's moments), or
+ * NULL (mean direction). */
 const oi_earth_angular_table *oi__earth_angular_of(const oi_model *m)
 {
 #if defined(OI_NO_EARTH_ANGULAR) || defined(OI_NO_EARTH_TABLE)
     (void)m;
     return (const oi_earth_angular_table *)0;
 #else
-    if (m->earth_reflection != OI_EARTH_REFLECT_MOMENTS || m->earth_model != OI_EARTH_TABLE)
+    if (m->earth_reflection == OI_EARTH_REFLECT_MEAN || m->earth_model != OI_EARTH_TABLE)
         return (const oi_earth_angular_table *)0;
     return oi_earth_angular_default();
 #endif
@@ -192,11 +386,7 @@ int oi_earthshine_sphere(oi_real theta, oi_real h_km, const oi_real obs[3],
     t = oi__earth_angular_of(&m);
 #if !defined(OI_NO_EARTH_ANGULAR) && !defined(OI_NO_EARTH_TABLE)
     if (t != NULL) {
-        oi_real shape;
-        if (oi__earth_sphere_shape(t, theta, cs, sn, h_km, m.earth_radius_km, o, &shape)) {
-            *flux = phi * shape;
-            return st;
-        }
+        if (sphere_flux(&m, theta, cs, sn, h_km, m.earth_radius_km, o, phi, flux)) return st;
     }
 #else
     (void)t;

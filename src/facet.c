@@ -48,6 +48,30 @@ static oi_real earth_irradiance(const facet_scene *fs, const oi_scene *s, const 
     return dot > (oi_real)0 ? out->e_earth * dot : (oi_real)0;
 }
 
+/* The Earth's specular radiance from the face of unit normal nrm towards
+ * obs_hat (positions' frame) per unit albedo_specular: integrated over the
+ * visible sunlit Earth (oi__plate_earth_specular), or with the mean
+ * direction's model as if all of the face's earthshine came from dir_earth. */
+static oi_real earth_specular(const facet_scene *fs, const oi_model *m, const oi_illum *out,
+                              const oi_real nrm[3], const oi_real obs_hat[3], const oi_facet *f)
+{
+    if (fs->cubature) {
+        oi_real nl[3], ol[3];
+        nl[0] = oi__dot(nrm, fs->x);
+        nl[1] = oi__dot(nrm, fs->y);
+        nl[2] = oi__dot(nrm, fs->r_hat);
+        ol[0] = oi__dot(obs_hat, fs->x);
+        ol[1] = oi__dot(obs_hat, fs->y);
+        ol[2] = oi__dot(obs_hat, fs->r_hat);
+        return fs->e0_earth * oi__plate_earth_specular(fs->cos_theta, fs->sin_theta, out->earth_h_km,
+                                                       m->earth_radius_km, nl, ol, f->shininess);
+    } else {
+        const oi_real ci = oi__dot(nrm, out->dir_earth), dot = ci > (oi_real)0 ? ci : (oi_real)0;
+        if (!(ci > (oi_real)0)) return (oi_real)0;
+        return out->e_earth * dot * oi__phong_lobe(nrm, ci, out->dir_earth, obs_hat, f->shininess);
+    }
+}
+
 /*
  * oi__shape_flux: flux_sun, flux_earth, flux_moon and flux_specular of the
  * scene's shape towards the unit direction obs_hat at range_km, given the
@@ -97,13 +121,9 @@ void oi__shape_flux(const oi_scene *s, const oi_model *m, const oi_real obs_hat[
             point_source(out->e_moon, out->dir_moon, nrm, obs_hat, rho_d, f, &dm, &sm);
             e_face = earth_irradiance(&fs, s, m, out, nrm);
             if (e_face > (oi_real)0) {
-                const oi_real ci = oi__dot(nrm, out->dir_earth);
                 de = e_face * rho_d / OI_PI_R;
-                /* the specular part as if the face's earthshine came from
-                 * the mean direction */
-                if (f->albedo_specular > (oi_real)0 && ci > (oi_real)0)
-                    se = e_face * f->albedo_specular *
-                         oi__phong_lobe(nrm, ci, out->dir_earth, obs_hat, f->shininess);
+                if (f->albedo_specular > (oi_real)0)
+                    se = f->albedo_specular * earth_specular(&fs, m, out, nrm, obs_hat, f);
             }
             out->flux_sun += geom * (ds + ss);
             out->flux_earth += geom * (de + se);

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
-/* facet_earth.c: the earthshine irradiance on a flat facet, by a fixed
- * cubature over the visible sunlit cap clipped by the facet's horizon
- * (docs/shapes.md), and oi_earthshine_plate. */
+/* facet_earth.c: the earthshine irradiance on a flat facet and the
+ * specular earthshine it reflects, by a fixed cubature over the visible
+ * sunlit cap clipped by the facet's horizon or, for a sharp lobe, about the
+ * lobe (docs/shapes.md), and oi_earthshine_plate. */
 #include "oi_internal.h"
 
 #ifndef OI_NO_FACETS
@@ -63,24 +64,79 @@ static oi_real half_width(oi_real c0, oi_real amp)
     return OI_ACOS(x);
 }
 
-/* The ring's integral over the intersection of the lit arc |b| < w1 and the
- * facet's arc |b - beta| < w2 (either may be the whole ring). */
-static oi_real ring(const oi_real k[5], oi_real w1, oi_real beta, oi_real w2)
+/* The specular lobe a cap cubature integrates (NULL: the irradiance): the
+ * face's unit normal and the unit direction to the observer (local frame),
+ * the shininess, and per ring the incoming direction's parts (omega =
+ * (rho cos b, rho sin b, zc) / 1, set by the caller). */
+typedef struct lobe_ring {
+    const oi_real *nrm, *obs;
+    oi_real shininess, rho, zc, inv_d;
+} lobe_ring;
+
+/* The plain 6-point Gauss rule on [0, 1], its lower half (node, weight;
+ * the rule is symmetric), for the specular lobe over an arc (mpmath, 21
+ * digits; checked in tests/python/test_facets.py). */
+#define N_ARC 6
+static const oi_real arc_rule[N_ARC / 2][2] = {
+    { OI_R(0.0337652428984239860938), OI_R(0.0856622461895851725201) },
+    { OI_R(0.169395306766867743169), OI_R(0.180380786524069303785) },
+    { OI_R(0.380690406958401545685), OI_R(0.233956967286345523695) },
+};
+
+/* The azimuthal integral over [b1, b2] of (A + B cos b)(C + D cos b + E sin b)
+ * f(omega(b) -> obs), f the Phong lobe per unit albedo_specular, by the
+ * 6-point rule (the two factors vanish at the arc's ends, where it is cut). */
+static oi_real arc_specular(const oi_real k[5], oi_real b1, oi_real b2, const lobe_ring *lr)
 {
     oi_real sum = (oi_real)0;
+    int i, side;
+    for (i = 0; i < N_ARC / 2; i++)
+        for (side = 0; side < 2; side++) {
+            const oi_real t = side ? (oi_real)1 - arc_rule[i][0] : arc_rule[i][0];
+            oi_real sb, cb, lit, face, om[3];
+            OI_SINCOS(b1 + (b2 - b1) * t, &sb, &cb);
+            lit = k[0] + k[1] * cb;
+            face = k[2] + k[3] * cb + k[4] * sb;
+            if (!(lit > (oi_real)0) || !(face > (oi_real)0)) continue;
+            om[0] = lr->rho * cb;
+            om[1] = lr->rho * sb;
+            om[2] = lr->zc;
+            /* N.omega = face / d */
+            sum += arc_rule[i][1] * lit * face *
+                   oi__phong_lobe(lr->nrm, face * lr->inv_d, om, lr->obs, lr->shininess);
+        }
+    return sum * (b2 - b1);
+}
+
+/* The ring's integral over the intersection of the lit arc |b| < w1 and the
+ * facet's arc |b - beta| < w2 (either may be the whole ring): the
+ * irradiance's integrand in closed form, or the specular lobe's (lr). */
+static oi_real ring(const oi_real k[5], oi_real w1, oi_real beta, oi_real w2, const lobe_ring *lr)
+{
+    oi_real sum = (oi_real)0, lo, hi;
     int i;
     if (w1 < (oi_real)0 || w2 < (oi_real)0) return sum;
-    if (w1 > OI_PI_R && w2 > OI_PI_R) return arc_integral(k, -OI_PI_R, OI_PI_R);
-    if (w2 > OI_PI_R) return arc_integral(k, -w1, w1);
-    if (w1 > OI_PI_R) return arc_integral(k, beta - w2, beta + w2);
-    /* beta in [-pi, pi]: the facet's arc and its images a turn away */
-    for (i = -1; i <= 1; i++) {
-        const oi_real shift = (oi_real)(2 * i) * OI_PI_R;
-        const oi_real lo1 = beta - w2 + shift, hi1 = beta + w2 + shift;
-        const oi_real lo = lo1 > -w1 ? lo1 : -w1, hi = hi1 < w1 ? hi1 : w1;
-        if (hi > lo) sum += arc_integral(k, lo, hi);
+    if (w1 > OI_PI_R && w2 > OI_PI_R) {
+        lo = -OI_PI_R;
+        hi = OI_PI_R;
+    } else if (w2 > OI_PI_R) {
+        lo = -w1;
+        hi = w1;
+    } else if (w1 > OI_PI_R) {
+        lo = beta - w2;
+        hi = beta + w2;
+    } else {
+        /* beta in [-pi, pi]: the facet's arc and its images a turn away */
+        for (i = -1; i <= 1; i++) {
+            const oi_real shift = (oi_real)(2 * i) * OI_PI_R;
+            const oi_real lo1 = beta - w2 + shift, hi1 = beta + w2 + shift;
+            lo = lo1 > -w1 ? lo1 : -w1;
+            hi = hi1 < w1 ? hi1 : w1;
+            if (hi > lo) sum += lr != NULL ? arc_specular(k, lo, hi, lr) : arc_integral(k, lo, hi);
+        }
+        return sum;
     }
-    return sum;
+    return lr != NULL ? arc_specular(k, lo, hi, lr) : arc_integral(k, lo, hi);
 }
 
 /* Insert x into the sorted list bp[0..n-1] when 0 < x < a_max. */
@@ -118,10 +174,10 @@ static int add_crossings(oi_real bp[N_BREAK], int n, const oi_real s[3], const o
 }
 
 /*
- * oi__plate_earth: irradiance on the face of unit normal nrm (local frame: z
+ * cap_cubature: irradiance on the face of unit normal nrm (local frame: z
  * the zenith, x towards the Sun's side) per unit Earth albedo and unit solar
  * irradiance at the Earth, at theta (cos_theta, sin_theta) and h_km above an
- * Earth of radius R (km).
+ * Earth of radius R (km); with lr, the specular radiance instead (Note 4).
  * Notes:
  *  1. Unit r = |target|: R' = R / r, h' = h / r. A surface point n at polar
  *     angle a, azimuth b about the sub-target point sends radiance
@@ -136,9 +192,12 @@ static int add_crossings(oi_real bp[N_BREAK], int n, const oi_real s[3], const o
  *     ring or two cross, and at multiples of the altitude; each piece gets
  *     the mapped 8-point rule (node_map). docs/shapes.md measures it.
  *  3. h_km below H_FLOOR_KM is taken as H_FLOOR_KM.
+ *  4. With lr, the specular lobe f(omega -> obs) multiplies the azimuthal
+ *     integrand, which is then integrated by the 6-point rule over each arc
+ *     (arc_specular) instead of in closed form: the same rings.
  */
-oi_real oi__plate_earth(oi_real cos_theta, oi_real sin_theta, oi_real h_km, oi_real R,
-                        const oi_real nrm[3])
+static OI_NOINLINE oi_real cap_cubature(oi_real cos_theta, oi_real sin_theta, oi_real h_km,
+                                        oi_real R, const oi_real nrm[3], lobe_ring *lr)
 {
     oi_real bp[N_BREAK], s[3], r, rp, hp, nh, c_n, a_max;
     oi_real beta = (oi_real)0, total = (oi_real)0, d;
@@ -189,12 +248,121 @@ oi_real oi__plate_earth(oi_real cos_theta, oi_real sin_theta, oi_real h_km, oi_r
             k[2] = -nrm[2] * (hp + OI_R(2.0) * rp * sh2);
             k[3] = rp * sa * nrm[0];
             k[4] = rp * sa * nrm[1];
+            if (lr != NULL) {
+                /* omega = (P - T) / d: (R' sin a cos b, R' sin a sin b, R' cos a - 1) / d */
+                lr->inv_d = (oi_real)1 / OI_SQRT(d2);
+                lr->rho = rp * sa * lr->inv_d;
+                lr->zc = -(hp + OI_R(2.0) * rp * sh2) * lr->inv_d;
+            }
             total += width * node_map[q][1] * sa * (hp - OI_R(2.0) * sh2) / (d2 * d2) *
-                     ring(k, half_width(k[0], k[1]), beta, half_width(k[2], rp * sa * nh));
+                     ring(k, half_width(k[0], k[1]), beta, half_width(k[2], rp * sa * nh), lr);
         }
     }
     total *= rp * rp / OI_PI_R;
     return total > (oi_real)0 ? total : (oi_real)0;
+}
+
+/* oi__plate_earth: contract in src/oi_internal.h; the cap cubature of the
+ * irradiance (cap_cubature's Notes). */
+oi_real oi__plate_earth(oi_real cos_theta, oi_real sin_theta, oi_real h_km, oi_real R,
+                        const oi_real nrm[3])
+{
+    return cap_cubature(cos_theta, sin_theta, h_km, R, nrm, (lobe_ring *)0);
+}
+
+/* The lobe rule's nodes: s = cos^(n + 1) of the angle from the lobe's axis
+ * (the weight of the normalised lobe is uniform in s), the 4-point Gauss
+ * rule on [0, 1] in s (node, weight; mpmath, 21 digits), and 8 azimuths at
+ * (j + 1/2) pi / 4 (cos, sin: the trapezoid rule, exact for the azimuth's
+ * low harmonics). */
+#define N_LOBE_S 4
+#define N_LOBE_PHI 8
+static const oi_real lobe_s[N_LOBE_S][2] = {
+    { OI_R(0.0694318442029737123881), OI_R(0.173927422568726928687) },
+    { OI_R(0.330009478207571867599), OI_R(0.326072577431273071313) },
+    { OI_R(0.669990521792428132401), OI_R(0.326072577431273071313) },
+    { OI_R(0.930568155797026287612), OI_R(0.173927422568726928687) },
+};
+static const oi_real lobe_phi[N_LOBE_PHI / 2][2] = {
+    { OI_R(0.923879532511286756128), OI_R(0.382683432365089771728) },
+    { OI_R(0.382683432365089771728), OI_R(0.923879532511286756128) },
+    { OI_R(-0.382683432365089771728), OI_R(0.923879532511286756128) },
+    { OI_R(-0.923879532511286756128), OI_R(0.382683432365089771728) },
+};
+
+/* The Earth's radiance per unit albedo and solar irradiance seen from the
+ * target along the unit local direction om (unit r: the target at (0, 0,
+ * 1), the Earth of radius rp): (n.s) / pi where the ray meets the sunlit
+ * surface, else 0. */
+static oi_real earth_radiance(const oi_real om[3], oi_real cos_theta, oi_real sin_theta,
+                              oi_real rp, oi_real hp)
+{
+    const oi_real disc = om[2] * om[2] - hp * ((oi_real)1 + rp);
+    oi_real t, lit;
+    if (!(om[2] < (oi_real)0) || !(disc >= (oi_real)0)) return (oi_real)0;
+    /* the nearer root of |T + t om|^2 = rp^2, in the form without cancellation */
+    t = hp * ((oi_real)1 + rp) / (-om[2] + OI_SQRT(disc));
+    lit = (cos_theta + t * (om[0] * sin_theta + om[2] * cos_theta)) / rp;
+    return lit > (oi_real)0 ? lit / OI_PI_R : (oi_real)0;
+}
+
+/*
+ * lobe_rule: the specular integral of oi__plate_earth_specular by nodes
+ * about the lobe's axis m, the mirror image of obs about nrm. With gamma
+ * the angle from m, the normalised lobe's weight (n + 2) / (2 pi) cos^n
+ * gamma dOmega is (n + 2) / (n + 1) ds dphi / (2 pi) with s = cos^(n + 1)
+ * gamma, so the nodes (s_i, phi_j) sample the Earth's radiance times
+ * N.omega where the lobe is, whatever its width; exact for a radiance
+ * that is linear across the lobe, in error where the limb or the
+ * terminator cuts it (docs/shapes.md measures it).
+ */
+static OI_NOINLINE oi_real lobe_rule(oi_real cos_theta, oi_real sin_theta, oi_real h_km, oi_real R,
+                         const oi_real nrm[3], const oi_real obs[3], oi_real shininess)
+{
+    oi_real m[3], e1[3], e2[3], rp, hp, total = (oi_real)0, no;
+    int i, j, k;
+    rp = R / (R + h_km);
+    hp = h_km / (R + h_km);
+    no = oi__dot(nrm, obs);
+    for (k = 0; k < 3; k++) m[k] = OI_R(2.0) * no * nrm[k] - obs[k];
+    /* e1 normal to m, from the axis m is least along */
+    e1[0] = OI_FABS(m[0]) < OI_R(0.6) ? (oi_real)1 : (oi_real)0;
+    e1[1] = e1[0] > (oi_real)0 ? (oi_real)0 : (oi_real)1;
+    e1[2] = (oi_real)0;
+    oi__cross(m, e1, e2);
+    if (oi__unit_bounded(e2, e2) == (oi_real)0) return (oi_real)0;
+    oi__cross(e2, m, e1);
+    for (i = 0; i < N_LOBE_S; i++) {
+        const oi_real mu = OI_POW(lobe_s[i][0], (oi_real)1 / (shininess + (oi_real)1));
+        const oi_real sg = OI_SQRT(((oi_real)1 - mu) * ((oi_real)1 + mu));
+        oi_real circle = (oi_real)0;
+        for (j = 0; j < N_LOBE_PHI; j++) {
+            const oi_real c = j < N_LOBE_PHI / 2 ? lobe_phi[j][0] : -lobe_phi[j - N_LOBE_PHI / 2][0];
+            const oi_real sn = j < N_LOBE_PHI / 2 ? lobe_phi[j][1] : -lobe_phi[j - N_LOBE_PHI / 2][1];
+            oi_real om[3], cn;
+            for (k = 0; k < 3; k++) om[k] = mu * m[k] + sg * (c * e1[k] + sn * e2[k]);
+            cn = oi__dot(om, nrm);
+            if (cn > (oi_real)0) circle += cn * earth_radiance(om, cos_theta, sin_theta, rp, hp);
+        }
+        total += lobe_s[i][1] * circle;
+    }
+    return total / (oi_real)N_LOBE_PHI * (shininess + OI_R(2.0)) / (shininess + (oi_real)1);
+}
+
+/* oi__plate_earth_specular: contract in src/oi_internal.h. */
+oi_real oi__plate_earth_specular(oi_real cos_theta, oi_real sin_theta, oi_real h_km, oi_real R,
+                                 const oi_real nrm[3], const oi_real obs[3], oi_real shininess)
+{
+    lobe_ring lr;
+    if (!(h_km >= H_FLOOR_KM)) h_km = H_FLOOR_KM;
+    if (!(oi__dot(nrm, obs) > (oi_real)0)) return (oi_real)0;
+    if (shininess >= (oi_real)OI_LOBE_RULE_SHININESS)
+        return lobe_rule(cos_theta, sin_theta, h_km, R, nrm, obs, shininess);
+    lr.nrm = nrm;
+    lr.obs = obs;
+    lr.shininess = shininess;
+    lr.rho = lr.zc = lr.inv_d = (oi_real)0;
+    return cap_cubature(cos_theta, sin_theta, h_km, R, nrm, &lr);
 }
 
 /* oi_earthshine_plate: contract in include/orbillum.h. */

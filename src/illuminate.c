@@ -349,9 +349,10 @@ static OI_NOINLINE int sky_term(const oi_scene *scene, const oi_model *m, oi_ill
 #endif
 
 #if !defined(OI_NO_EARTH_ANGULAR) && !defined(OI_NO_EARTH_TABLE)
-/* The earthshine a Lambertian sphere sends towards obs_hat from the angular
- * table's moments (src/earthshine_angular.c); 0 when the table does not
- * serve this altitude (then the caller keeps the mean direction's flux). */
+/* The earthshine a Lambertian sphere sends towards obs_hat from its angular
+ * distribution (the cubature, or the table's moments with
+ * OI_EARTH_REFLECT_TABLE: src/earthshine_angular.c); 0 below 100 km (then
+ * the caller keeps the mean direction's flux). */
 static OI_NOINLINE int earth_flux_moments(const oi_scene *scene, const oi_model *m,
                                           const oi_earth_angular_table *t,
                                           const oi_real obs_hat[3], oi_real ratio,
@@ -365,8 +366,9 @@ static OI_NOINLINE int earth_flux_moments(const oi_scene *scene, const oi_model 
     o[0] = oi__dot(obs_hat, x);
     o[1] = oi__dot(obs_hat, y);
     o[2] = oi__dot(obs_hat, r_hat);
-    if (!oi__earth_sphere_shape(t, out->earth_theta, cos_theta, sin_theta, out->earth_h_km,
-                                m->earth_radius_km, o, &shape))
+    (void)t;
+    if (!oi__earth_sphere_shape(m, out->earth_theta, cos_theta, sin_theta, out->earth_h_km,
+                                m->earth_radius_km, o, out->earth_phi, &shape))
         return 0;
     /* the albedo field's change (0 when uniform), the sum kept non-negative */
     shape += shape_add;
@@ -405,9 +407,9 @@ static OI_NOINLINE int observer_term(const oi_scene *scene, const oi_model *m,
 #if !defined(OI_NO_EARTH_ANGULAR) && !defined(OI_NO_EARTH_TABLE)
     {
         /* the angular distribution where the table serves (phase_earth stays
-         * the mean direction's) */
+         * the mean direction's); not for a shape, whose facets replace it */
         const oi_earth_angular_table *t = oi__earth_angular_of(m);
-        if (t != NULL && out->e_earth > (oi_real)0)
+        if (t != NULL && out->e_earth > (oi_real)0 && scene->shape == NULL)
             (void)earth_flux_moments(scene, m, t, obs_hat, ratio, shape_add, out);
     }
 #else
@@ -457,7 +459,8 @@ static OI_NOINLINE int observer_term(const oi_scene *scene, const oi_model *m,
  *     from the scattered-sunlight table (src/skylight.c), reflected from its
  *     mean direction (docs/skylight.md).
  *  4. The target is a Lambertian sphere; earthshine is reflected from its
- *     angular distribution (the angular table's moments, from 100 km up;
+ *     angular distribution (a cubature over the visible sunlit Earth, or
+ *     the angular table's moments with OI_EARTH_REFLECT_TABLE, from 100 km up;
  *     docs/earthshine-angular.md), or, with OI_EARTH_REFLECT_MEAN, below
  *     the table or without it, as if it came from its mean incidence
  *     direction (exact in the far field).

@@ -67,8 +67,10 @@ int oi__model_resolve(const oi_model *in, oi_model *out)
         }
     }
     /* each option 0 or 1 (see model_options_are_0_or_1) */
-    if ((in->earth_model | in->moon_model | in->limb_darkening | in->earth_reflection |
-         in->earth_shape | in->band) & ~1)
+    if ((in->earth_model | in->moon_model | in->limb_darkening | in->earth_shape | in->band) & ~1)
+        return OI_ERR_MODEL;
+    /* earth_reflection also has OI_EARTH_REFLECT_TABLE (2) */
+    if (in->earth_reflection < 0 || in->earth_reflection > OI_EARTH_REFLECT_TABLE)
         return OI_ERR_MODEL;
 #ifdef OI_NO_LIMB_DARKENING
     /* the limb-darkened disc is compiled out (include/oi_config.h) */

@@ -434,8 +434,9 @@ int oi__sky_lookup(const oi_sky_table *t, oi_real theta, oi_real r_km, oi_real *
                    oi_real *psi);
 #endif
 
-/* The earthshine angular table a resolved model uses for a sphere's
- * reflection (src/earthshine_angular.c): NULL for the mean direction
+/* The earthshine angular table of a resolved model whose sphere reflects
+ * earthshine from its angular distribution (src/earthshine_angular.c;
+ * non-NULL for the cubature and the table's moments): NULL for the mean direction
  * (earth_reflection = OI_EARTH_REFLECT_MEAN, the Lambert far field, or the
  * table compiled out). */
 const oi_earth_angular_table *oi__earth_angular_of(const oi_model *m);
@@ -443,12 +444,14 @@ const oi_earth_angular_table *oi__earth_angular_of(const oi_model *m);
 #if !defined(OI_NO_EARTH_ANGULAR) && !defined(OI_NO_EARTH_TABLE)
 /* S(o) = F / phi, the shape of a Lambertian sphere's flux under earthshine
  * towards the unit direction o of the local frame (z zenith, x towards the
- * Sun's side), from table t at theta (with its cosine and sine) and h_km
- * above an Earth of radius R: returns 1 with *shape >= 0, or 0 (shape 0)
- * below the table's first row (src/earthshine_angular.c). */
-int oi__earth_sphere_shape(const oi_earth_angular_table *t, oi_real theta, oi_real cos_theta,
+ * Sun's side), under the resolved model m (the cubature, or the table's
+ * moments with OI_EARTH_REFLECT_TABLE) at theta (with its cosine and sine)
+ * and h_km above an Earth of radius R, phi the caller's scalar irradiance
+ * (the cubature's flux is F = phi S): returns 1 with *shape >= 0, or 0
+ * (shape 0) below the table's first row (src/earthshine_angular.c). */
+int oi__earth_sphere_shape(const oi_model *m, oi_real theta, oi_real cos_theta,
                            oi_real sin_theta, oi_real h_km, oi_real R, const oi_real o[3],
-                           oi_real *shape);
+                           oi_real phi, oi_real *shape);
 #endif
 
 /* The local frame of the Earth's light at the target (src/local_frame.c). */
@@ -457,16 +460,28 @@ void oi__local_frame(const oi_real target_km[3], const oi_real sun_km[3], oi_rea
 
 #ifndef OI_NO_FACETS
 /* 1 when a resolved model has the facets' earthshine from the cubature
- * (earth_reflection OI_EARTH_REFLECT_MOMENTS with earth_model
- * OI_EARTH_TABLE), 0 for the mean direction. */
+ * (earth_reflection OI_EARTH_REFLECT_MOMENTS or OI_EARTH_REFLECT_TABLE,
+ * which a facet cannot use, with earth_model OI_EARTH_TABLE), 0 for the
+ * mean direction. */
 static inline int oi__plate_cubature(const oi_model *m)
 {
-    return m->earth_reflection == OI_EARTH_REFLECT_MOMENTS && m->earth_model == OI_EARTH_TABLE;
+    return m->earth_reflection != OI_EARTH_REFLECT_MEAN && m->earth_model == OI_EARTH_TABLE;
 }
 /* Earthshine irradiance on a face of unit normal nrm in the local frame, per
  * unit Earth albedo and solar irradiance (src/facet_earth.c). */
 oi_real oi__plate_earth(oi_real cos_theta, oi_real sin_theta, oi_real h_km, oi_real R,
                         const oi_real nrm[3]);
+/* The specular earthshine radiance a face of unit normal nrm sends towards
+ * the unit direction obs (both local frame) per unit albedo_specular, Earth
+ * albedo and solar irradiance: the integral over the visible sunlit Earth
+ * of L(omega) (N.omega) f(omega -> obs), f the Phong lobe of oi__phong_lobe
+ * (src/facet_earth.c): the cap cubature's rings for shininess below
+ * OI_LOBE_RULE_SHININESS, nodes about the lobe's axis from it up. */
+#ifndef OI_LOBE_RULE_SHININESS
+#define OI_LOBE_RULE_SHININESS 64
+#endif
+oi_real oi__plate_earth_specular(oi_real cos_theta, oi_real sin_theta, oi_real h_km, oi_real R,
+                                 const oi_real nrm[3], const oi_real obs[3], oi_real shininess);
 /* The attitude quaternion's check and rotation (src/quaternion.c). */
 int oi__quat_unit(const oi_real q[4], oi_real out[4]);
 void oi__quat_rotate(const oi_real q[4], const oi_real v[3], oi_real out[3]);

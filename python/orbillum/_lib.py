@@ -70,6 +70,7 @@ OI_BAND_V = 0         # oi_model.band
 OI_BAND_TOTAL = 1
 OI_EARTH_REFLECT_MOMENTS = 0  # oi_model.earth_reflection
 OI_EARTH_REFLECT_MEAN = 1
+OI_EARTH_REFLECT_TABLE = 2
 OI_EARTH_SPHERE = 0   # oi_model.earth_shape
 OI_EARTH_WGS84 = 1
 OI_ALBEDO_UNIFORM = 0  # oi_model.albedo_model

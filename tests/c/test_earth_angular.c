@@ -4,8 +4,10 @@
  * the far field (a point Earth at the nadir, F = (R/r)^2 p(theta) p(xi)), the
  * mean-direction option (phi p(xi)), the mirror symmetry, the case the mean
  * direction gets wrong (the observer above a target over the sub-solar
- * point), the compile-time option that removes the table, hostile inputs.
- * The quadrature comparison at random points: tests/python/test_earth_angular.py. */
+ * point), the compile-time option that removes the table, hostile inputs;
+ * and the default cubature against the quadrature over the visible sunlit
+ * Earth (tests/c/ref_sphere.h, no table) in units of the goal. More random
+ * points: tests/python/test_earth_angular.py. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
@@ -17,6 +19,7 @@
 
 #include "orbillum.h"
 #include "oi_test_util.h"
+#include "ref_sphere.h"
 
 static const double PI = 3.14159265358979323846;
 static const double R = 6378.137;
@@ -206,10 +209,41 @@ static void test_hostile(void **state)
     assert_int_equal(oi_earthshine_sphere(1, -2, o, NULL, &f), OI_ERR_BELOW_SURFACE);
     assert_true(f == 0);
     memset(&m, 0, sizeof m);
-    m.earth_reflection = 2;
+    m.earth_reflection = 3;
     f = 5;
     assert_int_equal(oi_earthshine_sphere(1, 500, o, &m, &f), OI_ERR_MODEL);
     assert_true(f == 0);
+}
+
+/* The goal in its units (1 meets it): 1 % where the quadrature's flux
+ * exceeds 1 % of its maximum over directions, 1e-4 of that maximum
+ * elsewhere; the same test in both precisions. */
+static void test_cubature_against_quadrature(void **state)
+{
+    size_t i, j;
+    double worst = 0.0;
+    (void)state;
+    for (i = 0; i < sizeof sphere_refs / sizeof sphere_refs[0]; i++) {
+        const sphere_ref *r = &sphere_refs[i];
+        for (j = 0; j < 12; j++) {
+            int st;
+            const double f = sphere(r->theta, r->h_km, r->obs[j][0], r->obs[j][1], r->obs[j][2],
+                                    OI_EARTH_REFLECT_MOMENTS, &st);
+            const double want = HAVE_MOMENTS ? r->flux[j] : f;
+            double score;
+            check_int(ST_EARTH, st, "status");
+            if (want > 0.01 * r->fmax)
+                score = fabs(f / want - 1.0) / 0.01;
+            else
+                score = fabs(f - want) / r->fmax / 1e-4;
+            if (score > worst) worst = score;
+            if (score > 1.0)
+                fprintf(stderr, "theta %.6f h %.3f obs %zu: %.9g want %.9g (%.3g goal units)\n",
+                        r->theta, r->h_km, j, f, want, score);
+        }
+    }
+    fprintf(stderr, "sphere cubature: max %.3g goal units\n", worst);
+    assert_true(worst <= 1.0);
 }
 
 static void test_default_table(void **state)
@@ -237,6 +271,7 @@ int main(void)
         cmocka_unit_test(test_sun_earth_axis_frame),
         cmocka_unit_test(test_hostile),
         cmocka_unit_test(test_default_table),
+        cmocka_unit_test(test_cubature_against_quadrature),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

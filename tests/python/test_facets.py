@@ -178,3 +178,36 @@ def test_cubature_nodes_are_the_mapped_gauss_rule():
             om = mpmath.pi * mpmath.sin(mpmath.pi * t) / 2 * w
             assert abs(vals[2 * i] - tau) <= 1e-20 * tau, i
             assert abs(vals[2 * i + 1] - om) <= 1e-20 * om, i
+
+
+def _specular_reference(theta, h, nrm, obs, n, n_a, n_b):
+    """The specular earthshine per unit albedo_specular by the quadrature of
+    bake/earthshine/angular.py (no runtime code): sum of L dOmega (N.omega)
+    times the normalised Phong lobe of omega's mirror image against obs."""
+    from bake.earthshine import angular
+    om, w = angular.mirrored(*angular.nodes(theta, R / (R + h), n_a, n_b))
+    ci = om @ nrm
+    refl = 2.0 * ci[:, None] * nrm[None, :] - om
+    c = np.clip(refl @ obs, 0.0, 1.0)
+    lobe = (n + 2.0) / (2.0 * math.pi) * c ** n if n > 0 else np.full_like(c, 1.0 / math.pi)
+    return float((w * np.maximum(ci, 0.0) * lobe).sum())
+
+
+@pytest.mark.parametrize("n", [0.0, 10.0, 1000.0])
+def test_specular_earthshine_against_quadrature(n):
+    # glint geometry (the observer at the mirror image of a direction into the
+    # sunlit cap) at three points: the cap cubature (n < 64) and the lobe rule
+    # (n >= 64) within 2 % of the quadrature (measured: 1.0 % at most)
+    f = T.lib().oi__plate_earth_specular
+    f.restype = C.c_double
+    f.argtypes = [C.c_double] * 4 + [C.POINTER(C.c_double)] * 2 + [C.c_double]
+    for theta, h, nrm, v in ((0.7, 800.0, [0.3, -0.2, -0.9], [0.1, 0.05, -1.0]),
+                             (1.45, 420.0, [-0.5, 0.3, -0.6], [0.3, -0.1, -0.8]),
+                             (0.3, 20200.0, [0.2, 0.1, -1.0], [0.02, 0.01, -1.0])):
+        nrm = np.array(nrm) / np.linalg.norm(nrm)
+        v = np.array(v) / np.linalg.norm(v)
+        obs = 2 * (v @ nrm) * nrm - v
+        got = f(math.cos(theta), math.sin(theta), h, R, T.R3(*nrm), T.R3(*obs), n)
+        n_a, n_b = (96, 400) if n < 300 else (160, 900)
+        ref = _specular_reference(theta, h, nrm, obs, n, n_a, n_b)
+        assert abs(got / ref - 1) <= 0.02, (theta, h, n, got, ref)

@@ -176,5 +176,5 @@ def test_reference_generator_lists_its_outputs():
                           "--list"], capture_output=True, text=True, check=True).stdout.split()
     assert sorted(out) == ["tests/c/ref_atmosphere.h", "tests/c/ref_earthshine.h",
                            "tests/c/ref_oblate.h", "tests/c/ref_occulters.h", "tests/c/ref_phase.h", "tests/c/ref_shadow.h",
-                           "tests/stability/vectors.h"]
+                           "tests/c/ref_sphere.h", "tests/stability/vectors.h"]
     assert all(os.path.exists(os.path.join(ROOT, p)) for p in out)

@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: MIT
 """Generate the C tests' reference vectors, one command for all of them.
 
-    python tests/ref/generate.py {earthshine,atmosphere,shadow,occulters,stability,oblate,all} [--root DIR] [--list]
+    python tests/ref/generate.py {earthshine,atmosphere,shadow,occulters,stability,oblate,sphere,all} [--root DIR] [--list]
 
   earthshine   tests/c/ref_earthshine.h    quadrature reference (bake.earthshine.reference)
   atmosphere   tests/c/ref_atmosphere.h    ray reference and the lookup's Python mirror on
@@ -13,6 +13,8 @@
   stability    tests/stability/vectors.h   mpmath at 60 digits
   oblate       tests/c/ref_oblate.h        the WGS-84 ellipsoid's shadow and its hiding the
                                            Moon, mpmath polar quadrature at 30 digits (~6 min)
+  sphere       tests/c/ref_sphere.h        a sphere's flux under earthshine, the quadrature of
+                                           bake.earthshine.angular (~5 s)
 
 --root DIR writes at the repository-relative paths under DIR (default: the
 repository); --list prints those paths, one a line, and generates nothing.
@@ -35,6 +37,7 @@ GENERATORS = {
     "occulters": ["tests/c/ref_occulters.h"],
     "stability": ["tests/stability/vectors.h"],
     "oblate": ["tests/c/ref_oblate.h"],
+    "sphere": ["tests/c/ref_sphere.h"],
 }
 
 
