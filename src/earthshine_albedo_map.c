@@ -13,6 +13,11 @@
  * patches. Below FINE times the scale two Gauss nodes suffice, else four. */
 #define GRADE OI_R(0.5)
 #define FINE OI_R(0.15)
+/* Below VFINE times the scale one node (the midpoint) per piece: its error
+ * is first order in the piece over the scale within a piece but cancels
+ * between neighbours (the field is continuous), leaving the second order
+ * over the whole cap (measured, docs/earthshine-albedo.md). */
+#define VFINE OI_R(0.03)
 /* Bound of the steps of one walk: every patch edge (a dimension is at most
  * OI_ALBEDO_MAP_MAX_DIM) and the grading (at most ~2 log(pi / h) / log 1.5
  * steps, 150 at h = 1e-12 Earth radii) with margin. */
@@ -177,7 +182,9 @@ static int walk_row(const cells *q, oi_real c, oi_real sc, oi_real cc, oi_real w
         len = sc * (e - l);
         smin = base + sc * (dl < (oi_real)0 ? (-dl > (e - l) ? -dl - (e - l) : (oi_real)0) : dl);
         if (smin > (oi_real)1) smin = (oi_real)1;
-        if (len <= FINE * smin) {
+        if (len <= VFINE * smin) {
+            node(q, sc, cc, mid, wc * OI_R(2.0) * half, ti, mid * per - OI_R(0.5) - jf, v, acc);
+        } else if (len <= FINE * smin) {
             for (k = -1; k <= 1; k += 2) {
                 const oi_real lam = mid + (oi_real)k * half * GL2_X;
                 node(q, sc, cc, lam, wc * half, ti, lam * per - OI_R(0.5) - jf, v, acc);
@@ -285,7 +292,10 @@ int oi__earthshine_map_cells(const oi__albedo_field *f, const oi_real r_hat[3],
         half = OI_R(0.5) * (e - c);
         smin = q.h + (dc < (oi_real)0 ? (-dc > (e - c) ? -dc - (e - c) : (oi_real)0) : dc);
         if (smin > (oi_real)1) smin = (oi_real)1;
-        if (e - c <= FINE * smin) {
+        if (e - c <= VFINE * smin) {
+            st = row(&q, mid, OI_R(2.0) * half, acc);
+            if (st < 0) return st;
+        } else if (e - c <= FINE * smin) {
             for (k = -1; k <= 1; k += 2) {
                 st = row(&q, mid + (oi_real)k * half * GL2_X, half, acc);
                 if (st < 0) return st;
