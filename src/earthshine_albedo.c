@@ -192,39 +192,30 @@ static void local_frame(const oi_real r_hat[3], const oi_real s_hat[3], frame *g
     if (g->sin_t < (oi_real)0) g->sin_t = (oi_real)0;
 }
 
-int oi__earthshine_albedo(const oi__albedo_field *f, const oi_real r_hat[3],
-                          const oi_real s_hat[3], oi_real x, const oi_real *obs_hat,
-                          oi_real *albedo, oi_real dir[3], oi_real *shape_add)
+/* The zonal field's sums by the cubature, added to *acc; a frame of its
+ * own, so that a map's deeper chain does not carry it (make stack). */
+static OI_NOINLINE int cubature(const oi__albedo_field *f, const oi_real r_hat[3],
+                                const oi_real s_hat[3], oi_real x, const oi_real *obs_hat,
+                                oi_real a_ref, sums *acc)
 {
     frame g;
-    sums acc;
-    oi_real sin_w, d, m[3], len;
-    int st, i;
-
-    *albedo = (oi_real)0;
-    *shape_add = (oi_real)0;
+    oi_real sin_w;
+    int st = OI_OK;
     local_frame(r_hat, s_hat, &g);
     g.x = x;
     sin_w = OI_SQRT(((oi_real)1 - x) * ((oi_real)1 + x));
     g.w = OI_ATAN2(sin_w, x);
     g.obs = obs_hat;
     g.q = &rule_smooth;
-    st = oi__albedo_at(f, r_hat, &g.a_ref);
-    if (st < 0) return st;
-    memset(&acc, 0, sizeof acc);
-
-    if (f->model == OI_ALBEDO_MAP) {
-        /* a map: its bilinear patches one by one (src/earthshine_albedo_map.c) */
-        st = oi__earthshine_map_cells(f, r_hat, s_hat, x, obs_hat, g.a_ref, &acc);
-        if (st < 0) return st;
-    } else if (g.cos_t >= sin_w) {
+    g.a_ref = a_ref;
+    if (g.cos_t >= sin_w) {
         /* the whole cap is lit: a smooth periodic integrand in beta */
         const oi_real step = OI_R(2.0) * OI_PI_R / (oi_real)g.q->ring;
         int k;
         for (k = 0; k < g.q->ring; k++) {
             oi_real sb, cb;
             OI_SINCOS(step * (oi_real)k, &sb, &cb);
-            st = ray_fan(f, &g, cb, sb, step, &acc);
+            st = ray_fan(f, &g, cb, sb, step, acc);
             if (st < 0) return st;
         }
     } else if (g.cos_t > -sin_w) {
@@ -236,19 +227,40 @@ int oi__earthshine_albedo(const oi__albedo_field *f, const oi_real r_hat[3],
         if (ck > (oi_real)1) ck = (oi_real)1;
         if (ck < (oi_real)-1) ck = (oi_real)-1;
         bk = OI_ATAN2(OI_SQRT(((oi_real)1 - ck) * ((oi_real)1 + ck)), ck);
-        st = azimuth_segment(f, &g, -bk, bk, &acc);
+        st = azimuth_segment(f, &g, -bk, bk, acc);
         if (st == OI_OK && g.cos_t > (oi_real)0)
-            st = azimuth_segment(f, &g, bk, OI_R(2.0) * OI_PI_R - bk, &acc);
-        if (st < 0) return st;
+            st = azimuth_segment(f, &g, bk, OI_R(2.0) * OI_PI_R - bk, acc);
     }
+    return st;
+}
+
+int oi__earthshine_albedo(const oi__albedo_field *f, const oi_real r_hat[3],
+                          const oi_real s_hat[3], oi_real x, const oi_real *obs_hat,
+                          oi_real *albedo, oi_real dir[3], oi_real *shape_add)
+{
+    sums acc;
+    oi_real a_ref, d, m[3], len;
+    int st, i;
+
+    *albedo = (oi_real)0;
+    *shape_add = (oi_real)0;
+    st = oi__albedo_at(f, r_hat, &a_ref);
+    if (st < 0) return st;
+    memset(&acc, 0, sizeof acc);
+    /* a map: its bilinear patches one by one (src/earthshine_albedo_map.c) */
+    if (f->model == OI_ALBEDO_MAP)
+        st = oi__earthshine_map_cells(f, r_hat, s_hat, x, obs_hat, a_ref, &acc);
+    else
+        st = cubature(f, r_hat, s_hat, x, obs_hat, a_ref, &acc);
+    if (st < 0) return st;
     /* nothing lit, or a uniform field where the cubature looked: the uniform
      * sphere's answer with the reference albedo, bit for bit */
     if (!(acc.s0 > (oi_real)0) || !acc.varies) {
-        *albedo = g.a_ref;
+        *albedo = a_ref;
         return OI_OK;
     }
     d = acc.s1 / acc.s0; /* mean albedo less the reference */
-    *albedo = g.a_ref + d;
+    *albedo = a_ref + d;
     if (*albedo < (oi_real)0) *albedo = (oi_real)0;
     if (*albedo > (oi_real)1) *albedo = (oi_real)1;
     if (!(*albedo > (oi_real)0)) return OI_OK;

@@ -23,6 +23,14 @@
  * steps, 150 at h = 1e-12 Earth radii) with margin. */
 #define MAX_STEPS (OI_ALBEDO_MAP_MAX_DIM + 512)
 
+/* GCC and clang: the node folded into its row's frame (one frame's saved
+ * registers instead of two; make stack) */
+#if defined(__GNUC__)
+#define NODE_INLINE __attribute__((always_inline)) inline
+#else
+#define NODE_INLINE inline
+#endif
+
 /* Gauss-Legendre of 2 and 4 nodes on [-1, 1] (Abramowitz & Stegun 1964,
  * table 25.4): 1 / sqrt(3); the 4-point positive half. */
 #define GL2_X OI_R(0.57735026918962576)
@@ -91,7 +99,7 @@ static int value(const oi__albedo_field *f, int i, int j, oi_real *v)
 /* One longitude node of weight wt on the row (sin c, cos c) of the bilinear
  * patch (v00 .. v11, ti): the kernel K = cos(i) cos(e) / d^2 dA and its
  * moments. */
-static void node(const cells *q, oi_real sc, oi_real cc, oi_real lam, oi_real wt, oi_real ti,
+static NODE_INLINE void node(const cells *q, oi_real sc, oi_real cc, oi_real lam, oi_real wt, oi_real ti,
                  oi_real tj, const oi_real v[4], oi__albedo_sums *acc)
 {
     oi_real sl, cl, p[3], t[3], ci, ce, d2, d, kw, a, da, om[3];
