@@ -31,11 +31,32 @@
 #define NODE_INLINE inline
 #endif
 
-/* Gauss-Legendre of 2 and 4 nodes on [-1, 1] (Abramowitz & Stegun 1964,
- * table 25.4): 1 / sqrt(3); the 4-point positive half. */
+/* Gauss-Legendre of 1, 2 and 4 nodes on [-1, 1] (Abramowitz & Stegun 1964,
+ * table 25.4: 1 / sqrt(3); the 4-point nodes and weights), one table so
+ * that each walk has one loop. */
 #define GL2_X OI_R(0.57735026918962576)
-static const oi_real gl4_x[2] = {OI_R(0.33998104358485626), OI_R(0.86113631159405258)};
-static const oi_real gl4_w[2] = {OI_R(0.65214515486254614), OI_R(0.34785484513745386)};
+#define GL4_X0 OI_R(0.33998104358485626)
+#define GL4_X1 OI_R(0.86113631159405258)
+#define GL4_W0 OI_R(0.65214515486254614)
+#define GL4_W1 OI_R(0.34785484513745386)
+static const oi_real gl_x[7] = {(oi_real)0, -GL2_X, GL2_X, -GL4_X1, -GL4_X0, GL4_X0, GL4_X1};
+static const oi_real gl_w[7] = {OI_R(2.0), OI_R(1.0), OI_R(1.0), GL4_W1, GL4_W0, GL4_W0, GL4_W1};
+
+/* The rule of a piece of length len where the kernel's scale is at least
+ * smin: its first node in gl_x and its count. */
+static int rule_of(oi_real len, oi_real smin, int *n)
+{
+    if (len <= VFINE * smin) {
+        *n = 1;
+        return 0;
+    }
+    if (len <= FINE * smin) {
+        *n = 2;
+        return 1;
+    }
+    *n = 4;
+    return 3;
+}
 
 /* The geometry in the Earth-fixed frame (x towards Greenwich, z the
  * rotation axis): target, Sun and observer directions, 1 / x the target's
@@ -153,7 +174,7 @@ static int walk_row(const cells *q, oi_real c, oi_real sc, oi_real cc, oi_real w
     int n;
     for (n = 0; n < MAX_STEPS && l < l1; n++) {
         oi_real u = l * per - OI_R(0.5), e, next, dl, base, s, mid, half, jf, v[4], len, smin;
-        int j0, j1, k;
+        int j0, j1, k, k0, nk;
         /* the next column centre after l */
         next = (OI_FLOOR(u) + (oi_real)1 + OI_R(0.5)) / per;
         if (!(next > l)) next = (OI_FLOOR(u) + OI_R(2.5)) / per;
@@ -190,20 +211,10 @@ static int walk_row(const cells *q, oi_real c, oi_real sc, oi_real cc, oi_real w
         len = sc * (e - l);
         smin = base + sc * (dl < (oi_real)0 ? (-dl > (e - l) ? -dl - (e - l) : (oi_real)0) : dl);
         if (smin > (oi_real)1) smin = (oi_real)1;
-        if (len <= VFINE * smin) {
-            node(q, sc, cc, mid, wc * OI_R(2.0) * half, ti, mid * per - OI_R(0.5) - jf, v, acc);
-        } else if (len <= FINE * smin) {
-            for (k = -1; k <= 1; k += 2) {
-                const oi_real lam = mid + (oi_real)k * half * GL2_X;
-                node(q, sc, cc, lam, wc * half, ti, lam * per - OI_R(0.5) - jf, v, acc);
-            }
-        } else {
-            for (k = 0; k < 4; k++) {
-                const oi_real t = (k & 1 ? (oi_real)1 : (oi_real)-1) * gl4_x[k >> 1];
-                const oi_real lam = mid + half * t;
-                node(q, sc, cc, lam, wc * half * gl4_w[k >> 1], ti, lam * per - OI_R(0.5) - jf, v,
-                     acc);
-            }
+        k0 = rule_of(len, smin, &nk);
+        for (k = k0; k < k0 + nk; k++) {
+            const oi_real lam = mid + half * gl_x[k];
+            node(q, sc, cc, lam, wc * half * gl_w[k], ti, lam * per - OI_R(0.5) - jf, v, acc);
         }
         l = e;
     }
@@ -211,8 +222,9 @@ static int walk_row(const cells *q, oi_real c, oi_real sc, oi_real cc, oi_real w
 }
 
 /* One colatitude node c of weight wc: the lit visible longitudes of its row
- * (the intersection of two arcs, at most two intervals) walked. */
-static int row(const cells *q, oi_real c, oi_real wc, oi__albedo_sums *acc)
+ * (the intersection of two arcs, at most two intervals) walked; a frame of
+ * its own (the walk's locals are not live during the colatitude loop's). */
+static OI_NOINLINE int row(const cells *q, oi_real c, oi_real wc, oi__albedo_sums *acc)
 {
     const oi__albedo_field *f = q->f;
     oi_real sc, cc, v0, vl, l0, ll, d, fi, ti, lo, hi;
@@ -260,6 +272,7 @@ int oi__earthshine_map_cells(const oi__albedo_field *f, const oi_real r_hat[3],
     to_fixed(f, r_hat, q.r);
     to_fixed(f, s_hat, q.s);
     q.has_obs = obs_hat != NULL;
+    q.o[0] = q.o[1] = q.o[2] = (oi_real)0;
     if (q.has_obs) to_fixed(f, obs_hat, q.o);
     q.x = x;
     q.rt = (oi_real)1 / x;
@@ -279,7 +292,7 @@ int oi__earthshine_map_cells(const oi__albedo_field *f, const oi_real r_hat[3],
     for (n = 0; n < MAX_STEPS && c < c_hi; n++) {
         const oi_real dc = c - q.c_r;
         oi_real e, s, mid, half, smin, u;
-        int k;
+        int k, k0, nk;
         /* the next row centre after c */
         u = OI_FLOOR(c / row_h - OI_R(0.5));
         e = (u + OI_R(1.5)) * row_h;
@@ -300,20 +313,10 @@ int oi__earthshine_map_cells(const oi__albedo_field *f, const oi_real r_hat[3],
         half = OI_R(0.5) * (e - c);
         smin = q.h + (dc < (oi_real)0 ? (-dc > (e - c) ? -dc - (e - c) : (oi_real)0) : dc);
         if (smin > (oi_real)1) smin = (oi_real)1;
-        if (e - c <= VFINE * smin) {
-            st = row(&q, mid, OI_R(2.0) * half, acc);
+        k0 = rule_of(e - c, smin, &nk);
+        for (k = k0; k < k0 + nk; k++) {
+            st = row(&q, mid + half * gl_x[k], half * gl_w[k], acc);
             if (st < 0) return st;
-        } else if (e - c <= FINE * smin) {
-            for (k = -1; k <= 1; k += 2) {
-                st = row(&q, mid + (oi_real)k * half * GL2_X, half, acc);
-                if (st < 0) return st;
-            }
-        } else {
-            for (k = 0; k < 4; k++) {
-                const oi_real t = (k & 1 ? (oi_real)1 : (oi_real)-1) * gl4_x[k >> 1];
-                st = row(&q, mid + half * t, half * gl4_w[k >> 1], acc);
-                if (st < 0) return st;
-            }
         }
         c = e;
     }
