@@ -6,7 +6,7 @@
 
 #ifndef OI_NO_ALBEDO_MODELS
 
-#define TWO_PI_R (OI_R(2.0) * OI_PI_R)
+#define FULL_TURN (OI_R(2.0) * OI_PI_R)
 /* An interval spans at most GRADE times the kernel's local scale (the
  * distance from the nadir plus the altitude, at most one radian): the
  * nadir's peak is graded geometrically, the rest cut by the field's
@@ -93,14 +93,14 @@ static int arc(oi_real a, oi_real b, oi_real centre, oi_real *start, oi_real *le
     if (!(a > (oi_real)0)) {
         if (!(b <= (oi_real)0)) return 0;
         *start = centre - OI_PI_R;
-        *len = TWO_PI_R;
+        *len = FULL_TURN;
         return 1;
     }
     k = b / a;
     if (!(k < (oi_real)1)) return 0;
     if (k <= (oi_real)-1) {
         *start = centre - OI_PI_R;
-        *len = TWO_PI_R;
+        *len = FULL_TURN;
         return 1;
     }
     half = OI_ATAN2(OI_SQRT(((oi_real)1 - k) * ((oi_real)1 + k)), k);
@@ -168,7 +168,7 @@ static int walk_row(const cells *q, oi_real c, oi_real sc, oi_real cc, oi_real w
                     oi_real ti, oi_real l0, oi_real l1, oi__albedo_sums *acc)
 {
     const oi__albedo_field *f = q->f;
-    const oi_real per = (oi_real)f->n_lon / TWO_PI_R; /* columns per radian */
+    const oi_real per = (oi_real)f->n_lon / FULL_TURN; /* columns per radian */
     const oi_real dc = OI_FABS(c - q->c_r);
     oi_real l = l0;
     int n;
@@ -181,7 +181,7 @@ static int walk_row(const cells *q, oi_real c, oi_real sc, oi_real cc, oi_real w
         e = next < l1 ? next : l1;
         /* grading: the longitude from the nadir's, in (-pi, pi] */
         dl = l - q->lam_r;
-        dl -= TWO_PI_R * OI_FLOOR(dl / TWO_PI_R + OI_R(0.5));
+        dl -= FULL_TURN * OI_FLOOR(dl / FULL_TURN + OI_R(0.5));
         base = q->h + dc;
         if (dl < (oi_real)0) {
             /* towards the nadir: it is a break, and the step ends at no
@@ -249,9 +249,9 @@ static OI_NOINLINE int row(const cells *q, oi_real c, oi_real wc, oi__albedo_sum
     if (!(ti >= (oi_real)0 && ti <= (oi_real)1)) ti = (oi_real)0;
     /* the lit arc relative to the visible one's start */
     d = l0 - v0;
-    d -= TWO_PI_R * OI_FLOOR(d / TWO_PI_R);
+    d -= FULL_TURN * OI_FLOOR(d / FULL_TURN);
     for (k = 0; k < 2; k++) {
-        const oi_real a = d - (oi_real)k * TWO_PI_R;
+        const oi_real a = d - (oi_real)k * FULL_TURN;
         lo = a > (oi_real)0 ? a : (oi_real)0;
         hi = a + ll < vl ? a + ll : vl;
         if (!(hi > lo)) continue;
