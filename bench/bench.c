@@ -46,6 +46,10 @@
  *   all_batch_irradiance  the same, mask 0 (the irradiances at the target)
  *   all_batch_full  the same, OI_BATCH_SCENE_ALL (every output of oi_illuminate)
  *   earthshine_batch  oi_earthshine_batch (as earthshine)
+ *   sun_earth_knocke, sun_earth_map  as sun_earth under the Knocke albedo
+ *                  field and a 1-degree map (docs/earthshine-albedo.md);
+ *                  sun_earth_map_9x18 and sun_earth_map_q the same with
+ *                  20-degree and 0.25-degree maps
  * The batch configurations make one call over the mix (or over its lit,
  * penumbra or umbra scenes); costs are per scene.
  * Output: `name value unit` lines. Timing with clock_gettime(CLOCK_MONOTONIC)
@@ -82,7 +86,7 @@ enum { C_ALL, C_SUN, C_SUN_EARTH, C_ALL_EXPOSE, C_SUN_FRACTION, C_EARTHSHINE, C_
        C_SUN_FRACTION_WGS84, C_ALL_WGS84,
        C_SUN_FRACTION_BATCH, C_SUN_FRACTION_BATCH_ALL, C_ALL_BATCH, C_ALL_BATCH_OBSERVER,
        C_ALL_BATCH_IRRADIANCE, C_ALL_BATCH_FULL, C_EARTHSHINE_BATCH,
-       C_SUN_EARTH_KNOCKE, C_SUN_EARTH_MAP, C_SUN_EARTH_TABLE, C_N };
+       C_SUN_EARTH_KNOCKE, C_SUN_EARTH_MAP, C_SUN_EARTH_TABLE, C_SUN_EARTH_MAP_9X18, C_SUN_EARTH_MAP_Q, C_N };
 static const char *const config_name[C_N] = {"all",          "sun",        "sun_earth",
                                              "all_expose",   "sun_fraction", "earthshine",
                                              "earthshine_lambert", "sun_moon", "sun_earth_mean",
@@ -93,13 +97,34 @@ static const char *const config_name[C_N] = {"all",          "sun",        "sun_
                                              "sun_fraction_batch_all", "all_batch",
                                              "all_batch_observer", "all_batch_irradiance",
                                              "all_batch_full", "earthshine_batch", "sun_earth_knocke",
-                                             "sun_earth_map", "sun_earth_table"};
+                                             "sun_earth_map", "sun_earth_table", "sun_earth_map_9x18",
+                                             "sun_earth_map_q"};
 
 /* the albedo map of sun_earth_map: 1-degree cells (a CERES grid's size),
  * a smooth zonal and tesseral pattern (filled by setup) */
 #define MAP_LAT 180
 #define MAP_LON 360
 static float albedo_map[MAP_LAT * MAP_LON];
+/* the maps of sun_earth_map_9x18 (20-degree cells) and sun_earth_map_q
+ * (0.25-degree cells), the same pattern: the map's cost grows with the cells
+ * under the lit visible cap */
+#define MAP9_LAT 9
+#define MAP9_LON 18
+#define MAPQ_LAT 720
+#define MAPQ_LON 1440
+static float albedo_map9[MAP9_LAT * MAP9_LON];
+static float albedo_mapq[MAPQ_LAT * MAPQ_LON];
+static void fill_map(float *a, int n_lat, int n_lon)
+{
+    int i, k;
+    for (i = 0; i < n_lat; i++)
+        for (k = 0; k < n_lon; k++) {
+            const double lat = 1.5707963267948966 - (i + 0.5) * 3.14159265358979323846 / n_lat;
+            const double lon = (k + 0.5) * 6.283185307179586 / n_lon;
+            a[i * n_lon + k] =
+                (float)(0.3 + 0.2 * sin(lat) * sin(lat) + 0.1 * cos(lat) * cos(lon - 1.0));
+        }
+}
 
 /* The batch configurations' arrays: the scenes of the mix (or of one
  * lighting class), packed (pack()). */
@@ -116,6 +141,8 @@ static void setup(void)
 {
     int i, k;
     bench_make_scenes(raw);
+    fill_map(albedo_map9, MAP9_LAT, MAP9_LON);
+    fill_map(albedo_mapq, MAPQ_LAT, MAPQ_LON);
     for (i = 0; i < MAP_LAT; i++)
         for (k = 0; k < MAP_LON; k++) {
             const double lat = 1.5707963267948966 - (i + 0.5) * 3.14159265358979323846 / MAP_LAT;
@@ -211,7 +238,7 @@ static double run_config(int cfg)
 {
     static oi_illum il;
     static oi_exposure ex;
-    oi_model lambert, mean, wgs84, knocke, map, table;
+    oi_model lambert, mean, wgs84, knocke, map, table, map9, mapq;
     oi_real phi, psi;
     double acc = 0.0;
     int i;
@@ -235,6 +262,14 @@ static double run_config(int cfg)
     map.albedo_map = albedo_map;
     map.albedo_map_n_lat = MAP_LAT;
     map.albedo_map_n_lon = MAP_LON;
+    map9 = map;
+    map9.albedo_map = albedo_map9;
+    map9.albedo_map_n_lat = MAP9_LAT;
+    map9.albedo_map_n_lon = MAP9_LON;
+    mapq = map;
+    mapq.albedo_map = albedo_mapq;
+    mapq.albedo_map_n_lat = MAPQ_LAT;
+    mapq.albedo_map_n_lon = MAPQ_LON;
     for (i = 0; i < BENCH_NSCENES; i++) {
         oi_scene *s = &scenes[i];
         if (only_light >= 0 && raw[i].light != only_light) continue;
@@ -263,8 +298,14 @@ static double run_config(int cfg)
             break;
         case C_SUN_EARTH_KNOCKE:
         case C_SUN_EARTH_MAP:
+        case C_SUN_EARTH_MAP_9X18:
+        case C_SUN_EARTH_MAP_Q:
             s->terms = OI_TERM_SUN | OI_TERM_EARTH;
-            (void)oi_illuminate(s, cfg == C_SUN_EARTH_KNOCKE ? &knocke : &map, &il);
+            (void)oi_illuminate(s, cfg == C_SUN_EARTH_KNOCKE ? &knocke
+                                   : cfg == C_SUN_EARTH_MAP_9X18 ? &map9
+                                   : cfg == C_SUN_EARTH_MAP_Q   ? &mapq
+                                                                : &map,
+                                &il);
             acc += (double)il.flux_obs;
             break;
         case C_SUN_EARTH_MEAN:
@@ -349,20 +390,22 @@ static int do_time(int reps)
     if (t == NULL) return 1;
     for (c = 0; c < C_N; c++) {
         double t0, per;
+        /* the 0.25-degree map's pass lasts ~1 s: five samples */
+        const int n_rep = c == C_SUN_EARTH_MAP_Q && reps > 5 ? 5 : reps;
         missing_count = 0;
         /* inner passes so that one sample lasts >= ~200 microseconds */
         t0 = now_ns();
         sink = run_config(c);
         per = now_ns() - t0;
         inner = per > 0 ? (int)(2e5 / per) + 1 : 1000;
-        for (r = 0; r < reps; r++) {
+        for (r = 0; r < n_rep; r++) {
             int k;
             t0 = now_ns();
             for (k = 0; k < inner; k++) sink = run_config(c);
             t[r] = (now_ns() - t0) / ((double)inner * BENCH_NSCENES);
         }
-        qsort(t, (size_t)reps, sizeof *t, cmp_double);
-        printf("bench.%s.%s.ns_median %.1f ns\n", PREC, config_name[c], t[reps / 2]);
+        qsort(t, (size_t)n_rep, sizeof *t, cmp_double);
+        printf("bench.%s.%s.ns_median %.1f ns\n", PREC, config_name[c], t[n_rep / 2]);
         printf("bench.%s.%s.ns_min %.1f ns\n", PREC, config_name[c], t[0]);
         if (missing_count) printf("bench.%s.%s.incomplete 1 flag  # a stub ran\n", PREC, config_name[c]);
     }

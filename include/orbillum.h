@@ -218,7 +218,9 @@ typedef struct oi_model {
  * from the frame's x axis, about its z axis (the Earth's rotation angle,
  * or the Greenwich sidereal time for a TEME frame). Every value a call
  * reads is checked (NaN or outside [0, 1]: OI_ERR_ALBEDO); the array is
- * never written. albedo_model and the map's description are checked by the
+ * never written. The field is integrated patch by patch over the lit
+ * visible cap, so a call's cost grows with the cells under it
+ * (docs/earthshine-albedo.md, "Cost"). albedo_model and the map's description are checked by the
  * functions that read them, oi_illuminate and oi_illuminate_batch (an
  * unknown model, a NULL map or a dimension out of range: OI_ERR_MODEL);
  * the others ignore them.

@@ -1,16 +1,17 @@
 /* SPDX-License-Identifier: MIT */
 /* earthshine_albedo.c: earthshine under a non-uniform albedo field, the
  * weighted mean albedo of the lit visible cap and the field's change of the
- * mean direction and of a sphere's reflection, from a fixed cubature used
- * as a control variate on the uniform tables (docs/earthshine-albedo.md). */
+ * mean direction and of a sphere's reflection, from a fixed cubature (the
+ * zonal model) or the map's patches used as a control variate on the
+ * uniform tables (docs/earthshine-albedo.md). */
 #include "oi_internal.h"
 
 #ifndef OI_NO_ALBEDO_MODELS
 
 #define HALF_PI_R ((oi_real)(0.5 * OI_PI))
 
-/* Gauss-Legendre nodes (positive half) and weights on [-1, 1] of 8, 16 and
- * 32 points (Abramowitz & Stegun 1964, table 25.4; the digits of numpy's
+/* Gauss-Legendre nodes (positive half) and weights on [-1, 1] of 8 and 16
+ * points (Abramowitz & Stegun 1964, table 25.4; the digits of numpy's
  * polynomial.legendre.leggauss; the rules' exactness on polynomials is
  * tested through the uniform sphere, tests/python/test_albedo_models.py). */
 #define N_E 8
@@ -27,32 +28,17 @@ static const oi_real gl16_w[N_B / 2] = {
     OI_R(0.18945061045506864), OI_R(0.18260341504492364), OI_R(0.16915651939500265),
     OI_R(0.14959598881657671), OI_R(0.12462897125553407), OI_R(0.095158511682492605),
     OI_R(0.062253523938647456), OI_R(0.027152459411754176)};
-static const oi_real gl32_x[16] = {
-    OI_R(0.048307665687738324), OI_R(0.14447196158279649), OI_R(0.23928736225213706),
-    OI_R(0.33186860228212767), OI_R(0.42135127613063533), OI_R(0.50689990893222936),
-    OI_R(0.5877157572407623), OI_R(0.66304426693021523), OI_R(0.73218211874028971),
-    OI_R(0.79448379596794239), OI_R(0.84936761373256997), OI_R(0.89632115576605209),
-    OI_R(0.93490607593773967), OI_R(0.96476225558750639), OI_R(0.98561151154526838),
-    OI_R(0.99726386184948157)};
-static const oi_real gl32_w[16] = {
-    OI_R(0.096540088514727659), OI_R(0.095638720079274708), OI_R(0.093844399080804511),
-    OI_R(0.09117387869576378), OI_R(0.087652093004403783), OI_R(0.083311924226946707),
-    OI_R(0.078193895787070228), OI_R(0.072345794108848338), OI_R(0.065822222776361683),
-    OI_R(0.058684093478535565), OI_R(0.050998059262376091), OI_R(0.042835898022226836),
-    OI_R(0.034273862913021765), OI_R(0.025392065309262024), OI_R(0.016274394730905743),
-    OI_R(0.0070186100094705058)};
-
 /* A rule: Gauss-Legendre of n nodes (the positive half x, w) in the
  * emission angle and in each azimuth segment, and ring azimuths of the
  * periodic trapezoid rule over a fully lit cap. The Knocke field is a
- * quadratic in the height above the equator and needs few; a map's
- * bilinear cells have kinks along every row and column of centres. */
+ * quadratic in the height above the equator and needs few (a map's bilinear
+ * patches, with kinks along every row and column of centres, are
+ * integrated one by one instead). */
 typedef struct rule {
     const oi_real *ex, *ew, *bx, *bw;
     int ne, nb, ring;
 } rule;
 static const rule rule_smooth = {gl8_x, gl8_w, gl16_x, gl16_w, N_E, N_B, 32};
-static const rule rule_map = {gl16_x, gl16_w, gl32_x, gl32_w, 16, 32, 64};
 
 /* node k of an n-point rule from its positive half */
 static oi_real node_x(const oi_real *x, int n, int k)
@@ -64,14 +50,7 @@ static oi_real node_w(const oi_real *w, int n, int k)
     return k < n / 2 ? w[n / 2 - 1 - k] : w[k - n / 2];
 }
 
-/* Sums of the cubature: weights K (the uniform sphere's earthshine), K da
- * (da the albedo less the reference), the same times the direction omega
- * and times the sphere's phase towards the observer. */
-typedef struct sums {
-    oi_real s0, s1, q, p;
-    oi_real w[3], v[3];
-    int varies;
-} sums;
+typedef oi__albedo_sums sums;
 
 /* The geometry fixed for one call: the local frame (r the zenith, ex
  * towards the Sun's side, ey normal), theta's cosine and sine, x = R / r
@@ -213,27 +192,22 @@ static void local_frame(const oi_real r_hat[3], const oi_real s_hat[3], frame *g
     if (g->sin_t < (oi_real)0) g->sin_t = (oi_real)0;
 }
 
-int oi__earthshine_albedo(const oi__albedo_field *f, const oi_real r_hat[3],
-                          const oi_real s_hat[3], oi_real x, const oi_real *obs_hat,
-                          oi_real *albedo, oi_real dir[3], oi_real *shape_add)
+/* The zonal field's sums by the cubature, added to *acc; a frame of its
+ * own, so that a map's deeper chain does not carry it (make stack). */
+static OI_NOINLINE int cubature(const oi__albedo_field *f, const oi_real r_hat[3],
+                                const oi_real s_hat[3], oi_real x, const oi_real *obs_hat,
+                                oi_real a_ref, sums *acc)
 {
     frame g;
-    sums acc;
-    oi_real sin_w, d, m[3], len;
-    int st, i;
-
-    *albedo = (oi_real)0;
-    *shape_add = (oi_real)0;
+    oi_real sin_w;
+    int st = OI_OK;
     local_frame(r_hat, s_hat, &g);
     g.x = x;
     sin_w = OI_SQRT(((oi_real)1 - x) * ((oi_real)1 + x));
     g.w = OI_ATAN2(sin_w, x);
     g.obs = obs_hat;
-    g.q = f->model == OI_ALBEDO_MAP ? &rule_map : &rule_smooth;
-    st = oi__albedo_at(f, r_hat, &g.a_ref);
-    if (st < 0) return st;
-    memset(&acc, 0, sizeof acc);
-
+    g.q = &rule_smooth;
+    g.a_ref = a_ref;
     if (g.cos_t >= sin_w) {
         /* the whole cap is lit: a smooth periodic integrand in beta */
         const oi_real step = OI_R(2.0) * OI_PI_R / (oi_real)g.q->ring;
@@ -241,7 +215,7 @@ int oi__earthshine_albedo(const oi__albedo_field *f, const oi_real r_hat[3],
         for (k = 0; k < g.q->ring; k++) {
             oi_real sb, cb;
             OI_SINCOS(step * (oi_real)k, &sb, &cb);
-            st = ray_fan(f, &g, cb, sb, step, &acc);
+            st = ray_fan(f, &g, cb, sb, step, acc);
             if (st < 0) return st;
         }
     } else if (g.cos_t > -sin_w) {
@@ -253,19 +227,40 @@ int oi__earthshine_albedo(const oi__albedo_field *f, const oi_real r_hat[3],
         if (ck > (oi_real)1) ck = (oi_real)1;
         if (ck < (oi_real)-1) ck = (oi_real)-1;
         bk = OI_ATAN2(OI_SQRT(((oi_real)1 - ck) * ((oi_real)1 + ck)), ck);
-        st = azimuth_segment(f, &g, -bk, bk, &acc);
+        st = azimuth_segment(f, &g, -bk, bk, acc);
         if (st == OI_OK && g.cos_t > (oi_real)0)
-            st = azimuth_segment(f, &g, bk, OI_R(2.0) * OI_PI_R - bk, &acc);
-        if (st < 0) return st;
+            st = azimuth_segment(f, &g, bk, OI_R(2.0) * OI_PI_R - bk, acc);
     }
+    return st;
+}
+
+int oi__earthshine_albedo(const oi__albedo_field *f, const oi_real r_hat[3],
+                          const oi_real s_hat[3], oi_real x, const oi_real *obs_hat,
+                          oi_real *albedo, oi_real dir[3], oi_real *shape_add)
+{
+    sums acc;
+    oi_real a_ref, d, m[3], len;
+    int st, i;
+
+    *albedo = (oi_real)0;
+    *shape_add = (oi_real)0;
+    st = oi__albedo_at(f, r_hat, &a_ref);
+    if (st < 0) return st;
+    memset(&acc, 0, sizeof acc);
+    /* a map: its bilinear patches one by one (src/earthshine_albedo_map.c) */
+    if (f->model == OI_ALBEDO_MAP)
+        st = oi__earthshine_map_cells(f, r_hat, s_hat, x, obs_hat, a_ref, &acc);
+    else
+        st = cubature(f, r_hat, s_hat, x, obs_hat, a_ref, &acc);
+    if (st < 0) return st;
     /* nothing lit, or a uniform field where the cubature looked: the uniform
      * sphere's answer with the reference albedo, bit for bit */
     if (!(acc.s0 > (oi_real)0) || !acc.varies) {
-        *albedo = g.a_ref;
+        *albedo = a_ref;
         return OI_OK;
     }
     d = acc.s1 / acc.s0; /* mean albedo less the reference */
-    *albedo = g.a_ref + d;
+    *albedo = a_ref + d;
     if (*albedo < (oi_real)0) *albedo = (oi_real)0;
     if (*albedo > (oi_real)1) *albedo = (oi_real)1;
     if (!(*albedo > (oi_real)0)) return OI_OK;

@@ -517,6 +517,23 @@ void oi__albedo_field_init(const oi_model *m, const oi_scene *s, oi__albedo_fiel
  * or outside [0, 1] (*a then 0). */
 int oi__albedo_at(const oi__albedo_field *f, const oi_real p[3], oi_real *a);
 
+/* Sums over the lit visible cap: weights K (the uniform sphere's
+ * earthshine), K da (da the albedo less the reference), the same times the
+ * direction omega (target to surface) and times the sphere's phase towards
+ * the observer; varies: some da was not 0. */
+typedef struct oi__albedo_sums {
+    oi_real s0, s1, q, p;
+    oi_real w[3], v[3];
+    int varies;
+} oi__albedo_sums;
+
+/* The sums under a map model, patch by patch of its bilinear field
+ * (src/earthshine_albedo_map.c), added to *acc (w and v in the scene's
+ * frame); a_ref the albedo da is taken from. OI_OK or OI_ERR_ALBEDO. */
+int oi__earthshine_map_cells(const oi__albedo_field *f, const oi_real r_hat[3],
+                             const oi_real s_hat[3], oi_real x, const oi_real *obs_hat,
+                             oi_real a_ref, oi__albedo_sums *acc);
+
 /* Earthshine under a non-uniform albedo field (src/earthshine_albedo.c), at
  * the target of unit position r_hat and x = R / r, the Sun in the unit
  * direction s_hat; obs_hat the unit direction to the observer or NULL.

@@ -79,10 +79,15 @@ def lambert_phase(xi):
     return (np.sin(xi) + (math.pi - xi) * np.cos(xi)) / math.pi
 
 
-def earthshine(sun, target, field, radius_km=6378.137, obs_hat=None, epsrel=1e-9):
+def earthshine(sun, target, field, radius_km=6378.137, obs_hat=None, epsrel=1e-9, panels=PANELS,
+               beta_panels=None):
     """(E, V, F): scalar irradiance per unit solar irradiance at the Earth, the
     vector irradiance (towards where the light comes from) and, with obs_hat,
-    the Lambertian sphere's flux sum of L p(xi) dOmega (else None)."""
+    the Lambertian sphere's flux sum of L p(xi) dOmega (else None). panels:
+    the Gauss panels in alpha; beta_panels: instead of the adaptive outer
+    quadrature, composite 8-point Gauss on that many equal azimuth panels
+    (for fields with a kink every degree, where quad runs out of
+    subdivisions)."""
     rn, r_hat, s_hat, ex, ey = _frame(sun, target)
     R = radius_km
     w = math.acos(R / rn)
@@ -106,11 +111,11 @@ def earthshine(sun, target, field, radius_km=6378.137, obs_hat=None, epsrel=1e-9
     def nodes(lo, hi):
         # panels uniform in tau, alpha = lo + (hi - lo) (e^{q tau} - 1) / (e^q - 1)
         q = math.log1p((hi - lo) / scale) if lo == 0.0 else 0.0
-        edges = np.linspace(0.0, 1.0, PANELS + 1)
+        edges = np.linspace(0.0, 1.0, panels + 1)
         mid = 0.5 * (edges[1:] + edges[:-1])[:, None]
         half = 0.5 * (edges[1] - edges[0])
         tau = (mid + half * _GX[None, :]).ravel()
-        wt = np.tile(half * _GW, PANELS)
+        wt = np.tile(half * _GW, panels)
         if q > 1e-6:
             g = np.expm1(q * tau) / math.expm1(q)
             dg = q * np.exp(q * tau) / math.expm1(q)
@@ -121,7 +126,7 @@ def earthshine(sun, target, field, radius_km=6378.137, obs_hat=None, epsrel=1e-9
     def inner(beta, what):
         b = lit(beta)
         if b is None:
-            return 0.0
+            return np.zeros(5) if what is None else 0.0
         alpha, wa = nodes(*b)
         u = math.cos(beta) * ex + math.sin(beta) * ey
         p = np.cos(alpha)[None, :] * r_hat[:, None] + np.sin(alpha)[None, :] * u[:, None]
@@ -130,6 +135,11 @@ def earthshine(sun, target, field, radius_km=6378.137, obs_hat=None, epsrel=1e-9
         d = np.linalg.norm(to_t, axis=0)
         ce = np.maximum(np.sum(to_t * p, axis=0) / d, 0.0)
         k = wa * field(p) * ci * ce / (math.pi * d * d) * R * R * np.sin(alpha)
+        if what is None:  # every sum
+            om = -to_t / d
+            ph = (np.sum(k * lambert_phase(np.arccos(np.clip(obs_hat @ om, -1.0, 1.0))))
+                  if obs_hat is not None else 0.0)
+            return np.array([np.sum(k), *(om @ k), ph])
         if what == 0:
             return float(np.sum(k))
         om = -to_t / d
@@ -142,6 +152,16 @@ def earthshine(sun, target, field, radius_km=6378.137, obs_hat=None, epsrel=1e-9
         val, _ = integrate.quad(inner, -math.pi, math.pi, args=(what,), epsabs=0.0,
                                 epsrel=epsrel, limit=400)
         return val
+
+    if beta_panels is not None:
+        # every sum at once, azimuth by azimuth
+        edges = np.linspace(-math.pi, math.pi, beta_panels + 1)
+        half = 0.5 * (edges[1] - edges[0])
+        tot = np.zeros(5)
+        for b0 in 0.5 * (edges[1:] + edges[:-1]):
+            for gx, gw in zip(_GX, _GW):
+                tot += half * gw * inner(b0 + half * gx, None)
+        return tot[0], tot[1:4], (tot[4] if obs_hat is not None else None)
 
     E = outer(0)
     V = np.array([outer(1), outer(2), outer(3)])
