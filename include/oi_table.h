@@ -216,8 +216,10 @@ typedef struct oi_earth_angular_table {
  * nothing is lit). The logarithm: E_sky falls by orders of magnitude over a
  * few degrees past the shadow edge, which a cubic follows in its logarithm.
  * Lookup: Catmull-Rom in theta (ghost nodes mirrored about theta = 0 and pi:
- * v even, psi odd) and in w (ghosts extrapolated linearly), q = exp(v) -
- * q_floor clamped at 0.
+ * v even, psi odd) and in w (ghosts extrapolated linearly), each of the four
+ * rows w_j read at theta + s (w_j - w), s = (1 - cos theta) / 2, reflected
+ * into [0, pi] (the shadow edge near theta = pi/2 + w moves with w; at a node
+ * the shift is 0), q = exp(v) - q_floor clamped at 0.
  * Lines of sight that end on the sunlit cloud deck (floor_km) are not in
  * E_sky: their light is the Earth's albedo, in earthshine.
  * theta_scale = (n_theta - 1) / pi, w_scale = (n_alt - 1) / (w_max - w_min),

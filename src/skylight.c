@@ -42,18 +42,43 @@ static oi_real column(const float *arr, int n_theta, int j, int k, oi_real sign)
     return (oi_real)arr[j * n_theta + k];
 }
 
-/* Catmull-Rom in theta (column cell i, weights wt) and in w (row cell j,
- * weights ww; ghost rows extrapolated linearly). */
-static oi_real interp2(const oi_sky_table *t, const float *arr, oi_real sign, int i,
-                       const oi_real wt[4], int j, const oi_real ww[4])
+/* Row j of arr at angle th (Catmull-Rom), th reflected into [0, pi] first:
+ * v is even about 0 and pi, psi odd, so the reflection is the function's own
+ * smooth continuation. |th| stays below 2 pi (the shift is at most 2 rows). */
+static oi_real row_at(const oi_sky_table *t, const float *arr, oi_real sign, int j, oi_real th)
+{
+    oi_real a, wt[4], out = (oi_real)0, flip = (oi_real)1;
+    int i, k;
+    if (th < (oi_real)0) {
+        th = -th;
+        flip = sign;
+    } else if (th > OI_PI_R) {
+        th = OI_R(2.0) * OI_PI_R - th;
+        flip = sign;
+    }
+    i = oi__cell_clamped(th * t->theta_scale, t->n_theta, &a);
+    oi__cr_weights(a, wt);
+    for (k = 0; k < 4; k++) out += wt[k] * column(arr, t->n_theta, j, i - 1 + k, sign);
+    return flip * out;
+}
+
+/* Catmull-Rom in w over rows j - 1 .. j + 2 (weights ww; ghost rows
+ * extrapolated linearly), each row read at theta shifted along the shadow
+ * edge: the edge lies near theta = pi/2 + w, so row j + m - 1 is read at
+ * theta + s (m - 1 - b) / w_scale with s = (1 - cos theta) / 2 (1 at the
+ * anti-solar point, 0 at the sub-solar point, where nothing moves with w).
+ * At a row (b = 0) the shift of that row is 0: the lookup hits the nodes. */
+static oi_real interp2(const oi_sky_table *t, const float *arr, oi_real sign, oi_real theta,
+                       int j, oi_real b, const oi_real ww[4])
 {
     oi_real row[4];
-    int m, k;
+    const oi_real shear = OI_R(0.5) * ((oi_real)1 - OI_COS(theta)) / t->w_scale;
+    int m;
     for (m = 0; m < 4; m++) {
         const int jj = j - 1 + m;
         row[m] = (oi_real)0;
         if (jj < 0 || jj > t->n_alt - 1) continue;
-        for (k = 0; k < 4; k++) row[m] += wt[k] * column(arr, t->n_theta, jj, i - 1 + k, sign);
+        row[m] = row_at(t, arr, sign, jj, theta + shear * ((oi_real)(m - 1) - b));
     }
     if (j - 1 < 0) row[0] = OI_R(2.0) * row[1] - row[2];
     if (j + 2 > t->n_alt - 1) row[3] = OI_R(2.0) * row[2] - row[1];
@@ -68,25 +93,22 @@ static oi_real interp2(const oi_sky_table *t, const float *arr, oi_real sign, in
 int oi__sky_lookup(const oi_sky_table *t, oi_real theta, oi_real r_km, oi_real *e_over_sun,
                    oi_real *psi)
 {
-    oi_real x, w, fw, ft, a, b, wt[4], ww[4], v, q;
-    int i, j, st = OI_OK;
+    oi_real x, w, fw, b, ww[4], v, q;
+    int j, st = OI_OK;
     x = t->earth_radius_km / r_km;
     if (!(x < (oi_real)1)) x = (oi_real)1;
     /* w = acos(x) without cancellation near x = 1 */
     w = OI_ATAN2(OI_SQRT(((oi_real)1 - x) * ((oi_real)1 + x)), x);
     if (w < t->w_min) st = OI_WARN_TABLE_RANGE;
     fw = (w - t->w_min) * t->w_scale;
-    ft = theta * t->theta_scale;
-    i = oi__cell_clamped(ft, t->n_theta, &a);
     j = oi__cell_clamped(fw, t->n_alt, &b);
-    oi__cr_weights(a, wt);
     oi__cr_weights(b, ww);
-    v = interp2(t, t->v, (oi_real)1, i, wt, j, ww);
+    v = interp2(t, t->v, (oi_real)1, theta, j, b, ww);
     /* v is at most ln(1 + q_floor) for any q <= 1 node: no overflow */
     q = OI_EXP(v) - t->q_floor;
     if (!(q > (oi_real)0)) q = (oi_real)0;
     *e_over_sun = q * x * x;
-    *psi = q > (oi_real)0 ? interp2(t, t->psi, (oi_real)-1, i, wt, j, ww) : (oi_real)0;
+    *psi = q > (oi_real)0 ? interp2(t, t->psi, (oi_real)-1, theta, j, b, ww) : (oi_real)0;
     return st;
 }
 

@@ -25,7 +25,12 @@ Sun columns come from a table of species columns over (altitude, solar zenith) a
 the scattering point, integrated by Gauss-Legendre along each Sun ray and read
 bilinearly; the view path is a midpoint rule in t with cumulative optical depth;
 the directions: Gauss-Legendre in nu on segments placed at fixed tangent heights
-around the floor's horizon, midpoints in azimuth over [0, pi] (mirror symmetry).
+around the floor's horizon and where the terminator's curves (below) touch the
+Sun-Earth plane, and Gauss-Legendre in azimuth over [0, pi] (mirror symmetry) on
+intervals split where the line's deciding point (its floor hit, or its tangent point)
+crosses the terminator and two depths past it: the lit floor's cut and the steep fall
+of the lit air over the night side sit on interval ends, where a Gauss rule does not
+see them as jumps.
 """
 from __future__ import annotations
 
@@ -38,7 +43,12 @@ from .medium import Medium, hg_phase, rayleigh_phase
 _BREAKS_BELOW = (400.0, 120.0, 40.0, 12.0, 0.0)
 _BREAKS_ABOVE = (4.0, 12.0, 25.0, 45.0, 70.0)
 N_NU_SEG = 8          # Gauss-Legendre nodes per nu segment
-N_AZ = 48             # azimuth midpoints over [0, pi]
+N_AZ = 16             # Gauss-Legendre nodes per azimuth interval
+# depths past the terminator (rad) whose curves split the azimuth: 0 (the terminator,
+# the lit floor's edge), then inside the band of lit air over the night side, whose
+# outer edge is acos(r_floor / r_top) ~ 9.5 deg for a vertical column
+NIGHT_DEPTHS = (0.0, 0.05, 0.166)
+N_BREAK_SCAN = 400    # scan steps over nu for the depth curves' touching points
 N_PATH = 192          # midpoints along a line of sight
 N_RHO = 361           # Sun-column table: altitude rows (floor .. top)
 N_VDOWN = 400         # ... columns for the Sun below the local horizon
@@ -105,21 +115,104 @@ class SunColumns:
         return out.T
 
 
-def _nu_nodes(r, med: Medium):
-    """Nadir angles and weights (sin nu dnu folded in) covering the medium."""
+def _line_point(nu, r, med: Medium):
+    """(t, |X|, hits) of the line of sight's point that decides what it sees: the hit
+    point on the floor for lines that end there, else the closest approach to the
+    Earth's centre (the tangent point)."""
+    nu = np.asarray(nu, dtype=float)
+    rt2 = (r * np.sin(nu)) ** 2
+    tc = r * np.cos(nu)
+    hits = rt2 < med.r_floor ** 2
+    t = np.where(hits, tc - np.sqrt(np.maximum(med.r_floor ** 2 - rt2, 0.0)), tc)
+    return t, np.where(hits, med.r_floor, np.sqrt(rt2)), hits
+
+
+def _depth_azimuths(theta, r, nu, med: Medium):
+    """(n_levels, n) azimuths in [0, pi] beyond which the line's point lies deeper
+    than each of NIGHT_DEPTHS past the terminator (X . s < -sin(depth) |X|). With the
+    point X = (t sin nu cos az, t sin nu sin az, r - t cos nu), X . s is
+    D cos az + z cos theta, D = t sin nu sin theta >= 0."""
+    t, rho, _ = _line_point(nu, r, med)
+    d = t * np.sin(nu) * np.sin(theta)
+    zc = (r - t * np.cos(nu)) * np.cos(theta)
+    out = []
+    for depth in NIGHT_DEPTHS:
+        num = -np.sin(depth) * rho - zc          # deeper where D cos az < num
+        c = np.where(d > 0.0, num / np.where(d > 0.0, d, 1.0), np.where(num > 0.0, 2.0, -2.0))
+        out.append(np.arccos(np.clip(c, -1.0, 1.0)))
+    return np.array(out)
+
+
+def _depth_breaks(theta, r, med: Medium):
+    """Nadir angles at which a depth curve of _depth_azimuths touches az = 0 or pi
+    (where the interval in azimuth opens or closes, with a square-root edge)."""
+    nu_top = float(np.arcsin(min(med.r_top / r, 1.0)))
+    grid = np.linspace(0.0, nu_top, N_BREAK_SCAN + 1)[1:-1]
+    out = []
+    for sgn in (1.0, -1.0):                      # az = 0 and az = pi
+        def f(nu, sgn=sgn):
+            t, rho, _ = _line_point(nu, r, med)
+            xs = (sgn * t * np.sin(nu) * np.sin(theta) +
+                  (r - t * np.cos(nu)) * np.cos(theta))
+            return xs[None] + np.sin(np.asarray(NIGHT_DEPTHS))[:, None] * np.atleast_1d(rho)[None]
+        fv = f(grid)
+        for k in range(len(NIGHT_DEPTHS)):
+            ch = np.nonzero(np.sign(fv[k, :-1]) * np.sign(fv[k, 1:]) < 0)[0]
+            for i in ch:
+                a, b = grid[i], grid[i + 1]
+                fa = fv[k, i]
+                for _ in range(60):              # bisection to ~1e-18 of the span
+                    m = 0.5 * (a + b)
+                    fm = f(m)[k, 0]
+                    if np.sign(fm) == np.sign(fa):
+                        a, fa = m, fm
+                    else:
+                        b = m
+                out.append(0.5 * (a + b))
+    return out
+
+
+def _nu_nodes(theta, r, med: Medium):
+    """Nadir angles and weights (sin nu dnu folded in) covering the medium: Gauss-
+    Legendre on segments bounded by fixed tangent heights around the floor's horizon
+    and by the nadir angles where a depth curve touches the Sun-Earth plane."""
     x, w = gauss_legendre_01(N_NU_SEG)
     rt = [max(0.0, med.r_floor - d) for d in _BREAKS_BELOW[:-1]]
     rt = [0.0] + [v for v in rt if v > 0.0] + [med.r_floor]
     rt += [min(med.r_top, med.r_floor + d) for d in _BREAKS_ABOVE] + [med.r_top]
-    nu_b = np.arcsin(np.minimum(np.array(sorted(set(rt))) / r, 1.0))
+    nu_b = list(np.arcsin(np.minimum(np.array(sorted(set(rt))) / r, 1.0)))
+    nu_b = np.unique(np.array(nu_b + _depth_breaks(theta, r, med)))
     nus, wts = [], []
     for a, b in zip(nu_b[:-1], nu_b[1:]):
-        if b <= a:
+        if b - a <= 1e-12 * max(b, 1e-300):
             continue
         nu = a + (b - a) * x
         nus.append(nu)
         wts.append((b - a) * w * np.sin(nu))
     return np.concatenate(nus), np.concatenate(wts)
+
+
+def _directions(theta, r, med: Medium):
+    """Lines of sight (nu, az) and weights (the solid angle, both azimuth halves) of
+    the direction quadrature: in azimuth, Gauss-Legendre on the intervals between the
+    depth curves (the terminator and the night depths at the line's point), only those
+    past the terminator for lines that end on the floor (the lit floor is earthshine's):
+    the cut and the steep fall of the lit air past the terminator lie on interval ends,
+    not inside them."""
+    nu, wnu = _nu_nodes(theta, r, med)
+    _, _, hits = _line_point(nu, r, med)
+    xa, wa = gauss_legendre_01(N_AZ)
+    edges = _depth_azimuths(theta, r, nu, med)                  # (L, n), ascending
+    lo = np.vstack([np.zeros_like(nu)[None], edges])            # interval starts
+    hi = np.vstack([edges, np.full_like(nu, np.pi)[None]])
+    lo[0] = np.where(hits, hi[0], lo[0])                        # lit floor: empty
+    span = hi - lo
+    keep = span > 1e-12
+    k, i = np.nonzero(keep)
+    NU = np.repeat(nu[i], N_AZ)
+    AZ = (lo[k, i][:, None] + span[k, i][:, None] * xa[None]).ravel()
+    W = ((wnu[i] * span[k, i])[:, None] * wa[None] * 2.0).ravel()
+    return NU, AZ, W
 
 
 class SingleScattering:
@@ -187,11 +280,8 @@ class SingleScattering:
         """(E_sky / E_sun, psi): scalar irradiance per unit solar irradiance and the
         mean direction's angle from the nadir towards the Sun (rad); psi = 0 where
         nothing is lit."""
-        nu, wnu = _nu_nodes(r, self.med)
-        az = (np.arange(N_AZ) + 0.5) * np.pi / N_AZ
-        NU, AZ = np.meshgrid(nu, az, indexing="ij")
+        NU, AZ, wt = _directions(theta, r, self.med)
         L = self.radiance(theta, r, NU, AZ)
-        wt = wnu[:, None] * (np.pi / N_AZ) * 2.0     # both halves of the azimuth
         e = float(np.sum(L * wt))
         vx = float(np.sum(L * wt * np.sin(NU) * np.cos(AZ)))
         vz = float(np.sum(L * wt * np.cos(NU)))       # towards the nadir

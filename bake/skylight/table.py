@@ -16,7 +16,10 @@ Stored as v = ln(q + q_floor) (q_floor = 1e-9, a millionth of the rows' peaks): 
 falls by orders of magnitude over a few degrees past the shadow edge, an exponential
 that a cubic follows in its logarithm, not in its value.
 Lookup: Catmull-Rom in theta (ghost nodes mirrored: v is even about theta = 0 and pi,
-psi odd) and in w (ghosts extrapolated linearly), q = exp(v) - q_floor clamped at 0.
+psi odd) and in w (ghosts extrapolated linearly), each of the four rows read at theta
+shifted along the shadow edge (theta + s (w_row - w), s = (1 - cos theta) / 2: the edge
+lies near theta = pi/2 + w and moves by a node per row spacing, which a cubic in w at
+fixed theta does not follow), q = exp(v) - q_floor clamped at 0.
 """
 from __future__ import annotations
 
@@ -102,13 +105,12 @@ def lookup(v, psi, spec: Spec, theta, w, q_floor):
     """The runtime's lookup (src/skylight.c) in numpy: (e_sky / E_sun, psi) at
     scalars theta in [0, pi], w in [w_min, w_max], from the stored v."""
     nt, na = spec.n_theta, spec.n_alt
-    ft = min(max(theta / math.pi * (nt - 1), 0.0), nt - 1.0)
-    i = min(int(ft), nt - 2)
-    a = ft - i
-    fw = min(max((w - spec.w_min) / (spec.w_max - spec.w_min) * (na - 1), 0.0), na - 1.0)
+    w_scale = (na - 1) / (spec.w_max - spec.w_min)
+    fw = min(max((w - spec.w_min) * w_scale, 0.0), na - 1.0)
     j = min(int(fw), na - 2)
     b = fw - j
-    wt, ww = _cr(a), _cr(b)
+    ww = _cr(b)
+    shear = 0.5 * (1.0 - math.cos(theta)) / w_scale
 
     def col(arr, row, k, odd):
         if k < 0:
@@ -117,11 +119,20 @@ def lookup(v, psi, spec: Spec, theta, w, q_floor):
             return (-1.0 if odd else 1.0) * arr[row, 2 * (nt - 1) - k]
         return arr[row, k]
 
-    def row_value(arr, row, odd):
-        return sum(wt[m] * col(arr, row, i - 1 + m, odd) for m in range(4))
+    def row_at(arr, row, th, odd):
+        flip = 1.0
+        if th < 0.0:
+            th, flip = -th, (-1.0 if odd else 1.0)
+        elif th > math.pi:
+            th, flip = 2.0 * math.pi - th, (-1.0 if odd else 1.0)
+        ft = min(max(th * ((nt - 1) / math.pi), 0.0), nt - 1.0)
+        i = min(int(ft), nt - 2)
+        wt = _cr(ft - i)
+        return flip * sum(wt[m] * col(arr, row, i - 1 + m, odd) for m in range(4))
 
     def value(arr, odd):
-        rows = [row_value(arr, jj, odd) if 0 <= jj < na else None for jj in range(j - 1, j + 3)]
+        rows = [row_at(arr, jj, theta + shear * (m - 1 - b), odd) if 0 <= jj < na else None
+                for m, jj in enumerate(range(j - 1, j + 3))]
         if rows[0] is None:
             rows[0] = 2 * rows[1] - rows[2]
         if rows[3] is None:
