@@ -92,8 +92,11 @@ int oi__model_resolve(const oi_model *in, oi_model *out)
     out->no_atmosphere = in->no_atmosphere != 0;
     out->earth_table = in->earth_table;
     out->atm_table = in->atm_table;
-    /* a caller's sky table is checked where it is used (src/skylight.c) */
+#ifndef OI_NO_SKYLIGHT
+    /* a caller's sky table is checked where it is used (src/skylight.c);
+     * without the sky light nothing reads it */
     out->sky_table = in->sky_table;
+#endif
     return OI_OK;
 }
 

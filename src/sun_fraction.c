@@ -380,11 +380,20 @@ static OI_NOINLINE void oblate_exact(const oi_real sun_km[3], const oi_real poin
  * replace the equivalent sphere's (oblate_exact); no status is positive there */
 #define GEOMETRIC_WANTS_EXACT 1
 
+/* Out of line where the ellipsoid's quadrature follows (make stack); in
+ * line without it (the Sun-only build's flash, make size). */
+#ifndef OI_NO_OBLATE
+#define GEOMETRIC_FRAME OI_NOINLINE
+#else
+#define GEOMETRIC_FRAME
+#endif
+
 /* Steps 1-3: *out zeroed, then everything but fraction_atm (the sphere's,
  * or the ellipsoid's equivalent sphere's, fractions). Returns OI_OK,
- * GEOMETRIC_WANTS_EXACT or an error status of sun_geometry. Out of line:
- * the geometry's frame is not live during the later steps. */
-static OI_NOINLINE int shadow_geometric(const oi_real sun_km[3], const oi_real point_km[3],
+ * GEOMETRIC_WANTS_EXACT or an error status of sun_geometry. Out of line
+ * with the ellipsoid: the geometry's frame is not live during the later
+ * steps. */
+static GEOMETRIC_FRAME int shadow_geometric(const oi_real sun_km[3], const oi_real point_km[3],
                                         const oi_model *m, int need_ld, oi_shadow *out)
 {
     sun_geom g;
