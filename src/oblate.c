@@ -184,10 +184,13 @@ static oi_real chord_h(oi_real x, oi_real yy)
 
 /* What the occulters cover of the chord at height y (solid angle per unit
  * y); *full: the whole chord's. */
-static oi_real chord_hidden(const cone *k, int n, oi_real y, oi_real h, oi_real *full)
+static OI_NOINLINE oi_real chord_hidden(const cone *k, int n, oi_real y, oi_real h,
+                                         oi_real *full)
 {
     const oi_real yy = (oi_real)1 + y * y;
-    oi_real a[2], b[2], hid = (oi_real)0;
+    /* zeros only for the analyser, which cannot see that nc == 2 means both
+     * covers were written */
+    oi_real a[2] = {(oi_real)0, (oi_real)0}, b[2] = {(oi_real)0, (oi_real)0}, hid = (oi_real)0;
     int i, nc = 0;
     *full = (oi_real)2 * chord_h(h, yy);
     for (i = 0; i < n; ++i)
