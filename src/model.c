@@ -107,8 +107,11 @@ int oi__model_resolve(const oi_model *in, oi_model *out)
     out->atm_table = in->atm_table;
     out->band = in->band;
     out->atm_total_table = in->atm_total_table;
-    /* a caller's sky table is checked where it is used (src/skylight.c) */
+#ifndef OI_NO_SKYLIGHT
+    /* a caller's sky table is checked where it is used (src/skylight.c);
+     * without the sky light nothing reads it */
     out->sky_table = in->sky_table;
+#endif
     return OI_OK;
 }
 

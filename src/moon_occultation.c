@@ -174,7 +174,7 @@ oi_real oi__moon_disc_visible(const oi_real point_km[3], const oi_real u_moon[3]
         else if (sep <= re - rm - margin)
             frac = (oi_real)0;
         else if (rm <= OI_R(0.5))
-            frac = oi__oblate_visible(u_moon, rm, point_km, m->earth_radius_km, NULL, (oi_real)0);
+            frac = oi__oblate_visible_earth(u_moon, rm, point_km, m->earth_radius_km);
         else
             (void)oi__disc_fractions(rm, re, sep, &frac, NULL);
     } else

@@ -184,10 +184,13 @@ static oi_real chord_h(oi_real x, oi_real yy)
 
 /* What the occulters cover of the chord at height y (solid angle per unit
  * y); *full: the whole chord's. */
-static oi_real chord_hidden(const cone *k, int n, oi_real y, oi_real h, oi_real *full)
+static OI_NOINLINE oi_real chord_hidden(const cone *k, int n, oi_real y, oi_real h,
+                                         oi_real *full)
 {
     const oi_real yy = (oi_real)1 + y * y;
-    oi_real a[2], b[2], hid = (oi_real)0;
+    /* zeros only for the analyser, which cannot see that nc == 2 means both
+     * covers were written */
+    oi_real a[2] = {(oi_real)0, (oi_real)0}, b[2] = {(oi_real)0, (oi_real)0}, hid = (oi_real)0;
     int i, nc = 0;
     *full = (oi_real)2 * chord_h(h, yy);
     for (i = 0; i < n; ++i)
@@ -203,9 +206,10 @@ static oi_real chord_hidden(const cone *k, int n, oi_real y, oi_real h, oi_real 
 }
 
 /* A circle on the sky in the back disc's frame: the directions
- * cr c + sr (cos th g1 + sin th g2) (c, g1, g2 orthonormal). */
+ * cr c + sr (cos th g1 + sin th g2) (c, g1, g2 orthonormal: the rows of f,
+ * written there by disc_frame without a copy). */
 typedef struct {
-    oi_real c[3], g1[3], g2[3], cr, sr;
+    oi_real f[3][3], cr, sr;
 } circle;
 
 /* The cone's form at the circle's point of angle th. */
@@ -214,39 +218,48 @@ static oi_real circle_form(const cone *k, const circle *q, oi_real th, oi_real u
     oi_real s, c;
     int i;
     OI_SINCOS(th, &s, &c);
-    for (i = 0; i < 3; ++i) u[i] = q->cr * q->c[i] + q->sr * (c * q->g1[i] + s * q->g2[i]);
+    for (i = 0; i < 3; ++i) u[i] = q->cr * q->f[0][i] + q->sr * (c * q->f[1][i] + s * q->f[2][i]);
     return k->m[0] * u[0] * u[0] +
            (oi_real)2 * u[0] * (k->m[1] * u[1] + k->m[2] * u[2]) +
            k->m[3] * u[1] * u[1] + (oi_real)2 * k->m[4] * u[1] * u[2] + k->m[5] * u[2] * u[2];
 }
 
 #define N_LIMB_SAMPLES 32
+/* Breaks of the integrand over psi: each cone crosses the disc's limb at
+ * most 4 times (the form on a circle: a trigonometric polynomial of degree
+ * 2) and has at most 2 tangent chords; the ellipsoid's cone crosses the
+ * Moon's limb at most 4 times. The ellipsoid alone: 6 (8 kept), with the
+ * Moon: 16. Beyond its capacity a break is dropped. */
 #define MAX_BREAKS 16
+#define MAX_BREAKS_EARTH 8
+typedef struct {
+    oi_real *psi;
+    int n, cap;
+} breaks;
 #define ROOT_MAX_IT 60
 
-static void add_break(oi_real *brk, int *nb, oi_real psi)
+static void add_break(breaks *b, oi_real psi)
 {
-    if (*nb < MAX_BREAKS && psi > -OI_HALF_PI_R && psi < OI_HALF_PI_R) brk[(*nb)++] = psi;
+    if (b->n < b->cap && psi > -OI_HALF_PI_R && psi < OI_HALF_PI_R) b->psi[b->n++] = psi;
 }
 
 /* The break psi of a crossing point u (frame coordinates) when it lies on
  * or inside the back disc of gnomonic radius t: y = u_v / u_s. */
-static void add_point(oi_real *brk, int *nb, const oi_real u[3], oi_real t)
+static void add_point(breaks *b, const oi_real u[3], oi_real t)
 {
     oi_real y;
     if (!(u[0] > (oi_real)0)) return;
     if (u[1] * u[1] + u[2] * u[2] > OI_R(1.000001) * t * t * u[0] * u[0]) return;
     y = u[2] / u[0];
     if (!(OI_FABS(y) < t)) return;
-    add_break(brk, nb, OI_ATAN2(y, OI_SQRT((t - y) * (t + y))));
+    add_break(b, OI_ATAN2(y, OI_SQRT((t - y) * (t + y))));
 }
 
 /* Where cone k's boundary crosses circle q inside the disc: sign changes of
  * the form over N_LIMB_SAMPLES angles, each refined by the Illinois variant
  * of regula falsi to a few ulp (the form on a circle is a trigonometric
  * polynomial of degree 2: at most 4 zeros). */
-static OI_NOINLINE void crossing_breaks(const cone *k, const circle *q, oi_real t, oi_real *brk,
-                                        int *nb)
+static OI_NOINLINE void crossing_breaks(const cone *k, const circle *q, oi_real t, breaks *b)
 {
     const oi_real step = (oi_real)2 * OI_PI_R / (oi_real)N_LIMB_SAMPLES;
     oi_real u[3], f0 = circle_form(k, q, (oi_real)0, u);
@@ -276,13 +289,13 @@ static OI_NOINLINE void crossing_breaks(const cone *k, const circle *q, oi_real 
             if (fx == (oi_real)0) break;
         }
         (void)circle_form(k, q, x, u);
-        add_point(brk, nb, u, t);
+        add_point(b, u, t);
     }
 }
 
 /* Breaks where a chord y = const is tangent to cone k's boundary: the
  * discriminant of the form along the chord vanishes. */
-static void tangent_breaks(const cone *k, oi_real t, oi_real *brk, int *nb)
+static void tangent_breaks(const cone *k, oi_real t, breaks *b)
 {
     oi_real a2, b2, c2, d, q, y;
     /* chords tangent to the boundary: (m_su + y m_uv)^2 - m_uu (m_ss + 2 y
@@ -295,10 +308,10 @@ static void tangent_breaks(const cone *k, oi_real t, oi_real *brk, int *nb)
     q = -(b2 + (b2 < (oi_real)0 ? -OI_SQRT(d) : OI_SQRT(d)));
     if (q == (oi_real)0) return;
     y = c2 / q;
-    if (OI_FABS(y) < t) add_break(brk, nb, OI_ATAN2(y, OI_SQRT((t - y) * (t + y))));
+    if (OI_FABS(y) < t) add_break(b, OI_ATAN2(y, OI_SQRT((t - y) * (t + y))));
     if (a2 != (oi_real)0) {
         y = q / a2;
-        if (OI_FABS(y) < t) add_break(brk, nb, OI_ATAN2(y, OI_SQRT((t - y) * (t + y))));
+        if (OI_FABS(y) < t) add_break(b, OI_ATAN2(y, OI_SQRT((t - y) * (t + y))));
     }
 }
 
@@ -367,37 +380,29 @@ static void disc_frame(const oi_real s[3], const oi_real toward[3], oi_real f[3]
  * rm) inside the disc: where the two covered intervals start or stop
  * overlapping. */
 static OI_NOINLINE void moon_limb_breaks(const cone *k, const oi_real m[3], oi_real rm,
-                                         oi_real t, oi_real *brk, int *nb)
+                                         oi_real t, breaks *b)
 {
     circle q;
-    oi_real g[3][3];
-    int i;
     const oi_real e[3] = {(oi_real)0, (oi_real)1, (oi_real)0};
-    disc_frame(m, e, g);
-    for (i = 0; i < 3; ++i) {
-        q.c[i] = g[0][i];
-        q.g1[i] = g[1][i];
-        q.g2[i] = g[2][i];
-    }
+    disc_frame(m, e, q.f);
     OI_SINCOS(rm, &q.sr, &q.cr);
-    crossing_breaks(k, &q, t, brk, nb);
+    crossing_breaks(k, &q, t, b);
 }
 
 /* Every break of the cones: each one's crossings of the disc's limb and
  * its tangent chords (with the Moon, the caller adds moon_limb_breaks: not
  * from here, so that the two frames do not stack). */
-static OI_NOINLINE void all_breaks(const cone *k, int n, oi_real r, oi_real t, oi_real *brk,
-                                   int *nb)
+static OI_NOINLINE void all_breaks(const cone *k, int n, oi_real r, oi_real t, breaks *b)
 {
     circle q;
     int i;
-    q.c[0] = (oi_real)1;
-    q.c[1] = q.c[2] = q.g1[0] = q.g1[2] = q.g2[0] = q.g2[1] = (oi_real)0;
-    q.g1[1] = q.g2[2] = (oi_real)1;
+    q.f[0][0] = (oi_real)1;
+    q.f[0][1] = q.f[0][2] = q.f[1][0] = q.f[1][2] = q.f[2][0] = q.f[2][1] = (oi_real)0;
+    q.f[1][1] = q.f[2][2] = (oi_real)1;
     OI_SINCOS(r, &q.sr, &q.cr);
     for (i = 0; i < n; ++i) {
-        crossing_breaks(&k[i], &q, t, brk, nb);
-        tangent_breaks(&k[i], t, brk, nb);
+        crossing_breaks(&k[i], &q, t, b);
+        tangent_breaks(&k[i], t, b);
     }
 }
 
@@ -444,29 +449,15 @@ static OI_NOINLINE int build_cones(const oi_real s[3], oi_real r, const oi_real 
     return 1;
 }
 
-/*
- * Visible fraction of the uniform disc of unit direction s and apparent
- * radius r (<= 0.5 rad) seen from p (outside the ellipsoid of equatorial
- * radius a), behind the ellipsoid and (mo not NULL) a sphere of unit
- * direction mo and apparent radius rm. The solid angle the occulters
- * cover, as chords of the gnomonic disc (closed form along each chord),
- * integrated over y = tan(r) sin(psi) piecewise between the breaks
- * (all_breaks) by Gauss-Legendre; over the disc's solid angle 4 pi
- * sin^2(r/2); in [0, 1].
- */
-oi_real oi__oblate_visible(const oi_real s[3], oi_real r, const oi_real p[3], oi_real a,
-                           const oi_real mo[3], oi_real rm)
+/* The breaks sorted (insertion; at most MAX_BREAKS), the pieces between
+ * them integrated, and the visible fraction formed (see oi__oblate_visible).
+ * Out of line: the breaks' search is over before this frame is live. */
+static OI_NOINLINE oi_real fraction_from_breaks(const cone *k, int n, oi_real r, oi_real t,
+                                                int narrow, const breaks *b)
 {
-    oi_real t, sr, cr, brk[MAX_BREAKS], mf[3], hid = (oi_real)0, vis = (oi_real)0, prev, disc;
-    cone k[2];
-    int nb = 0, i, j;
-    const int n = mo != NULL ? 2 : 1;
-    const int narrow = build_cones(s, r, p, a, mo, rm, k, mf);
-    OI_SINCOS(r, &sr, &cr);
-    t = sr / cr;
-    all_breaks(k, n, r, t, brk, &nb);
-    if (n > 1) moon_limb_breaks(&k[0], mf, rm, t, brk, &nb);
-    /* sort the breaks (insertion; at most MAX_BREAKS) */
+    oi_real hid = (oi_real)0, vis = (oi_real)0, prev, disc, *brk = b->psi;
+    const int nb = b->n;
+    int i, j;
     for (i = 1; i < nb; ++i) {
         const oi_real v = brk[i];
         for (j = i; j > 0 && brk[j - 1] > v; --j) brk[j] = brk[j - 1];
@@ -482,6 +473,67 @@ oi_real oi__oblate_visible(const oi_real s[3], oi_real r, const oi_real p[3], oi
      * exactly 0 when nothing, or everything, is covered) */
     disc = (oi_real)4 * OI_PI_R * oi__sin_half_sq(r);
     return oi__clamp(vis < hid ? vis / disc : (oi_real)1 - hid / disc, (oi_real)0, (oi_real)1);
+}
+
+/* tan r of the disc's apparent radius r: the gnomonic radius of its limb
+ * (out of line: the sine and cosine are not kept in the caller's frame). */
+static OI_NOINLINE oi_real gnomonic_radius(oi_real r)
+{
+    oi_real sr, cr;
+    OI_SINCOS(r, &sr, &cr);
+    return sr / cr;
+}
+
+/*
+ * Visible fraction of the uniform disc of unit direction s and apparent
+ * radius r (<= 0.5 rad) seen from p (outside the ellipsoid of equatorial
+ * radius a), behind the ellipsoid alone. The solid angle it covers, as
+ * chords of the gnomonic disc (closed form along each chord), integrated
+ * over y = tan(r) sin(psi) piecewise between the breaks (all_breaks) by
+ * Gauss-Legendre; over the disc's solid angle 4 pi sin^2(r/2); in [0, 1].
+ * Apart from oi__oblate_visible so that the Sun's shadow (one occulter)
+ * does not carry the second occulter's breaks on its stack (make stack).
+ */
+oi_real oi__oblate_visible_earth(const oi_real s[3], oi_real r, const oi_real p[3], oi_real a)
+{
+    oi_real t, psi[MAX_BREAKS_EARTH];
+    breaks b;
+    cone k[1];
+    const int narrow = build_cones(s, r, p, a, NULL, (oi_real)0, k, NULL);
+    b.psi = psi;
+    b.n = 0;
+    b.cap = MAX_BREAKS_EARTH;
+    t = gnomonic_radius(r);
+    all_breaks(k, 1, r, t, &b);
+    return fraction_from_breaks(k, 1, r, t, narrow, &b);
+}
+
+/*
+ * The same behind the ellipsoid and a sphere of unit direction mo and
+ * apparent radius rm (oi__oblate_visible, mo not NULL): its cone joins the
+ * chords, and the breaks where the ellipsoid's cone crosses its limb
+ * (moon_limb_breaks).
+ */
+static OI_NOINLINE oi_real visible_two(const oi_real s[3], oi_real r, const oi_real p[3],
+                                       oi_real a, const oi_real mo[3], oi_real rm)
+{
+    oi_real t, psi[MAX_BREAKS], mf[3];
+    breaks b;
+    cone k[2];
+    const int narrow = build_cones(s, r, p, a, mo, rm, k, mf);
+    b.psi = psi;
+    b.n = 0;
+    b.cap = MAX_BREAKS;
+    t = gnomonic_radius(r);
+    all_breaks(k, 2, r, t, &b);
+    moon_limb_breaks(&k[0], mf, rm, t, &b);
+    return fraction_from_breaks(k, 2, r, t, narrow, &b);
+}
+
+oi_real oi__oblate_visible(const oi_real s[3], oi_real r, const oi_real p[3], oi_real a,
+                           const oi_real mo[3], oi_real rm)
+{
+    return mo != NULL ? visible_two(s, r, p, a, mo, rm) : oi__oblate_visible_earth(s, r, p, a);
 }
 
 /* Angular radius of the ellipsoid's silhouette seen from p, along the great

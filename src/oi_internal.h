@@ -327,6 +327,8 @@ oi_real oi__oblate_geocentric_radius(const oi_real p[3], oi_real a);
 oi_real oi__oblate_radius_towards(const oi_real p[3], oi_real a, const oi_real s[3]);
 oi_real oi__oblate_visible(const oi_real s[3], oi_real r, const oi_real p[3], oi_real a,
                            const oi_real mo[3], oi_real rm);
+/* oi__oblate_visible behind the ellipsoid alone (mo NULL), on less stack. */
+oi_real oi__oblate_visible_earth(const oi_real s[3], oi_real r, const oi_real p[3], oi_real a);
 /* Distance from o (outside) along the unit direction u to the ellipsoid,
  * or -1 when the ray misses it. */
 oi_real oi__oblate_ray_hit(const oi_real o[3], const oi_real u[3], oi_real a);

@@ -339,73 +339,105 @@ static int sun_fractions(const sun_geom *g, int need_ld, oi_real *frac, oi_real 
  * sphere's region and fractions (the silhouette's radius along the great
  * circle towards the Sun), and where the Sun's disc comes within a hundredth
  * of its radius of that sphere's edges the exact visible fraction of the
- * uniform disc behind the elliptic silhouette (src/oblate.c); the
+ * uniform disc behind the elliptic silhouette (oblate_exact); the
  * limb-darkened fraction is the equivalent sphere's moved by the same
- * amount. The region follows the exact fraction. */
-static OI_NOINLINE int oblate_fractions(const oi_real point_km[3], const oi_model *m,
-                                        const sun_geom *g, int need_ld, oi_real *frac,
-                                        oi_real *frac_ld)
+ * amount. The region follows the exact fraction. 1 when the exact fraction
+ * is wanted. */
+static int oblate_wants_exact(const sun_geom *g)
 {
-    int region = sun_fractions(g, need_ld, frac, frac_ld);
     const oi_real margin = OI_R(0.01) * g->rs;
-    oi_real exact, moved;
-    if (g->dp >= g->dsp || !(g->rs <= OBLATE_RS_MAX) || g->sep >= g->re + g->rs + margin ||
-        g->sep <= g->re - g->rs - margin)
-        return region;
-    exact = oi__oblate_visible(g->s_hat, g->rs, point_km, m->earth_radius_km, NULL, (oi_real)0);
-    moved = exact - *frac;
-    *frac = exact;
-    *frac_ld = oi__clamp(*frac_ld + moved, (oi_real)0, (oi_real)1);
+    return !(g->dp >= g->dsp || !(g->rs <= OBLATE_RS_MAX) || g->sep >= g->re + g->rs + margin ||
+             g->sep <= g->re - g->rs - margin);
+}
+
+/* The exact fraction behind the ellipsoid (src/oblate.c) in place of the
+ * equivalent sphere's in *out. Called once the geometry's frame is gone
+ * (make stack): the unit vector to the Sun is formed again by the
+ * operations of sun_geometry, from the distance it kept in *out. */
+static OI_NOINLINE void oblate_exact(const oi_real sun_km[3], const oi_real point_km[3],
+                                     const oi_model *m, oi_shadow *out)
+{
+    oi_real s_hat[3], exact, moved;
+    oi__sub(sun_km, point_km, s_hat);
+    (void)oi__divide3(s_hat, out->sun_distance_km, s_hat);
+    exact = oi__oblate_visible_earth(s_hat, out->sun_radius_rad, point_km, m->earth_radius_km);
+    moved = exact - out->fraction;
+    out->fraction = exact;
+    out->fraction_ld = oi__clamp(out->fraction_ld + moved, (oi_real)0, (oi_real)1);
     if (exact == (oi_real)1) {
-        *frac_ld = (oi_real)1;
-        return OI_SHADOW_LIT;
+        out->fraction_ld = (oi_real)1;
+        out->region = OI_SHADOW_LIT;
+    } else if (exact == (oi_real)0) {
+        out->fraction_ld = (oi_real)0;
+        out->region = OI_SHADOW_UMBRA;
+    } else if (out->region != OI_SHADOW_ANNULAR) {
+        out->region = OI_SHADOW_PENUMBRA;
     }
-    if (exact == (oi_real)0) {
-        *frac_ld = (oi_real)0;
-        return OI_SHADOW_UMBRA;
-    }
-    return region == OI_SHADOW_ANNULAR ? region : OI_SHADOW_PENUMBRA;
 }
 #endif
 
-/* The region and fractions of the model's Earth. */
-static int earth_fractions(const oi_real point_km[3], const oi_model *m, const sun_geom *g,
-                           int need_ld, oi_real *frac, oi_real *frac_ld)
-{
+/* shadow_geometric's value when the ellipsoid's exact fraction is to
+ * replace the equivalent sphere's (oblate_exact); no status is positive there */
+#define GEOMETRIC_WANTS_EXACT 1
+
+/* Out of line where the ellipsoid's quadrature follows (make stack); in
+ * line without it (the Sun-only build's flash, make size). */
 #ifndef OI_NO_OBLATE
-    if (m->earth_shape == OI_EARTH_WGS84)
-        return oblate_fractions(point_km, m, g, need_ld, frac, frac_ld);
+#define GEOMETRIC_FRAME OI_NOINLINE
 #else
-    (void)point_km;
-    (void)m;
+#define GEOMETRIC_FRAME
 #endif
-    return sun_fractions(g, need_ld, frac, frac_ld);
+
+/* Steps 1-3: *out zeroed, then everything but fraction_atm (the sphere's,
+ * or the ellipsoid's equivalent sphere's, fractions). Returns OI_OK,
+ * GEOMETRIC_WANTS_EXACT or an error status of sun_geometry. Out of line
+ * with the ellipsoid: the geometry's frame is not live during the later
+ * steps. */
+static GEOMETRIC_FRAME int shadow_geometric(const oi_real sun_km[3], const oi_real point_km[3],
+                                        const oi_model *m, int need_ld, oi_shadow *out)
+{
+    sun_geom g;
+    int st;
+    memset(out, 0, sizeof *out);
+    st = sun_geometry(sun_km, point_km, m, &g);
+    if (st != OI_OK) return st;
+    apparent_radii(point_km, m, &g);
+    out->region = sun_fractions(&g, need_ld, &out->fraction, &out->fraction_ld);
+    out->earth_radius_rad = g.re;
+    out->sun_radius_rad = g.rs;
+    out->separation_rad = g.sep;
+    out->sun_distance_km = g.dsp;
+#ifndef OI_NO_OBLATE
+    if (m->earth_shape == OI_EARTH_WGS84 && oblate_wants_exact(&g)) return GEOMETRIC_WANTS_EXACT;
+#endif
+    return OI_OK;
 }
 
 #if !defined(OI_NO_OBLATE) && !defined(OI_NO_ATMOSPHERE)
 /* The atmosphere over the ellipsoid: the table's coordinates about the
  * equivalent sphere, the one of the silhouette's angular radius towards the
  * Sun (out->earth_radius_rad, already set), radius |point| sin(r_e): the
- * grazing rays' heights are measured above the ellipsoid's limb there. */
+ * grazing rays' heights are measured above the ellipsoid's limb there.
+ * The geometric fractions are read from *out after the sine (none kept in
+ * registers across the call). */
 static OI_NOINLINE int oblate_atmosphere(const oi_real sun_km[3], const oi_real point_km[3],
-                                         const oi_model *m, oi_real frac, oi_real frac_ld,
-                                         oi_shadow *out, oi_real light_dir[3])
+                                         const oi_model *m, oi_shadow *out, oi_real light_dir[3])
 {
     oi_model local = *m;
     local.earth_radius_km = oi__norm_bounded(point_km) * OI_SIN(out->earth_radius_rad);
-    return oi__atm_fraction(sun_km, point_km, &local, frac, frac_ld, &out->fraction_atm,
-                            light_dir);
+    return oi__atm_fraction(sun_km, point_km, &local, out->fraction, out->fraction_ld,
+                            &out->fraction_atm, light_dir);
 }
 #endif
 
 /* Step 4, the atmosphere (Note 5): the single place where refraction and
  * extinction modify the sunlight reaching the point; without it the
- * model's choice of disc, uniform or limb-darkened. */
+ * model's choice of disc, uniform or limb-darkened (out->fraction,
+ * out->fraction_ld). */
 static int atmosphere_fraction(const oi_real sun_km[3], const oi_real point_km[3],
-                               const oi_model *m, oi_real frac, oi_real frac_ld, oi_shadow *out,
-                               oi_real light_dir[3])
+                               const oi_model *m, oi_shadow *out, oi_real light_dir[3])
 {
-    out->fraction_atm = m->limb_darkening == OI_LIMB_DARKENED ? frac_ld : frac;
+    out->fraction_atm = m->limb_darkening == OI_LIMB_DARKENED ? out->fraction_ld : out->fraction;
 #ifdef OI_NO_ATMOSPHERE
     (void)sun_km;
     (void)point_km;
@@ -417,37 +449,27 @@ static int atmosphere_fraction(const oi_real sun_km[3], const oi_real point_km[3
     if (m->no_atmosphere) return OI_OK;
 #ifndef OI_NO_OBLATE
     if (m->earth_shape == OI_EARTH_WGS84)
-        return oblate_atmosphere(sun_km, point_km, m, frac, frac_ld, out, light_dir);
+        return oblate_atmosphere(sun_km, point_km, m, out, light_dir);
 #endif
-    return oi__atm_fraction(sun_km, point_km, m, frac, frac_ld, &out->fraction_atm, light_dir);
+    return oi__atm_fraction(sun_km, point_km, m, out->fraction, out->fraction_ld,
+                            &out->fraction_atm, light_dir);
 #endif
 }
 
 #ifndef OI_SUN_FRACTION_WANT_ONLY
 /* oi_sun_fraction with a resolved model, and (light_dir not NULL, atmosphere
  * compiled in and on) the mean direction the sunlight arrives from: see
- * src/oi_internal.h. The composition of the steps above. */
+ * src/oi_internal.h. The composition of the steps above, each in its own
+ * frame after the one before (make stack). */
 int oi__sun_shadow(const oi_real sun_km[3], const oi_real point_km[3], const oi_model *resolved,
                    oi_shadow *out, oi_real light_dir[3])
 {
-    sun_geom g;
-    oi_real frac, frac_ld;
-    int st, region;
-
-    memset(out, 0, sizeof *out);
-    st = sun_geometry(sun_km, point_km, resolved, &g);
-    if (st != OI_OK) return st;
-    apparent_radii(point_km, resolved, &g);
-    region = earth_fractions(point_km, resolved, &g, 1, &frac, &frac_ld);
-    out->fraction = frac;
-    out->fraction_ld = frac_ld;
-    out->earth_radius_rad = g.re; /* before the atmosphere: the ellipsoid's uses it */
-    st = atmosphere_fraction(sun_km, point_km, resolved, frac, frac_ld, out, light_dir);
-    out->sun_radius_rad = g.rs;
-    out->separation_rad = g.sep;
-    out->sun_distance_km = g.dsp;
-    out->region = region;
-    return st;
+    const int st = shadow_geometric(sun_km, point_km, resolved, 1, out);
+    if (st < 0) return st;
+#ifndef OI_NO_OBLATE
+    if (st == GEOMETRIC_WANTS_EXACT) oblate_exact(sun_km, point_km, resolved, out);
+#endif
+    return atmosphere_fraction(sun_km, point_km, resolved, out, light_dir);
 }
 
 #else /* OI_SUN_FRACTION_WANT_ONLY: src/sun_fraction_want.c */
@@ -465,9 +487,7 @@ int oi__sun_shadow_want(const oi_real sun_km[3], const oi_real point_km[3],
                         const oi_model *resolved, unsigned want, oi_shadow *out,
                         oi_real light_dir[3])
 {
-    sun_geom g;
-    oi_real frac, frac_ld;
-    int st = OI_OK, region, need_ld = (want & OI__WANT_LD) != 0;
+    int st, need_ld = (want & OI__WANT_LD) != 0;
 
     if (want & OI__WANT_ATM) {
 #ifndef OI_NO_ATMOSPHERE
@@ -475,20 +495,12 @@ int oi__sun_shadow_want(const oi_real sun_km[3], const oi_real point_km[3],
 #endif
         if (resolved->limb_darkening == OI_LIMB_DARKENED) need_ld = 1;
     }
-    memset(out, 0, sizeof *out);
-    st = sun_geometry(sun_km, point_km, resolved, &g);
-    if (st != OI_OK) return st;
-    apparent_radii(point_km, resolved, &g);
-    region = earth_fractions(point_km, resolved, &g, need_ld, &frac, &frac_ld);
-    out->fraction = frac;
-    out->fraction_ld = frac_ld;
-    out->earth_radius_rad = g.re; /* before the atmosphere: the ellipsoid's uses it */
-    if (want & OI__WANT_ATM)
-        st = atmosphere_fraction(sun_km, point_km, resolved, frac, frac_ld, out, light_dir);
-    out->sun_radius_rad = g.rs;
-    out->separation_rad = g.sep;
-    out->sun_distance_km = g.dsp;
-    out->region = region;
-    return st;
+    st = shadow_geometric(sun_km, point_km, resolved, need_ld, out);
+    if (st < 0) return st;
+#ifndef OI_NO_OBLATE
+    if (st == GEOMETRIC_WANTS_EXACT) oblate_exact(sun_km, point_km, resolved, out);
+#endif
+    return (want & OI__WANT_ATM) ? atmosphere_fraction(sun_km, point_km, resolved, out, light_dir)
+                                 : OI_OK;
 }
 #endif
