@@ -359,7 +359,7 @@ static OI_NOINLINE int earth_flux_moments(const oi_scene *scene, const oi_model 
                                           oi_real shape_add, oi_illum *out)
 {
     oi_real r_hat[3], s_hat[3], x[3], y[3], o[3], c[3], cos_theta, sin_theta, shape;
-    oi__local_frame(scene->target_km, scene->sun_km, r_hat, s_hat, x, y);
+    oi__local_frame_toward(scene->target_km, scene->sun_km, obs_hat, r_hat, s_hat, x, y);
     oi__cross(s_hat, r_hat, c);
     sin_theta = oi__norm_bounded(c);
     cos_theta = oi__dot(s_hat, r_hat);

@@ -457,6 +457,9 @@ int oi__earth_sphere_shape(const oi_model *m, oi_real theta, oi_real cos_theta,
 #endif
 
 /* The local frame of the Earth's light at the target (src/local_frame.c). */
+void oi__local_frame_toward(const oi_real target_km[3], const oi_real sun_km[3],
+                            const oi_real *hint, oi_real r_hat[3], oi_real s_hat[3],
+                            oi_real x[3], oi_real y[3]);
 void oi__local_frame(const oi_real target_km[3], const oi_real sun_km[3], oi_real r_hat[3],
                      oi_real s_hat[3], oi_real x[3], oi_real y[3]);
 
