@@ -239,7 +239,7 @@ int oi__earthshine_albedo(const oi__albedo_field *f, const oi_real r_hat[3],
                           oi_real *albedo, oi_real dir[3], oi_real *shape_add)
 {
     sums acc;
-    oi_real a_ref, d, m[3], len;
+    oi_real a_ref, d, m[3], len, den;
     int st, i;
 
     *albedo = (oi_real)0;
@@ -263,15 +263,21 @@ int oi__earthshine_albedo(const oi__albedo_field *f, const oi_real r_hat[3],
     *albedo = a_ref + d;
     if (*albedo < (oi_real)0) *albedo = (oi_real)0;
     if (*albedo > (oi_real)1) *albedo = (oi_real)1;
-    if (!(*albedo > (oi_real)0)) return OI_OK;
+    /* a mean albedo this small lights nothing measurable (e_earth below
+     * 1e-12 of the uniform sphere's): the corrections, over mean sum K, would
+     * only overflow (single precision: the product underflows to 0) */
+    den = *albedo * acc.s0;
+    if (!(*albedo > OI_R(1e-12)) || !(den > (oi_real)0)) return OI_OK;
     /* mean direction: the uniform one at the cubature's length, plus the
      * field's first moment sum((a - mean) K omega) / (mean sum K) */
     len = oi__norm_bounded(acc.w) / acc.s0;
-    for (i = 0; i < 3; i++)
-        m[i] = len * dir[i] + (acc.v[i] - d * acc.w[i]) / (*albedo * acc.s0);
+    for (i = 0; i < 3; i++) m[i] = len * dir[i] + (acc.v[i] - d * acc.w[i]) / den;
     if (oi__unit_bounded(m, m) > (oi_real)0)
         for (i = 0; i < 3; i++) dir[i] = m[i];
-    if (obs_hat != NULL) *shape_add = (acc.p - d * acc.q) / (*albedo * acc.s0);
+    if (obs_hat != NULL) {
+        const oi_real add = (acc.p - d * acc.q) / den;
+        if (OI_ISFINITE(add)) *shape_add = add;
+    }
     return OI_OK;
 }
 
