@@ -180,16 +180,6 @@ static const oi_real b_rule[NB_SPHERE / 2][2] = {
 #define N_GEO_SPHERE 6
 #define N_BREAK_SPHERE (3 + N_GEO_SPHERE)
 
-/* Insert x into the sorted list bp[0..n-1] when 0 < x < a_max. */
-static int add_break(oi_real bp[N_BREAK_SPHERE], int n, oi_real x, oi_real a_max)
-{
-    int i;
-    if (!(x > (oi_real)0 && x < a_max) || n >= N_BREAK_SPHERE) return n;
-    for (i = n; i > 0 && bp[i - 1] > x; i--) bp[i] = bp[i - 1];
-    bp[i] = x;
-    return n + 1;
-}
-
 /* acos(x) = sqrt(1 - x) (a_0 + a_1 x + ... + a_7 x^7) on [0, 1], within
  * 2.2e-8 absolute (Abramowitz & Stegun 1964, 4.4.46, after Hastings; the
  * bound checked in tests/python/test_earth_angular.py): the cubature's
@@ -238,22 +228,14 @@ static oi_real phase_of_cos(oi_real c)
 static OI_NOINLINE oi_real cubature_flux(oi_real cos_theta, oi_real sin_theta, oi_real h_km,
                                          oi_real R, const oi_real o[3])
 {
-    oi_real bp[N_BREAK_SPHERE], r, rp, hp, a_max, d, flux = (oi_real)0;
-    int n = 2, p, q, k, g;
+    oi_real bp[N_BREAK_SPHERE], r, rp, hp, a_max, flux = (oi_real)0;
+    int n, p, q, k;
 
     r = R + h_km;
     rp = R / r;
     hp = h_km / r;
-    a_max = OI_ATAN2(OI_SQRT(hp * ((oi_real)1 + rp)), rp);
-    bp[0] = (oi_real)0;
-    bp[1] = a_max;
-    n = add_break(bp, n, OI_FABS(OI_HALF_PI_R - OI_ATAN2(sin_theta, cos_theta)), a_max);
-    d = OI_R(2.0) * hp;
-    for (g = 0; g < N_GEO_SPHERE && d * d < OI_R(0.5) * hp * ((oi_real)1 + rp); g++) {
-        const oi_real x = (d * d - hp * hp) / (OI_R(4.0) * rp);
-        n = add_break(bp, n, OI_R(2.0) * OI_ASIN(OI_SQRT(x)), a_max);
-        d *= OI_R(4.0);
-    }
+    n = oi__cap_breaks_start(bp, N_BREAK_SPHERE, hp, rp, cos_theta, sin_theta, &a_max);
+    n = oi__cap_breaks_altitude(bp, N_BREAK_SPHERE, n, N_GEO_SPHERE, hp, rp, a_max);
     for (p = 0; p + 1 < n; p++) {
         const oi_real a0 = bp[p], width = bp[p + 1] - bp[p];
         if (!(width > (oi_real)0)) continue;

@@ -139,16 +139,6 @@ static oi_real ring(const oi_real k[5], oi_real w1, oi_real beta, oi_real w2, co
     return lr != NULL ? arc_specular(k, lo, hi, lr) : arc_integral(k, lo, hi);
 }
 
-/* Insert x into the sorted list bp[0..n-1] when 0 < x < a_max. */
-static int add_break(oi_real bp[N_BREAK], int n, oi_real x, oi_real a_max)
-{
-    int i;
-    if (!(x > (oi_real)0 && x < a_max) || n >= N_BREAK) return n;
-    for (i = n; i > 0 && bp[i - 1] > x; i--) bp[i] = bp[i - 1];
-    bp[i] = x;
-    return n + 1;
-}
-
 /* The two points where the terminator (the great circle of pole s) crosses
  * the facet circle (pole nrm, cosine c_n): their polar angles from the
  * zenith (the sub-target point) added as break points. */
@@ -168,9 +158,9 @@ static int add_crossings(oi_real bp[N_BREAK], int n, const oi_real s[3], const o
     if (oi__unit_bounded(u, u) == (oi_real)0) return n;
     rest = OI_SQRT(rest);
     z = p0[2] + rest * u[2];
-    n = add_break(bp, n, OI_ACOS(oi__clamp(z, OI_R(-1.0), OI_R(1.0))), a_max);
+    n = oi__cap_break_add(bp, N_BREAK, n, OI_ACOS(oi__clamp(z, OI_R(-1.0), OI_R(1.0))), a_max);
     z = p0[2] - rest * u[2];
-    return add_break(bp, n, OI_ACOS(oi__clamp(z, OI_R(-1.0), OI_R(1.0))), a_max);
+    return oi__cap_break_add(bp, N_BREAK, n, OI_ACOS(oi__clamp(z, OI_R(-1.0), OI_R(1.0))), a_max);
 }
 
 /*
@@ -200,8 +190,8 @@ static OI_NOINLINE oi_real cap_cubature(oi_real cos_theta, oi_real sin_theta, oi
                                         oi_real R, const oi_real nrm[3], lobe_ring *lr)
 {
     oi_real bp[N_BREAK], s[3], r, rp, hp, nh, c_n, a_max;
-    oi_real beta = (oi_real)0, total = (oi_real)0, d;
-    int n = 2, p, q, g;
+    oi_real beta = (oi_real)0, total = (oi_real)0;
+    int n, p, q;
 
     if (!(h_km >= H_FLOOR_KM)) h_km = H_FLOOR_KM;
     r = R + h_km;
@@ -211,27 +201,18 @@ static OI_NOINLINE oi_real cap_cubature(oi_real cos_theta, oi_real sin_theta, oi
     nh = OI_SQRT(nrm[0] * nrm[0] + nrm[1] * nrm[1]);
     c_n = nrm[2] / rp;
     if (!(c_n < (oi_real)1)) return (oi_real)0; /* the whole Earth behind the face */
-    a_max = OI_ATAN2(OI_SQRT(hp * ((oi_real)1 + rp)), rp);
-    bp[0] = (oi_real)0;
-    bp[1] = a_max;
-    n = add_break(bp, n, OI_FABS(OI_HALF_PI_R - OI_ATAN2(sin_theta, cos_theta)), a_max);
+    n = oi__cap_breaks_start(bp, N_BREAK, hp, rp, cos_theta, sin_theta, &a_max);
     if (nh > (oi_real)0) beta = OI_ATAN2(nrm[1], nrm[0]);
     if (c_n > OI_R(-1.0)) {
         const oi_real gam = OI_ATAN2(nh, nrm[2]), rho = OI_ACOS(c_n);
-        n = add_break(bp, n, OI_FABS(gam - rho), a_max);
-        n = add_break(bp, n, gam + rho, a_max);
+        n = oi__cap_break_add(bp, N_BREAK, n, OI_FABS(gam - rho), a_max);
+        n = oi__cap_break_add(bp, N_BREAK, n, gam + rho, a_max);
         s[0] = sin_theta;
         s[1] = (oi_real)0;
         s[2] = cos_theta;
         n = add_crossings(bp, n, s, nrm, c_n, a_max);
     }
-    /* distances 2 h, 8 h, ... while within the inner half of the horizon's */
-    d = OI_R(2.0) * hp;
-    for (g = 0; g < N_GEO && d * d < OI_R(0.5) * hp * ((oi_real)1 + rp); g++) {
-        const oi_real x = (d * d - hp * hp) / (OI_R(4.0) * rp);
-        n = add_break(bp, n, OI_R(2.0) * OI_ASIN(OI_SQRT(x)), a_max);
-        d *= OI_R(4.0);
-    }
+    n = oi__cap_breaks_altitude(bp, N_BREAK, n, N_GEO, hp, rp, a_max);
 
     for (p = 0; p + 1 < n; p++) {
         const oi_real a0 = bp[p], width = bp[p + 1] - bp[p];

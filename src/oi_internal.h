@@ -456,6 +456,15 @@ int oi__earth_sphere_shape(const oi_model *m, oi_real theta, oi_real cos_theta,
                            oi_real phi, oi_real *shape);
 #endif
 
+/* Break points of the cap cubatures' polar angle (src/cap_breaks.c): bp
+ * sorted, at most cap entries; start: 0, the horizon *a_max and the
+ * terminator's tangency; altitude: up to n_geo multiples of it. */
+int oi__cap_break_add(oi_real *bp, int cap, int n, oi_real x, oi_real a_max);
+int oi__cap_breaks_start(oi_real *bp, int cap, oi_real hp, oi_real rp, oi_real cos_theta,
+                         oi_real sin_theta, oi_real *a_max);
+int oi__cap_breaks_altitude(oi_real *bp, int cap, int n, int n_geo, oi_real hp, oi_real rp,
+                            oi_real a_max);
+
 /* The local frame of the Earth's light at the target (src/local_frame.c). */
 void oi__local_frame_toward(const oi_real target_km[3], const oi_real sun_km[3],
                             const oi_real *hint, oi_real r_hat[3], oi_real s_hat[3],
