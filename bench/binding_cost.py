@@ -10,23 +10,16 @@ library; the ratio is the binding's overhead (goal: at most 1.3). Rows: the
 benchmark's scene mix (`bench points`) tiled to N rows; medians of 9 calls, the binding's and
 the C call's interleaved.
 """
-import time
-
 import numpy as np
+
+from timing import interleaved_seconds, tile_rows
 
 
 def _median_ns_pair(f, g, n, reps=9):
     """Median and least ns per row of f and of g, their calls interleaved so
     that a change of the machine's load falls on both: (f median, g median,
     f least, g least). The least is the call other jobs disturbed least."""
-    tf, tg = [], []
-    for _ in range(reps):
-        for fn, ts in ((f, tf), (g, tg)):
-            t0 = time.perf_counter()
-            fn()
-            ts.append(time.perf_counter() - t0)
-    tf.sort()
-    tg.sort()
+    tf, tg = interleaved_seconds(f, g, reps)
     return (tf[reps // 2] * 1e9 / n, tg[reps // 2] * 1e9 / n, tf[0] * 1e9 / n,
             tg[0] * 1e9 / n)
 
@@ -40,9 +33,8 @@ def run(points, out, n=100000):
     lib, L = orbillum._lib, orbillum.L  # the loaded library, the header's mirror
     sun = np.array([p[1] for p in points], dtype=float)
     tgt = np.array([p[2] for p in points], dtype=float)
-    k = -(-n // len(points))
-    S = np.ascontiguousarray(np.tile(sun, (k, 1))[:n])
-    T = np.ascontiguousarray(np.tile(tgt, (k, 1))[:n])
+    S = tile_rows(sun, n)
+    T = tile_rows(tgt, n)
     moon = np.tile([3.6e5, 1.2e5, 2.0e4], (n, 1))
     obs = T + np.array([120.0, -60.0, 35.0])
     theta = np.linspace(0.0, np.pi, n)

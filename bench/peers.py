@@ -15,9 +15,9 @@ Orekit and Basilisk are not installable from the package registries this
 repository's lock file draws on (Orekit needs a JVM and its Python wrapper
 from conda; Basilisk builds from source): not timed here.
 """
-import time
-
 import numpy as np
+
+from timing import interleaved_seconds, tile_rows
 
 R_SUN_KM = 695700.0
 R_EARTH_KM = 6378.137
@@ -45,14 +45,7 @@ def time_pair(f, g, n, reps=15, best=False):
     their calls interleaved so that the machine's load falls on both alike.
     The least is the call other jobs on the cores disturbed least: on a
     loaded machine the medians carry the other jobs' time slices."""
-    tf, tg = [], []
-    for _ in range(reps):
-        for fn, ts in ((f, tf), (g, tg)):
-            t0 = time.perf_counter()
-            fn()
-            ts.append(time.perf_counter() - t0)
-    tf.sort()
-    tg.sort()
+    tf, tg = interleaved_seconds(f, g, reps)
     k = 0 if best else reps // 2
     return tf[k] * 1e9 / n, tg[k] * 1e9 / n
 
@@ -92,9 +85,8 @@ def run(points, out, n=100000):
     r = np.array([p[2] for p in points], dtype=float)
     ours = np.array([p[3] for p in points], dtype=float)
     diff = float(np.abs(mg_fraction(sun, r) - ours).max())
-    k = -(-n // len(points))
-    sun_n = np.ascontiguousarray(np.tile(sun, (k, 1))[:n])
-    r_n = np.ascontiguousarray(np.tile(r, (k, 1))[:n])
+    sun_n = tile_rows(sun, n)
+    r_n = tile_rows(r, n)
     out.put("peer.numpy_mg.sun_fraction.max_diff_vs_orbillum", "%.2g" % diff, "1",
             "|M&G - oi_sun_fraction| over the mix (the planar approximation)")
     try:
@@ -121,23 +113,22 @@ def run(points, out, n=100000):
     # the same without the penumbra third (a catalogue's epochs are almost all lit or
     # in the umbra: the penumbra lasts seconds of an orbit)
     keep = np.array([p[0] != "penumbra" for p in points])
-    k2 = -(-n // int(keep.sum()))
-    sun_n[:] = np.tile(sun[keep], (k2, 1))[:n]
-    r_n[:] = np.tile(r[keep], (k2, 1))[:n]
+    sun_n[:] = tile_rows(sun[keep], n)
+    r_n[:] = tile_rows(r[keep], n)
     ns_peer2, ns_ours2 = time_pair(lambda: mg_fraction(sun_n, r_n), ours_batch, n)
     out.put("peer.numpy_mg.over.sun_fraction_batch_lit_umbra", "%.2f" % (ns_peer2 / ns_ours2),
             "x", "the same on the lit and umbra points only: peer %.1f ns, orbillum %.1f ns"
             % (ns_peer2, ns_ours2))
     # the same pairs, the least of the 15 calls of each (the least disturbed by
     # other jobs on a shared machine)
-    sun_n[:] = np.tile(sun, (k, 1))[:n]
-    r_n[:] = np.tile(r, (k, 1))[:n]
+    sun_n[:] = tile_rows(sun, n)
+    r_n[:] = tile_rows(r, n)
     b_peer, b_ours = time_pair(lambda: mg_fraction(sun_n, r_n), ours_batch, n, best=True)
     out.put("peer.numpy_mg.over.sun_fraction_batch_same_rows_best", "%.2f" % (b_peer / b_ours),
             "x", "the mix, least of 15 calls each: peer %.1f ns, orbillum %.1f ns"
             % (b_peer, b_ours))
-    sun_n[:] = np.tile(sun[keep], (k2, 1))[:n]
-    r_n[:] = np.tile(r[keep], (k2, 1))[:n]
+    sun_n[:] = tile_rows(sun[keep], n)
+    r_n[:] = tile_rows(r[keep], n)
     b_peer, b_ours = time_pair(lambda: mg_fraction(sun_n, r_n), ours_batch, n, best=True)
     out.put("peer.numpy_mg.over.sun_fraction_batch_lit_umbra_best", "%.2f" % (b_peer / b_ours),
             "x", "lit and umbra points, least of 15 calls each: peer %.1f ns, orbillum %.1f ns"
