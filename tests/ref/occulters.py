@@ -20,11 +20,8 @@ on the boundary of the three caps' intersection and cap segments):
 
 The output depends only on this script (no timestamps, no randomness).
 """
-import hashlib
-
-import numpy as np
-
-from common import c_hex, cli, setup_mpmath, write
+from common import (c_vec, cdec, cli, cross, dot, norm, precision_blocks, rnd, setup_mpmath,
+                    unit, write_exact_header)
 
 mp = setup_mpmath(30)
 PI = mp.pi
@@ -39,39 +36,13 @@ GEO_KM = 42164.0
 MOON_KM = 384400.0
 
 
-def rnd(x, prec):
-    x = float(x)
-    return float(np.float32(x)) if prec == "f" else x
-
-
-def cdec(x):
-    return mp.nstr(mp.mpf(x), 17, min_fixed=-5, max_fixed=5) if x != 0 else "0.0"
-
-
 def vsub(a, b):
     return [a[i] - b[i] for i in range(3)]
 
 
-def vnorm(a):
-    return mp.sqrt(sum(x * x for x in a))
-
-
-def vunit(a):
-    n = vnorm(a)
-    return [x / n for x in a]
-
-
-def vdot(a, b):
-    return sum(a[i] * b[i] for i in range(3))
-
-
-def vcross(a, b):
-    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
-
-
 def angle(a, b):
-    c = vcross(a, b)
-    return mp.atan2(vnorm(c), vdot(a, b))
+    c = cross(a, b)
+    return mp.atan2(norm(c), dot(a, b))
 
 
 def crossings(c1, r1, c2, r2):
@@ -83,12 +54,12 @@ def crossings(c1, r1, c2, r2):
     cd = mp.cos(d)
     a = (mp.cos(r1) - mp.cos(r2) * cd) / (1 - cd * cd)
     b = (mp.cos(r2) - mp.cos(r1) * cd) / (1 - cd * cd)
-    n = vcross(c1, c2)
+    n = cross(c1, c2)
     base = [a * c1[i] + b * c2[i] for i in range(3)]
-    rest = 1 - vdot(base, base)
+    rest = 1 - dot(base, base)
     if rest <= 0:
         return []
-    g = mp.sqrt(rest) / vnorm(n)
+    g = mp.sqrt(rest) / norm(n)
     return [[base[i] + s * g * n[i] for i in range(3)] for s in (1, -1)]
 
 
@@ -110,12 +81,12 @@ def visible_fraction(cb, rb, fronts, limb=False):
     weighted by the limb-darkened intensity when limb is set."""
     # a fixed frame about cb: the azimuth of each front centre
     ref = [1, 0, 0] if abs(cb[0]) < 0.9 else [0, 1, 0]
-    e1 = vunit(vcross(cb, ref))
-    e2 = vcross(cb, e1)
+    e1 = unit(cross(cb, ref))
+    e2 = cross(cb, e1)
     geo = []
     for c, r in fronts:
         d = angle(cb, c)
-        az = mp.atan2(vdot(c, e2), vdot(c, e1))
+        az = mp.atan2(dot(c, e2), dot(c, e1))
         geo.append((d, r, az))
 
     def half(rho, d, r):
@@ -166,12 +137,12 @@ def geometry(sun, moon, target):
     sun, moon, target = ([mp.mpf(x) for x in v] for v in (sun, moon, target))
     to_sun = vsub(sun, target)
     to_moon = vsub(moon, target)
-    cs, cm = vunit(to_sun), vunit(to_moon)
-    ce = vunit([-x for x in target])
-    rs = mp.asin(R_SUN_KM / vnorm(to_sun))
-    rm = mp.asin(R_MOON_KM / vnorm(to_moon))
-    re = mp.asin(R_EARTH_KM / vnorm(target))
-    return cs, rs, cm, rm, ce, re, vnorm(to_moon), vnorm(target)
+    cs, cm = unit(to_sun), unit(to_moon)
+    ce = unit([-x for x in target])
+    rs = mp.asin(R_SUN_KM / norm(to_sun))
+    rm = mp.asin(R_MOON_KM / norm(to_moon))
+    re = mp.asin(R_EARTH_KM / norm(target))
+    return cs, rs, cm, rm, ce, re, norm(to_moon), norm(target)
 
 
 def sun_reference(sun, moon, target):
@@ -200,7 +171,7 @@ def moon_reference(sun, moon, target):
 
 def around(axis, perp, ang, az):
     """Unit vector at angle ang from unit axis, azimuth az from unit perp."""
-    other = vcross(axis, perp)
+    other = cross(axis, perp)
     return [mp.cos(ang) * axis[i] + mp.sin(ang) * (mp.cos(az) * perp[i] + mp.sin(az) * other[i])
             for i in range(3)]
 
@@ -214,8 +185,8 @@ def sun_cases():
     # Sun, at a distance dm (near side of the orbit: total; far side: annular)
     for dm, label in ((MOON_KM - GEO_KM, "geo near"), (MOON_KM + GEO_KM, "geo far")):
         target = [mp.mpf(0), mp.mpf(GEO_KM), mp.mpf(0)]
-        cs = vunit(vsub(sun, target))
-        rs = mp.asin(R_SUN_KM / vnorm(vsub(sun, target)))
+        cs = unit(vsub(sun, target))
+        rs = mp.asin(R_SUN_KM / norm(vsub(sun, target)))
         rm = mp.asin(R_MOON_KM / dm)
         for k in (0, 0.001, 0.02, 0.05, 0.3, 0.8, 0.97, 0.999, 1.2):
             s = (rs + rm) * mp.mpf(k)
@@ -243,15 +214,15 @@ def sun_cases():
         th = mp.mpf(0)
         for _ in range(30):
             target = [-r * mp.cos(th), r * mp.sin(th), mp.mpf(0)]
-            cs = vunit(vsub(sun, target))
-            ce = vunit([-x for x in target])
-            rs = mp.asin(R_SUN_KM / vnorm(vsub(sun, target)))
+            cs = unit(vsub(sun, target))
+            ce = unit([-x for x in target])
+            rs = mp.asin(R_SUN_KM / norm(vsub(sun, target)))
             re = mp.asin(R_EARTH_KM / r)
             want = re + rs * (1 - 2 * mp.mpf(gk))
             th += want - angle(cs, ce)
         dm = mp.mpf(MOON_KM)
         rm = mp.asin(R_MOON_KM / dm)
-        perp = vunit(vsub(ce, [vdot(ce, cs) * cs[i] for i in range(3)]))
+        perp = unit(vsub(ce, [dot(ce, cs) * cs[i] for i in range(3)]))
         for mk, az in ((0.5, 0.0), (0.5, 0.6), (0.9, 0.3), (0.2, 1.2), (1.0, 0.0),
                        (0.6, 2.0), (0.8, PI), (0.1, 0.1), (1.3, 0.2), (1.7, 0.05)):
             s = (rs + rm) * mp.mpf(mk) / 2
@@ -277,7 +248,7 @@ def moon_cases():
         th = mp.mpf(0)
         for _ in range(30):
             target = [mp.mpf(0), -r * mp.cos(th), r * mp.sin(th)]
-            sep = angle(vunit(vsub(moon, target)), vunit([-x for x in target]))
+            sep = angle(unit(vsub(moon, target)), unit([-x for x in target]))
             th += (re + mp.mpf(k)) - sep
         cases.append((sun, moon, target, "limb k=%s" % k))
     # far from the Earth's disc
@@ -298,39 +269,29 @@ def rows(prec):
 
 
 def emit(root):
-    body = [
-        "typedef struct { double sun[3], moon[3], target[3]; double fraction, moon_hidden;\n"
-        "    double fraction_ld;\n"
-        "    int both; /* both discs on the Sun: the library's fraction_ld approximates */\n"
-        "    const char *label; } ref_moon_sun_row;\n",
-        "typedef struct { double sun[3], moon[3], target[3]; double moon_visible;\n"
-        "    const char *label; } ref_moon_hidden_row;\n",
-    ]
-    for prec, cond in (("f", "#ifdef OI_SINGLE_PRECISION\n"), ("d", "#else\n")):
+    def block(prec):
         rs, rm = rows(prec)
-        body.append(cond)
-        body.append("static const ref_moon_sun_row ref_moon_sun[%d] = {\n" % len(rs))
+        out = ["static const ref_moon_sun_row ref_moon_sun[%d] = {\n" % len(rs)]
         for s, m, t, f, h, f_ld, both, label in rs:
-            body.append("    {{%s}, {%s}, {%s}, %s, %s, %s, %d, \"%s\"},\n" % (
-                ", ".join(c_hex(x) for x in s), ", ".join(c_hex(x) for x in m),
-                ", ".join(c_hex(x) for x in t), cdec(f), cdec(h), cdec(f_ld), int(both), label))
-        body.append("};\n")
-        body.append("static const ref_moon_hidden_row ref_moon_hidden[%d] = {\n" % len(rm))
+            out.append("    {{%s}, {%s}, {%s}, %s, %s, %s, %d, \"%s\"},\n" % (
+                c_vec(s), c_vec(m), c_vec(t), cdec(f), cdec(h), cdec(f_ld), int(both), label))
+        out.append("};\n")
+        out.append("static const ref_moon_hidden_row ref_moon_hidden[%d] = {\n" % len(rm))
         for s, m, t, v, label in rm:
-            body.append("    {{%s}, {%s}, {%s}, %s, \"%s\"},\n" % (
-                ", ".join(c_hex(x) for x in s), ", ".join(c_hex(x) for x in m),
-                ", ".join(c_hex(x) for x in t), cdec(v), label))
-        body.append("};\n")
-    body.append("#endif\n")
-    text = "".join(body)
-    digest = hashlib.sha256(text.encode()).hexdigest()[:16]
-    head = ("/* SPDX-License-Identifier: MIT */\n"
-            "/* ref_occulters.h: GENERATED by `python tests/ref/generate.py occulters` (do not edit).\n"
-            " * mpmath %s at %d digits; inputs are exact binary values (hex floats), references\n"
-            " * are the true function of those inputs (ring quadrature, tests/ref/occulters.py).\n"
-            " * payload sha256/16: %s */\n"
-            "#ifndef REF_OCCULTERS_H\n#define REF_OCCULTERS_H\n\n" % (mp.__version__, mp.mp.dps, digest))
-    return write(root, OUT, head + text + "\n#endif /* REF_OCCULTERS_H */\n")
+            out.append("    {{%s}, {%s}, {%s}, %s, \"%s\"},\n" % (
+                c_vec(s), c_vec(m), c_vec(t), cdec(v), label))
+        out.append("};\n")
+        return "".join(out)
+    text = ("typedef struct { double sun[3], moon[3], target[3]; double fraction, moon_hidden;\n"
+            "    double fraction_ld;\n"
+            "    int both; /* both discs on the Sun: the library's fraction_ld approximates */\n"
+            "    const char *label; } ref_moon_sun_row;\n"
+            "typedef struct { double sun[3], moon[3], target[3]; double moon_visible;\n"
+            "    const char *label; } ref_moon_hidden_row;\n") + precision_blocks(block)
+    return write_exact_header(
+        root, OUT, "occulters",
+        " * are the true function of those inputs (ring quadrature, tests/ref/occulters.py).\n",
+        text)
 
 
 def generate(root, argv):
