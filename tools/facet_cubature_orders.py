@@ -29,14 +29,8 @@ import numpy as np
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, ROOT)
 from bake.earthshine import angular  # noqa: E402
+from cap_cubature import R, cap_breaks, mapped_rule, score  # noqa: E402
 
-R = 6378.137
-
-
-def _rule(n):
-    x, w = np.polynomial.legendre.leggauss(n)
-    t = (x + 1) / 2
-    return (1 - np.cos(np.pi * t)) / 2, np.pi * np.sin(np.pi * t) / 2 * w / 2
 
 
 def _arc(k, b1, b2):
@@ -73,7 +67,7 @@ def _ring(k, w1, beta, w2):
 
 def plate(theta, h, nrm, order):
     """The runtime's cubature at another order (returns (E, nodes used))."""
-    tau, om = _rule(order)
+    tau, om = mapped_rule(order)
     r = R + h
     rp, hp = R / r, h / r
     nh = math.hypot(nrm[0], nrm[1])
@@ -81,8 +75,7 @@ def plate(theta, h, nrm, order):
     if not cn < 1:
         return 0.0, 0
     st, ct = math.sin(theta), math.cos(theta)
-    amax = math.atan2(math.sqrt(hp * (1 + rp)), rp)
-    bps = {0.0, amax, abs(math.pi / 2 - theta)}
+    bps = set()
     beta = math.atan2(nrm[1], nrm[0]) if nh > 0 else 0.0
     if cn > -1:
         gam, rho = math.atan2(nh, nrm[2]), math.acos(cn)
@@ -98,13 +91,7 @@ def plate(theta, h, nrm, order):
                 u /= np.linalg.norm(u)
                 for sg in (1, -1):
                     bps.add(math.acos(max(-1.0, min(1.0, p0[2] + sg * math.sqrt(rest) * u[2]))))
-    d = 2 * hp
-    for _ in range(6):
-        if not d * d < 0.5 * hp * (1 + rp):
-            break
-        bps.add(2 * math.asin(math.sqrt((d * d - hp * hp) / (4 * rp))))
-        d *= 4
-    bps = sorted(b for b in bps if 0 <= b <= amax)
+    bps = cap_breaks(theta, hp, rp, bps)
     tot, used = 0.0, 0
     for a0, a1 in zip(bps[:-1], bps[1:]):
         wd = a1 - a0
@@ -121,14 +108,6 @@ def plate(theta, h, nrm, order):
                 k, _half(k[0], k[1]), beta, _half(k[2], rp * sa * nh))
             used += 1
     return max(tot * rp * rp / math.pi, 0.0), used
-
-
-def score(got, ref):
-    got, ref = np.asarray(got), np.asarray(ref)
-    mx = ref.max()
-    big = ref > 0.01 * mx
-    return np.where(big, np.abs(got - ref) / np.where(big, ref, 1.0) / 0.01,
-                    np.abs(got - ref) / mx / 1e-4)
 
 
 def main():

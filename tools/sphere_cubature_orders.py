@@ -35,16 +35,14 @@ import numpy as np
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, ROOT)
 from bake.earthshine import angular  # noqa: E402
+from cap_cubature import R, cap_breaks, mapped_rule, score  # noqa: E402
 
-R = 6378.137
 ORDERS = ((6, 4), (8, 4), (8, 6), (10, 6), (12, 8))
 DEFAULT = (10, 6)
 
 
 def _rules(na, nb):
-    x, w = np.polynomial.legendre.leggauss(na)
-    t = (x + 1) / 2
-    ta, wa = (1 - np.cos(np.pi * t)) / 2, np.pi * np.sin(np.pi * t) / 2 * w / 2
+    ta, wa = mapped_rule(na)
     x, w = np.polynomial.legendre.leggauss(nb)
     return ta, wa, (x + 1) / 2, w / 2
 
@@ -71,15 +69,7 @@ def sphere(theta, h, obs, na, nb):
     r = R + h
     rp, hp = R / r, h / r
     ct, st = math.cos(theta), math.sin(theta)
-    amax = math.atan2(math.sqrt(hp * (1 + rp)), rp)
-    bps = {0.0, amax, abs(math.pi / 2 - theta)}
-    d = 2 * hp
-    for _ in range(6):
-        if not d * d < 0.5 * hp * (1 + rp):
-            break
-        bps.add(2 * math.asin(math.sqrt((d * d - hp * hp) / (4 * rp))))
-        d *= 4
-    bps = sorted(b for b in bps if 0 <= b <= amax)
+    bps = cap_breaks(theta, hp, rp)
     tot, used = np.zeros(len(obs)), 0
     for a0, a1 in zip(bps[:-1], bps[1:]):
         wd = a1 - a0
@@ -110,14 +100,6 @@ def sphere(theta, h, obs, na, nb):
             tot += wd * w * sa * (hp - 2 * sh2) / (d2 * dd) * bm * ring
             used += 2 * len(b)
     return np.maximum(tot * rp * rp / math.pi, 0.0), used
-
-
-def score(got, ref):
-    got, ref = np.asarray(got), np.asarray(ref)
-    mx = ref.max()
-    big = ref > 0.01 * mx
-    return np.where(big, np.abs(got - ref) / np.where(big, ref, 1.0) / 0.01,
-                    np.abs(got - ref) / mx / 1e-4)
 
 
 def points(n, rng):
