@@ -19,6 +19,7 @@
 
 #include "orbillum.h"
 #include "oi_test_util.h"
+#include "oi_test_sky.h"
 
 #ifdef OI_SINGLE_PRECISION
 #define REL_TOL 2e-5
@@ -35,7 +36,6 @@
 static const double PI = 3.14159265358979323846;
 static const double AU = 149597870.7;
 static const double TSI = 1361.0;
-static const double RE = 6378.137;
 static const double DEG = 3.14159265358979323846 / 180.0;
 /* IAU 2006 mean obliquity of J2000, 84381.406 arcsec */
 static const double EPS = 84381.406 / 3600.0 * 3.14159265358979323846 / 180.0;
@@ -137,39 +137,16 @@ static void test_zodiacal_between_nodes(void **state)
  * A = 1 m^2, k = 1e17 e-/J) and a dark current of 0. */
 static oi_camera sky_camera(void)
 {
-    oi_camera c;
-    memset(&c, 0, sizeof c);
-    c.name = "sky";
-    c.aperture_m = (oi_real)(2.0 / sqrt(PI));
-    c.focal_length_m = 1;
+    oi_camera c = oi_test_camera("sky");
     c.pixel_pitch_m = (oi_real)1e-7;
-    c.transmission = 1;
-    c.quantum_efficiency = 1;
-    c.band_fraction = 1;
     c.photon_energy_j = (oi_real)1e-17;
     c.full_well_e = (oi_real)1e6;
     c.psf_peak_fraction = 1;
     c.fov_rad = (oi_real)0.02;
-    c.sun_exclusion_rad = 0;
     c.n_times = 3;
-    c.times_s[0] = 1;
     c.times_s[1] = 10;
     c.times_s[2] = 100;
-    c.n_gains = 1;
-    c.gains[0] = 1;
-    c.read_noise_e[0] = 5;
     return c;
-}
-
-static oi_illum lit_illum(double flux)
-{
-    oi_illum il;
-    memset(&il, 0, sizeof il);
-    il.flux_obs = (oi_real)flux;
-    il.e_sun = (oi_real)TSI;
-    il.moon_sun_fraction = 1;
-    il.shadow.region = OI_SHADOW_LIT;
-    return il;
 }
 
 /* Equatorial (ICRF-aligned) vector of ecliptic longitude lon, latitude lat. */
@@ -185,21 +162,13 @@ static void ecl_to_eq(double lon, double lat, double d, oi_real v[3])
 static double scene_radiance(double sun_lon, double lon, double lat, unsigned sky, oi_exposure *out)
 {
     oi_camera c = sky_camera();
-    oi_scene s;
-    oi_illum il = lit_illum(1e-16);
-    oi_expose_goal goal;
-    oi_real dir[3];
-    memset(&goal, 0, sizeof goal);
-    goal.sky = sky;
-    oi_scene_defaults(&s);
-    ecl_to_eq(sun_lon, 0, AU, s.sun_km);
-    set3(s.observer_km, 0, 0, 42164.0);
+    oi_illum il = oi_test_lit_illum(1e-16);
+    oi_real sun[3], observer[3], dir[3], target[3];
+    ecl_to_eq(sun_lon, 0, AU, sun);
+    set3(observer, 0, 0, 42164.0);
     ecl_to_eq(lon, lat, 100.0, dir);
-    set3(s.target_km, s.observer_km[0] + dir[0], s.observer_km[1] + dir[1],
-         s.observer_km[2] + dir[2]);
-    s.has_observer = 1;
-    check_int(OI_OK, oi_expose_scene(&c, &s, &il, NULL, &goal, out), "status");
-    return out->background_w_m2_sr;
+    set3(target, observer[0] + dir[0], observer[1] + dir[1], observer[2] + dir[2]);
+    return oi_test_sky_background(&c, &il, sky, sun, observer, target, out);
 }
 
 /* Ecliptic directions of the boresight (away from the Earth) against the
@@ -232,20 +201,11 @@ static void test_zodiacal_in_scene(void **state)
 static void test_zodiacal_not_through_earth(void **state)
 {
     oi_camera c = sky_camera();
-    oi_scene s;
-    oi_illum il = lit_illum(1e-16);
-    oi_expose_goal goal;
+    oi_illum il = oi_test_lit_illum(1e-16);
     oi_exposure out;
     (void)state;
-    memset(&goal, 0, sizeof goal);
-    goal.sky = OI_SKY_ZODIACAL | SKY_MOON_BIT;
-    oi_scene_defaults(&s);
-    set3(s.sun_km, -AU, 0, 0);
-    set3(s.observer_km, RE + 1000, 0, 0);
-    set3(s.target_km, RE + 500, 0, 0);
-    s.has_observer = 1;
-    check_int(OI_OK, oi_expose_scene(&c, &s, &il, NULL, &goal, &out), "status");
-    check_rel(0.0, out.background_w_m2_sr, 0, "night Earth");
+    check_rel(0.0, oi_test_night_nadir(&c, &il, OI_SKY_ZODIACAL | SKY_MOON_BIT, &out), 0,
+              "night Earth");
     assert_true(out.flags & OI_FLAG_EARTH_IN_FOV);
 }
 
@@ -260,7 +220,7 @@ static void test_moon_behind_target(void **state)
 {
     oi_camera c = sky_camera();
     oi_scene s;
-    oi_illum il = lit_illum(1e-16);
+    oi_illum il = oi_test_lit_illum(1e-16);
     oi_expose_goal goal;
     oi_exposure out;
     double dm = 384400.0, sun_d = AU, want, published, omega;
@@ -305,7 +265,7 @@ static void test_moon_in_front_and_beside(void **state)
 {
     oi_camera c = sky_camera();
     oi_scene s;
-    oi_illum il = lit_illum(1e-12);
+    oi_illum il = oi_test_lit_illum(1e-12);
     oi_expose_goal goal;
     oi_exposure out;
     double dm = 384400.0, rho = asin(1737.4 / dm), off;

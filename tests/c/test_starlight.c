@@ -20,6 +20,7 @@
 
 #include "orbillum.h"
 #include "oi_test_util.h"
+#include "oi_test_sky.h"
 
 #ifdef OI_SINGLE_PRECISION
 #define REL_TOL 2e-5
@@ -280,26 +281,14 @@ static oi_camera sky_camera(void)
 static double scene_radiance(double l, double b, unsigned sky, oi_exposure *out)
 {
     oi_camera c = sky_camera();
-    oi_scene s;
-    oi_illum il;
-    oi_expose_goal goal;
-    oi_real dir[3];
-    memset(&goal, 0, sizeof goal);
-    memset(&il, 0, sizeof il);
-    il.flux_obs = (oi_real)1e-16;
-    il.e_sun = 1361;
-    il.moon_sun_fraction = 1;
-    goal.sky = sky;
-    oi_scene_defaults(&s);
-    set3(s.sun_km, 149597870.7, 0, 0);
+    oi_illum il = oi_test_lit_illum(1e-16);
+    oi_real dir[3], sun[3], observer[3], target[3];
+    set3(sun, 149597870.7, 0, 0);
     gal_to_icrs(l, b, dir);
-    set3(s.observer_km, 42164.0 * (double)dir[0], 42164.0 * (double)dir[1],
-         42164.0 * (double)dir[2]);
-    set3(s.target_km, s.observer_km[0] + 100.0 * (double)dir[0],
-         s.observer_km[1] + 100.0 * (double)dir[1], s.observer_km[2] + 100.0 * (double)dir[2]);
-    s.has_observer = 1;
-    check_int(OI_OK, oi_expose_scene(&c, &s, &il, NULL, &goal, out), "status");
-    return (double)out->background_w_m2_sr;
+    set3(observer, 42164.0 * (double)dir[0], 42164.0 * (double)dir[1], 42164.0 * (double)dir[2]);
+    set3(target, observer[0] + 100.0 * (double)dir[0], observer[1] + 100.0 * (double)dir[1],
+         observer[2] + 100.0 * (double)dir[2]);
+    return oi_test_sky_background(&c, &il, sky, sun, observer, target, out);
 }
 
 /* The background: the table at the boresight's galactic coordinates (the
@@ -330,22 +319,12 @@ static void test_in_scene(void **state)
 static void test_not_through_earth(void **state)
 {
     oi_camera c = sky_camera();
-    oi_scene s;
     oi_illum il;
-    oi_expose_goal goal;
     oi_exposure out;
     (void)state;
-    memset(&goal, 0, sizeof goal);
     memset(&il, 0, sizeof il);
     il.flux_obs = (oi_real)1e-16;
-    goal.sky = OI_SKY_STARLIGHT;
-    oi_scene_defaults(&s);
-    set3(s.sun_km, -149597870.7, 0, 0);
-    set3(s.observer_km, 6378.137 + 1000, 0, 0);
-    set3(s.target_km, 6378.137 + 500, 0, 0);
-    s.has_observer = 1;
-    check_int(OI_OK, oi_expose_scene(&c, &s, &il, NULL, &goal, &out), "status");
-    check_rel(0.0, out.background_w_m2_sr, 0, "night Earth");
+    check_rel(0.0, oi_test_night_nadir(&c, &il, OI_SKY_STARLIGHT, &out), 0, "night Earth");
 }
 #endif /* OI_NO_EXPOSURE */
 #endif /* OI_NO_SKY */
