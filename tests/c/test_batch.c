@@ -256,6 +256,58 @@ static void random_scenes(long n, uint64_t seed)
     }
 }
 
+/* Scenes 0..n-1 from the stability vectors (Sun, target, observer; the
+ * Sun and the Earth's terms); returns n. */
+static long stability_scenes(void)
+{
+    const stab_vec *v = VEC(stab_illum);
+    const long n = (long)NELEM(VEC(stab_illum));
+    long i;
+    for (i = 0; i < n; i++) {
+        oi_scene *s = &scenes[i];
+        oi_scene_defaults(s);
+        set3(s->sun_km, v[i].in[0], v[i].in[1], v[i].in[2]);
+        set3(s->target_km, v[i].in[3], v[i].in[4], v[i].in[5]);
+        set3(s->observer_km, v[i].in[6], v[i].in[7], v[i].in[8]);
+        s->has_observer = 1;
+        s->terms = OI_TERM_SUN | OI_TERM_EARTH;
+    }
+    return n;
+}
+
+/* Rows 0..n-1 of the single calls (one_st, one) and of the batch (bat_st,
+ * bat), records of `size` bytes: the same statuses, the same bytes. */
+static void expect_same_rows(long n, const void *one, const void *bat, size_t size,
+                             const char *what)
+{
+    long i;
+    for (i = 0; i < n; i++) {
+        check_int(one_st[i], bat_st[i], what);
+        if (memcmp((const unsigned char *)one + (size_t)i * size,
+                   (const unsigned char *)bat + (size_t)i * size, size) != 0) {
+            print_error("%s: row %ld differs\n", what, i);
+            fail();
+        }
+    }
+}
+
+/* Rows 2..4 of the scenes made hostile: a NaN albedo, an albedo above 1,
+ * unknown terms. */
+static void spoil_scene_rows(void)
+{
+    scenes[2].target_albedo = (oi_real)NAN;
+    scenes[3].earth_albedo = (oi_real)2;
+    scenes[4].terms = 1u << 9;
+}
+
+/* The batch's statuses in those rows. */
+static void expect_spoiled_statuses(void)
+{
+    check_int(OI_ERR_NONFINITE, bat_st[2], "NaN albedo row");
+    check_int(OI_ERR_ALBEDO, bat_st[3], "albedo row");
+    check_int(OI_ERR_TERMS, bat_st[4], "terms row");
+}
+
 static void check_illum_rows(long n, const oi_model *model)
 {
     long i;
@@ -267,30 +319,14 @@ static void check_illum_rows(long n, const oi_model *model)
     memset(bat_il, 0x5a, sizeof bat_il);
     bad = oi_illuminate_batch(n, scenes, model, bat_il, bat_st);
     check_int(want_bad, bad, "illuminate rows in error");
-    for (i = 0; i < n; i++) {
-        check_int(one_st[i], bat_st[i], "illuminate status");
-        if (memcmp(&one_il[i], &bat_il[i], sizeof one_il[i]) != 0) {
-            print_error("illuminate row %ld differs\n", i);
-            fail();
-        }
-    }
+    expect_same_rows(n, one_il, bat_il, sizeof *one_il, "illuminate");
 }
 
 static void test_illuminate_stability_and_random(void **state)
 {
-    const stab_vec *v = VEC(stab_illum);
-    long n = (long)NELEM(VEC(stab_illum)), i;
+    const long n = stability_scenes();
     oi_model m;
     (void)state;
-    for (i = 0; i < n; i++) {
-        oi_scene *s = &scenes[i];
-        oi_scene_defaults(s);
-        set3(s->sun_km, v[i].in[0], v[i].in[1], v[i].in[2]);
-        set3(s->target_km, v[i].in[3], v[i].in[4], v[i].in[5]);
-        set3(s->observer_km, v[i].in[6], v[i].in[7], v[i].in[8]);
-        s->has_observer = 1;
-        s->terms = OI_TERM_SUN | OI_TERM_EARTH;
-    }
     check_illum_rows(n, NULL);
     memset(&m, 0, sizeof m);
     m.no_atmosphere = 1;
@@ -397,19 +433,10 @@ static void moon_in_front(long n, uint64_t seed)
 
 static void test_illuminate_outputs(void **state)
 {
-    const stab_vec *v = VEC(stab_illum);
-    long n = (long)NELEM(VEC(stab_illum)), i, certain;
+    const long n = stability_scenes();
+    long certain;
     oi_model m;
     (void)state;
-    for (i = 0; i < n; i++) {
-        oi_scene *s = &scenes[i];
-        oi_scene_defaults(s);
-        set3(s->sun_km, v[i].in[0], v[i].in[1], v[i].in[2]);
-        set3(s->target_km, v[i].in[3], v[i].in[4], v[i].in[5]);
-        set3(s->observer_km, v[i].in[6], v[i].in[7], v[i].in[8]);
-        s->has_observer = 1;
-        s->terms = OI_TERM_SUN | OI_TERM_EARTH;
-    }
     (void)check_illum_outputs(n, NULL);
     random_scenes(NRAND / 2, 4711);
     moon_in_front(NRAND / 2, 5);
@@ -432,17 +459,13 @@ static void test_illuminate_outputs(void **state)
 #endif
     /* hostile rows: each the single call's status, the others computed */
     random_scenes(40, 17);
-    scenes[2].target_albedo = (oi_real)NAN;
-    scenes[3].earth_albedo = (oi_real)2;
-    scenes[4].terms = 1u << 9;
+    spoil_scene_rows();
     scenes[5].has_observer = 1;
     scenes[5].observer_km[1] = (oi_real)NAN;
     scenes[6].has_observer = 1;
     memcpy(scenes[6].observer_km, scenes[6].target_km, sizeof scenes[6].observer_km);
     (void)check_illum_outputs(40, NULL);
-    check_int(OI_ERR_NONFINITE, bat_st[2], "outputs NaN albedo row");
-    check_int(OI_ERR_ALBEDO, bat_st[3], "outputs albedo row");
-    check_int(OI_ERR_TERMS, bat_st[4], "outputs terms row");
+    expect_spoiled_statuses();
     check_int(OI_ERR_NONFINITE, bat_st[5], "outputs NaN observer row");
     check_int(OI_ERR_OBSERVER_AT_TARGET, bat_st[6], "observer at target, mask all");
 }
@@ -506,13 +529,7 @@ static void test_expose(void **state)
     memset(bat_ex, 0x5a, sizeof bat_ex);
     bad = oi_expose_batch(NRAND, cam, in, &goal, bat_ex, bat_st);
     check_int(want_bad, bad, "expose rows in error");
-    for (i = 0; i < NRAND; i++) {
-        check_int(one_st[i], bat_st[i], "expose status");
-        if (memcmp(&one_ex[i], &bat_ex[i], sizeof one_ex[i]) != 0) {
-            print_error("expose row %ld differs\n", i);
-            fail();
-        }
-    }
+    expect_same_rows(NRAND, one_ex, bat_ex, sizeof *one_ex, "expose");
     /* oi_expose_scene over the illuminated random scenes (rows without
      * observer: OI_ERR_NULL in their row) */
     random_scenes(NRAND, 31);
@@ -525,14 +542,8 @@ static void test_expose(void **state)
     memset(bat_ex, 0x5a, sizeof bat_ex);
     bad = oi_expose_scene_batch(NRAND, cam, scenes, bat_il, NULL, NULL, bat_ex, bat_st);
     check_int(want_bad, bad, "expose_scene rows in error");
-    for (i = 0; i < NRAND; i++) {
-        check_int(one_st[i], bat_st[i], "expose_scene status");
-        if (i % 7 == 0) check_int(OI_ERR_NULL, bat_st[i], "no observer");
-        if (memcmp(&one_ex[i], &bat_ex[i], sizeof one_ex[i]) != 0) {
-            print_error("expose_scene row %ld differs\n", i);
-            fail();
-        }
-    }
+    expect_same_rows(NRAND, one_ex, bat_ex, sizeof *one_ex, "expose_scene");
+    for (i = 0; i < NRAND; i += 7) check_int(OI_ERR_NULL, bat_st[i], "no observer");
 }
 #endif
 
@@ -563,13 +574,9 @@ static void test_hostile_rows(void **state)
     assert_true(good > (n - 7) / 2);
     /* the same in scenes */
     random_scenes(n, 17);
-    scenes[2].target_albedo = (oi_real)NAN;
-    scenes[3].earth_albedo = (oi_real)2;
-    scenes[4].terms = 1u << 9;
+    spoil_scene_rows();
     check_illum_rows(n, NULL);
-    check_int(OI_ERR_NONFINITE, bat_st[2], "NaN albedo row");
-    check_int(OI_ERR_ALBEDO, bat_st[3], "albedo row");
-    check_int(OI_ERR_TERMS, bat_st[4], "terms row");
+    expect_spoiled_statuses();
 }
 
 static void expect_all(int want, long n, const int *st, const char *what)
