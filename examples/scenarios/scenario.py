@@ -85,71 +85,34 @@ class Tle:
     source: str = ""
 
 
-def _checksum_ok(line: str) -> bool:
-    if len(line) < 69 or not line[68].isdigit():
-        return True  # no checksum column: accept, sgp4 does not need it
-    s = 0
-    for ch in line[:68]:
-        if ch.isdigit():
-            s += int(ch)
-        elif ch == "-":
-            s += 1
-    return s % 10 == int(line[68])
+def _tle_module():
+    """orbillum.catalog.tle, the one TLE reader, loaded from its file: it needs
+    neither the compiled library the package loads nor astropy."""
+    import importlib.util
+    import sys
+    name = "orbillum_catalog_tle"
+    if name not in sys.modules:
+        path = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(
+            os.path.abspath(__file__)))), "python", "orbillum", "catalog", "tle.py")
+        spec = importlib.util.spec_from_file_location(name, path)
+        mod = importlib.util.module_from_spec(spec)
+        sys.modules[name] = mod  # before it runs: its dataclasses look their module up
+        spec.loader.exec_module(mod)
+    return sys.modules[name]
 
 
 def read_tles(path: str) -> list[Tle]:
     """Read a TLE or 3LE file. '#' lines are comments; a line before a '1 ' line is a name.
 
-    Raises ScenarioError with the file name and line number of a malformed set.
+    Raises ScenarioError with the file name and line number of a malformed set
+    (the reader is orbillum.catalog.tle's).
     """
+    tle = _tle_module()
     try:
-        with open(path, encoding="utf-8") as f:
-            raw = f.read().splitlines()
-    except OSError as e:
-        raise ScenarioError(f"{path}: cannot read TLE file ({e.strerror})") from e
-    out: list[Tle] = []
-    name = ""
-    i = 0
-    while i < len(raw):
-        line = raw[i].rstrip()
-        lineno = i + 1
-        i += 1
-        if not line.strip() or line.lstrip().startswith("#"):
-            continue
-        if line.startswith("1 ") and len(line) < 64 and (
-                i < len(raw) and raw[i].startswith("2 ")):
-            raise ScenarioError(f"{path}:{lineno}: TLE line 1 is too short "
-                                f"({len(line)} characters, expected 69)")
-        if line.startswith("1 ") and len(line) < 64 and not name and len(line) > 20 \
-                and line[2:7].strip().isdigit():
-            raise ScenarioError(f"{path}:{lineno}: looks like a TLE line 1 but is too short "
-                                f"({len(line)} characters, expected 69) and has no line 2")
-        if line.startswith("1 ") and len(line) >= 64:
-            if i >= len(raw) or not raw[i].startswith("2 "):
-                raise ScenarioError(
-                    f"{path}:{lineno + 1}: expected TLE line 2 (starting '2 ') after line 1")
-            l1, l2 = line[:69], raw[i].rstrip()[:69]
-            i += 1
-            if len(l2) < 64:
-                raise ScenarioError(f"{path}:{lineno + 1}: TLE line 2 is too short "
-                                    f"({len(l2)} characters, expected 69)")
-            if l1[2:7] != l2[2:7]:
-                raise ScenarioError(f"{path}:{lineno}: catalogue numbers differ between "
-                                    f"line 1 ({l1[2:7]!r}) and line 2 ({l2[2:7]!r})")
-            for k, ln in ((lineno, l1), (lineno + 1, l2)):
-                if not _checksum_ok(ln):
-                    raise ScenarioError(f"{path}:{k}: TLE checksum (column 69) is wrong")
-            out.append(Tle(name or f"NORAD {l1[2:7].strip()}", l1, l2, source=path))
-            name = ""
-        elif line.startswith("2 "):
-            raise ScenarioError(f"{path}:{lineno}: TLE line 2 without a line 1 before it")
-        else:
-            name = line.strip()
-            if name.startswith("0 "):
-                name = name[2:].strip()
-    if not out:
-        raise ScenarioError(f"{path}: no two-line element set found")
-    return out
+        sets = tle.read(path)
+    except tle.CatalogueError as e:
+        raise ScenarioError(str(e)) from e
+    return [Tle(s.name, s.line1, s.line2, source=path) for s in sets]
 
 
 def pick_tle(tles: list[Tle], key: str | None, path: str) -> Tle:

@@ -241,3 +241,11 @@ def test_cli_refuses_bad_arguments_before_writing(args, message, capsys):
         main(args)
     assert e.value.code == 2
     assert message in capsys.readouterr().err
+
+
+def test_tle_reader_is_the_catalogues(tmp_path):
+    """The scenarios read TLEs with the catalogue's reader: a short '1 ' line
+    that is no line 1 is a name, as in a catalogue."""
+    p = _write(tmp_path, "1 WEB\n" + L1 + "\n" + L2 + "\n")
+    assert [(t.name, t.line1, t.line2) for t in S.read_tles(p)] == [("1 WEB", L1, L2)]
+    assert S._tle_module().parse("1 WEB\n" + L1 + "\n" + L2 + "\n")[0].name == "1 WEB"

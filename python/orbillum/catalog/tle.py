@@ -37,12 +37,20 @@ def checksum(line: str) -> int:
     return sum(int(c) if c.isdigit() else (1 if c == "-" else 0) for c in line[:68]) % 10
 
 
+def _looks_like_line1(line: str) -> bool:
+    """A '1 ' line that is meant as a TLE's line 1 (not a name that starts so)."""
+    return len(line) >= 64 or (len(line) > 20 and line[2:7].strip().isdigit())
+
+
 def parse(text: str, source: str = "<text>") -> list[ElementSet]:
-    """Every element set of a 3LE or 2LE text ('#' lines and blank lines skipped).
+    """Every element set of a 3LE or 2LE text ('#' lines and blank lines skipped;
+    a line before a line 1 is the set's name).
 
     Raises CatalogueError naming source:line for a line 1 without its line 2, a
     line 2 without line 1, lines shorter than 64 columns, catalogue numbers that
-    differ between the lines or a wrong checksum.
+    differ between the lines or a wrong checksum. A short '1 ' line that does
+    not look like a line 1 (20 columns or fewer, or no number in columns 3-7)
+    and has no line 2 after it is a name.
     """
     lines = text.splitlines()
     out: list[ElementSet] = []
@@ -50,27 +58,34 @@ def parse(text: str, source: str = "<text>") -> list[ElementSet]:
     i = 0
     while i < len(lines):
         line = lines[i].rstrip()
+        lineno = i + 1
         i += 1
         if not line.strip() or line.lstrip().startswith("#"):
             continue
         if line.startswith("1 ") and i < len(lines) and lines[i].startswith("2 "):
             l1, l2 = line[:69], lines[i].rstrip()[:69]
             i += 1
-            for k, ln in ((i - 1, l1), (i, l2)):
+            for k, n, ln in ((lineno, 1, l1), (lineno + 1, 2, l2)):
                 if len(ln) < 64:
-                    raise CatalogueError(f"{source}:{k}: TLE line is too short "
-                                         f"({len(ln)} columns, expected 69)")
+                    raise CatalogueError(f"{source}:{k}: TLE line {n} is too short "
+                                         f"({len(ln)} characters, expected 69)")
+            if l1[2:7] != l2[2:7]:
+                raise CatalogueError(f"{source}:{lineno}: catalogue numbers differ between "
+                                     f"line 1 ({l1[2:7]!r}) and line 2 ({l2[2:7]!r})")
+            for k, ln in ((lineno, l1), (lineno + 1, l2)):
                 if len(ln) == 69 and ln[68].isdigit() and checksum(ln) != int(ln[68]):
                     raise CatalogueError(f"{source}:{k}: TLE checksum (column 69) is wrong")
-            if l1[2:7] != l2[2:7]:
-                raise CatalogueError(f"{source}:{i - 1}: catalogue numbers differ between "
-                                     f"line 1 ({l1[2:7]!r}) and line 2 ({l2[2:7]!r})")
             out.append(ElementSet(name or f"NORAD {l1[2:7].strip()}", l1, l2))
             name = ""
-        elif line.startswith("1 "):
-            raise CatalogueError(f"{source}:{i}: TLE line 1 without a line 2 after it")
+        elif line.startswith("1 ") and len(line) >= 64:
+            raise CatalogueError(f"{source}:{lineno + 1}: expected TLE line 2 (starting '2 ') "
+                                 f"after line 1: line {lineno} is a TLE line 1 without a line 2 "
+                                 "after it")
+        elif line.startswith("1 ") and _looks_like_line1(line):
+            raise CatalogueError(f"{source}:{lineno}: looks like a TLE line 1 but is too short "
+                                 f"({len(line)} characters, expected 69) and has no line 2")
         elif line.startswith("2 "):
-            raise CatalogueError(f"{source}:{i}: TLE line 2 without a line 1 before it")
+            raise CatalogueError(f"{source}:{lineno}: TLE line 2 without a line 1 before it")
         else:
             name = line.strip()
             if name.startswith("0 "):
@@ -84,7 +99,7 @@ def read(path: str) -> list[ElementSet]:
         with open(path, encoding="utf-8") as f:
             text = f.read()
     except OSError as e:
-        raise CatalogueError(f"{path}: cannot read ({e.strerror})") from e
+        raise CatalogueError(f"{path}: cannot read TLE file ({e.strerror})") from e
     sets = parse(text, path)
     if not sets:
         raise CatalogueError(f"{path}: no two-line element set found")
