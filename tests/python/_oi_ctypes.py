@@ -109,3 +109,34 @@ def earthshine(theta, h_km, m=None):
     st = lib().oi_earthshine(theta, h_km, C.byref(m) if m is not None else None,
                              C.byref(phi), C.byref(psi))
     return st, phi.value, psi.value
+
+
+def illuminate_albedo(sun, target, albedo_model, epoch, rotation, grid=None, observer=None,
+                      earth_albedo=None):
+    """oi_illuminate of the Sun and the Earth's terms under an albedo model
+    (albedo_model, the scene's epoch_jd and earth_rotation_rad; grid: the
+    albedo map, (n_lat, n_lon), read as float32); earth_albedo None keeps the
+    scene's default. Returns (status, oi_illum)."""
+    import numpy as np
+    L = lib()
+    s = Scene()
+    L.oi_scene_defaults(C.byref(s))
+    s.sun_km, s.target_km = R3(*sun), R3(*target)
+    s.terms = M.OI_TERM_SUN | M.OI_TERM_EARTH
+    if earth_albedo is not None:
+        s.earth_albedo = earth_albedo
+    s.epoch_jd, s.earth_rotation_rad = epoch, rotation
+    if observer is not None:
+        s.observer_km = R3(*observer)
+        s.has_observer = 1
+    m = Model()
+    m.albedo_model = albedo_model
+    keep = None
+    if grid is not None:
+        keep = np.ascontiguousarray(grid, dtype=np.float32)
+        m.albedo_map = keep.ctypes.data_as(C.POINTER(C.c_float))
+        m.albedo_map_n_lat, m.albedo_map_n_lon = keep.shape
+    out = Illum()
+    st = L.oi_illuminate(C.byref(s), C.byref(m), C.byref(out))
+    del keep  # the map is read during the call only
+    return st, out

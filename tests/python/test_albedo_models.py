@@ -9,7 +9,6 @@ within 1e-3 relative wherever the earthshine exceeds 1 % of its sub-solar
 value at that altitude, at every altitude. The ratio to the uniform sphere
 isolates the albedo model from the uniform table's own error.
 """
-import ctypes as C
 import math
 import warnings
 
@@ -45,29 +44,7 @@ def geometry(theta_deg, h_km, tilt=0.4, spin=0.7):
 
 def illuminate(sun, target, model, epoch=J2000, rotation=0.0, grid=None, observer=None,
                earth_albedo=0.3):
-    L = T.lib()
-    s = M.oi_scene()
-    L.oi_scene_defaults(C.byref(s))
-    s.sun_km = T.R3(*sun)
-    s.target_km = T.R3(*target)
-    s.terms = M.OI_TERM_SUN | M.OI_TERM_EARTH
-    s.earth_albedo = earth_albedo
-    s.epoch_jd = epoch
-    s.earth_rotation_rad = rotation
-    if observer is not None:
-        s.observer_km = T.R3(*observer)
-        s.has_observer = 1
-    m = M.oi_model()
-    m.albedo_model = model
-    keep = None
-    if grid is not None:
-        keep = np.ascontiguousarray(grid, dtype=np.float32)
-        m.albedo_map = keep.ctypes.data_as(C.POINTER(C.c_float))
-        m.albedo_map_n_lat, m.albedo_map_n_lon = keep.shape
-    out = M.oi_illum()
-    st = L.oi_illuminate(C.byref(s), C.byref(m), C.byref(out))
-    del keep
-    return st, out
+    return T.illuminate_albedo(sun, target, model, epoch, rotation, grid, observer, earth_albedo)
 
 
 def field_of(model, epoch, rotation, grid):

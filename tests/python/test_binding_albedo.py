@@ -2,7 +2,6 @@
 """The binding's albedo models (orbillum.illuminate model albedo_model,
 albedo_map, epoch_jd, earth_rotation_rad) against the C library's own
 single calls through the ctypes mirror, and its argument checks."""
-import ctypes as C
 import math
 
 import numpy as np
@@ -15,22 +14,7 @@ M = T.M
 
 
 def c_call(sun, target, model, epoch=0.0, rotation=0.0, grid=None):
-    L = T.lib()
-    s = M.oi_scene()
-    L.oi_scene_defaults(C.byref(s))
-    s.sun_km, s.target_km = T.R3(*sun), T.R3(*target)
-    s.terms = M.OI_TERM_SUN | M.OI_TERM_EARTH
-    s.epoch_jd, s.earth_rotation_rad = epoch, rotation
-    m = M.oi_model()
-    m.albedo_model = model
-    keep = None
-    if grid is not None:
-        keep = np.ascontiguousarray(grid, dtype=np.float32)
-        m.albedo_map = keep.ctypes.data_as(C.POINTER(C.c_float))
-        m.albedo_map_n_lat, m.albedo_map_n_lon = keep.shape
-    out = M.oi_illum()
-    st = L.oi_illuminate(C.byref(s), C.byref(m), C.byref(out))
-    return st, out
+    return T.illuminate_albedo(sun, target, model, epoch, rotation, grid)
 
 
 SUN = (1.496e8, 0.0, 2.0e7)
