@@ -14,6 +14,8 @@ import subprocess
 import numpy as np
 import pytest
 
+from _oi_plan import rotation
+
 orbillum = pytest.importorskip("orbillum", reason="binding not installed: make binding")
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
@@ -21,14 +23,6 @@ PLAN = os.path.join(ROOT, "build", "oi-plan")
 AU = 149597870.7
 SUN = np.array([AU, 0.0, 0.0])
 TARGET = np.array([0.0, 7000.0, 0.0])
-
-
-def rotation(q):
-    w, x, y, z = np.asarray(q, float) / np.linalg.norm(q)
-    return np.array([
-        [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
-        [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
-        [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
 
 
 def unit_quaternions(n, seed):

@@ -10,16 +10,13 @@ full shadow), never against the planner itself.
 import csv
 import io
 import math
-import os
-import subprocess
-from pathlib import Path
 
 import pytest
 from hypothesis import given, settings, HealthCheck
 from hypothesis import strategies as st
 
-ROOT = Path(__file__).resolve().parents[2]
-PLAN = Path(os.environ.get("OI_PLAN", ROOT / "build" / "oi-plan"))
+from _oi_plan import PLAN, run
+
 
 HEADER = ("id,status,sun_fraction,sun_fraction_atm,e_sun,e_earth,e_moon,earth_theta_deg,"
           "earth_h_km,flux_obs,mag_v,exposure_s,gain,snr,flags,detect_margin_mag,e_sky")
@@ -34,12 +31,6 @@ LIT = dict(sun_x=AU, sun_y=0, sun_z=0, target_x=0, target_y=7000, target_z=0)
 LIT_OBS = dict(LIT, observer_x=0, observer_y=7010, observer_z=0)
 # Target behind the Earth on the Sun line, 7000 km: deep umbra.
 DARK = dict(sun_x=AU, sun_y=0, sun_z=0, target_x=-7000, target_y=0, target_z=0)
-
-
-def run(args, stdin=None):
-    assert PLAN.exists(), f"{PLAN} is not built (make all)"
-    p = subprocess.run([str(PLAN)] + list(args), input=stdin, capture_output=True, timeout=60)
-    return p.returncode, p.stdout.decode("utf-8", "replace"), p.stderr.decode("utf-8", "replace")
 
 
 def run_csv(text, *extra):

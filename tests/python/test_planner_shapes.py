@@ -5,31 +5,23 @@ columns and the --shapes file, on normal and hostile input.
 Numbers are checked against closed forms written here: a Sun-lit Lambertian
 plate of area A, albedo a, reflects F = E a A cos(i) cos(e) / (pi d^2) towards
 an observer at distance d (incidence i, emission e); the attitude is turned
-into a rotation matrix here (the textbook formula, not the library's code).
+into a rotation matrix by _oi_plan.rotation (the textbook formula, not the
+library's code).
 """
 import csv
 import io
 import math
-import os
-import subprocess
-from pathlib import Path
 
 import numpy as np
 import pytest
 
-ROOT = Path(__file__).resolve().parents[2]
-PLAN = Path(os.environ.get("OI_PLAN", ROOT / "build" / "oi-plan"))
+from _oi_plan import PLAN, rotation, run
+
 AU = 149597870.7
 TSI = 1361.0
 SUN = np.array([AU, 0.0, 0.0])
 TARGET = np.array([0.0, 7000.0, 0.0])
 MAG_DARK = 99.0
-
-
-def run(args, stdin=None):
-    assert PLAN.exists(), f"{PLAN} is not built (make all)"
-    p = subprocess.run([str(PLAN)] + list(args), input=stdin, capture_output=True, timeout=60)
-    return p.returncode, p.stdout.decode("utf-8", "replace"), p.stderr.decode("utf-8", "replace")
 
 
 def table(rows):
@@ -53,15 +45,6 @@ def _text(v):
 def plan(rows, *extra):
     code, out, err = run(["--csv", "-"] + list(extra), stdin=table(rows).encode())
     return code, list(csv.DictReader(io.StringIO(out))), err
-
-
-def rotation(q):
-    """Body -> input rotation matrix of the unit quaternion (w, x, y, z)."""
-    w, x, y, z = np.asarray(q, float) / np.linalg.norm(q)
-    return np.array([
-        [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
-        [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
-        [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
 
 
 def qmul(a, b):
