@@ -31,6 +31,21 @@ static const double AU = 149597870.7;
 static const double TSI = 1361.0;
 static const double RE = 6378.137;
 
+/* The setting oi_expose chose: its time and gain indices. */
+static void expect_setting(const oi_exposure *out, long time_index, long gain_index)
+{
+    check_int(time_index, out->time_index, "time index");
+    check_int(gain_index, out->gain_index, "gain index");
+}
+
+/* No light and no noise: the first setting, SNR 0, too faint only. */
+static void expect_dark_choice(const oi_exposure *out)
+{
+    expect_setting(out, 0, 0);
+    check_rel(0.0, out->snr, 0, "snr");
+    check_int(OI_FLAG_TOO_FAINT, (long)out->flags, "flags");
+}
+
 /* Synthetic camera: area 1 m^2, k = 1e19 e-/J, so S = flux * 1e19 e-/s.
  * IFOV = 1e-5 / 1e-2 = 1e-3 rad, so B = radiance * 1e13 e-/s. */
 static oi_camera synth(void)
@@ -94,8 +109,7 @@ static void test_choice_best_snr(void **state)
     oi_exposure out;
     (void)state;
     check_int(OI_OK, oi_expose(&c, &in, NULL, &out), "status");
-    check_int(2, out.time_index, "time index");
-    check_int(2, out.gain_index, "gain index");
+    expect_setting(&out, 2, 2);
     check_rel(0.1, out.exposure_s, REL_TOL, "exposure");
     check_rel(4.0, out.gain, 0, "gain");
     check_rel(1000.0, out.signal_e, REL_TOL, "signal");
@@ -118,8 +132,7 @@ static void test_choice_custom_goal(void **state)
     oi_exposure out;
     (void)state;
     check_int(OI_OK, oi_expose(&c, &in, &goal, &out), "status");
-    check_int(1, out.time_index, "time index");
-    check_int(2, out.gain_index, "gain index");
+    expect_setting(&out, 1, 2);
     check_rel(100.0 / sqrt(104.0), out.snr, REL_TOL, "snr");
     check_int(OI_FLAG_TOO_FAINT, (long)out.flags, "flags");
 }
@@ -157,8 +170,7 @@ static void test_all_saturate(void **state)
     oi_exposure out;
     (void)state;
     check_int(OI_OK, oi_expose(&c, &in, NULL, &out), "status");
-    check_int(0, out.time_index, "time index");
-    check_int(0, out.gain_index, "gain index");
+    expect_setting(&out, 0, 0);
     check_rel(10.0, out.fill, REL_TOL, "fill");
     check_int(OI_FLAG_SATURATED, (long)out.flags, "flags");
 }
@@ -171,8 +183,7 @@ static void test_too_faint(void **state)
     oi_exposure out;
     (void)state;
     check_int(OI_OK, oi_expose(&c, &in, NULL, &out), "status");
-    check_int(3, out.time_index, "time index");
-    check_int(2, out.gain_index, "gain index");
+    expect_setting(&out, 3, 2);
     check_rel(1.0 / sqrt(5.0), out.snr, REL_TOL, "snr");
     check_int(OI_FLAG_TOO_FAINT, (long)out.flags, "flags");
 }
@@ -187,10 +198,7 @@ static void test_dark_ties(void **state)
     (void)state;
     c.read_noise_e[0] = c.read_noise_e[1] = c.read_noise_e[2] = 0;
     check_int(OI_OK, oi_expose(&c, &in, NULL, &out), "status");
-    check_int(0, out.time_index, "time index");
-    check_int(0, out.gain_index, "gain index");
-    check_rel(0.0, out.snr, 0, "snr");
-    check_int(OI_FLAG_TOO_FAINT, (long)out.flags, "flags");
+    expect_dark_choice(&out);
 }
 
 /* Background: radiance 1e-10 W/m^2/sr -> 1e3 e-/s, dark 100 e-/s: B = 1100.
@@ -206,8 +214,7 @@ static void test_background_and_psf(void **state)
     c.psf_peak_fraction = (oi_real)0.5;
     c.dark_current_e_s = 100;
     check_int(OI_OK, oi_expose(&c, &in, NULL, &out), "status");
-    check_int(2, out.time_index, "time index");
-    check_int(2, out.gain_index, "gain index");
+    expect_setting(&out, 2, 2);
     check_rel(1000.0, out.signal_e, REL_TOL, "signal");
     check_rel(110.0, out.background_e, REL_TOL, "background");
     check_rel(1110.0 * 4 / 1e4, out.fill, REL_TOL, "fill");
@@ -1152,10 +1159,7 @@ static void test_search_zero_signal_ties(void **state)
     reference_expose_bruteforce(&c, &in, NULL, &want);
     check_int(0, want.time_index, "reference time index");
     check_int(0, want.gain_index, "reference gain index");
-    check_int(0, got.time_index, "time index");
-    check_int(0, got.gain_index, "gain index");
-    check_rel(0.0, got.snr, 0, "snr");
-    check_int(OI_FLAG_TOO_FAINT, (long)got.flags, "flags");
+    expect_dark_choice(&got);
 }
 
 /* The brightest accepted flux is magnitude OI_MAG_MIN = -30 at the nominal
