@@ -42,6 +42,12 @@ def c_sig(x, digits):
     return "%.*g" % (digits, float(x))
 
 
+def c_sig_real(x, digits):
+    """c_sig(x, digits) as a C floating literal (a '.0' where %g wrote an integer)."""
+    s = c_sig(x, digits)
+    return s if ("." in s or "e" in s) else s + ".0"
+
+
 def write(root, rel, text):
     """Write text to root/rel (creating folders); returns the path."""
     path = os.path.join(root or ROOT, rel)

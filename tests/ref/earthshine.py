@@ -24,7 +24,7 @@ import math
 
 import numpy as np
 
-from common import c_sig, cli, write
+from common import c_sig_real, cli, write
 
 from bake.earthshine import reference as ref  # noqa: E402
 
@@ -160,8 +160,7 @@ def sig_psi(v):
 
 
 def sig(v):
-    s = c_sig(v, REF_DIGITS)
-    return s if ("." in s or "e" in s) else s + ".0"
+    return c_sig_real(v, REF_DIGITS)
 
 
 if __name__ == "__main__":

@@ -21,7 +21,7 @@ import math
 
 import numpy as np
 
-from common import c_sig, cli, write
+from common import c_sig_real, cli, write
 
 from bake.earthshine import angular  # noqa: E402
 
@@ -84,8 +84,7 @@ def generate(root, argv=()):
 
 
 def sig(v):
-    s = c_sig(v, REF_DIGITS)
-    return s if ("." in s or "e" in s) else s + ".0"
+    return c_sig_real(v, REF_DIGITS)
 
 
 if __name__ == "__main__":
