@@ -326,16 +326,26 @@ static OI_NOINLINE oi_real starlight_background(const scene_geom *g)
  * floor's disc and the top's (an estimate: most of e_sky comes from the limb
  * near the shadow; docs/skylight.md measures it). 0 for an observer inside
  * the atmosphere or a boresight that misses the ring. */
+/* The sky table of the model and the radii of its floor and top: 0, or -1
+ * without a table. A frame of its own: the resolved model is not live
+ * during the table's lookup (make stack). */
+static OI_NOINLINE int sky_radii(const oi_model *model, const oi_sky_table **t, oi_real *top,
+                                 oi_real *fl)
+{
+    oi_model m;
+    if (oi__model_resolve(model, &m) < 0) return -1;
+    if (oi__sky_table_of(&m, t) < 0 || *t == NULL) return -1;
+    *top = m.earth_radius_km + (*t)->top_km;
+    *fl = m.earth_radius_km + (*t)->floor_km;
+    return 0;
+}
+
 static OI_NOINLINE oi_real sky_background(const oi_scene *scene, const oi_model *model,
                                           const scene_geom *g)
 {
-    oi_model m;
     const oi_sky_table *t;
     oi_real s_hat[3], o_hat[3], c[3], top, fl, ob, b2, theta, e, psi, st, sf, ct, cf, d_sun;
-    if (oi__model_resolve(model, &m) < 0) return 0;
-    if (oi__sky_table_of(&m, &t) < 0 || t == NULL) return 0;
-    top = m.earth_radius_km + t->top_km;
-    fl = m.earth_radius_km + t->floor_km;
+    if (sky_radii(model, &t, &top, &fl) < 0) return 0;
     if (!(g->r_obs > top) || !(fl < top)) return 0;
     ob = oi__dot(scene->observer_km, g->bh);
     b2 = (g->r_obs - ob) * (g->r_obs + ob); /* squared closest approach (|ob| <= r_obs) */
