@@ -49,7 +49,7 @@ OI_PUBLIC := oi_status_name oi_lambert_phase oi_angle oi_cap_overlap oi_sun_frac
 STACK_GUARD := oi_status_name oi_lambert_phase oi_angle oi_cap_overlap oi_moon_phase_law \
   oi_scene_defaults oi_magnitude_v oi_flux_from_magnitude oi_camera_builtin oi_camera_find \
   oi_flag_name oi_shape_check oi_shape_builtin oi_shape_find oi_facet_brdf \
-  oi_earthshine@m4f oi_expose@m4f oi_expose_scene@m4f
+  oi_expose oi_earthshine@m4f oi_expose_scene@m4f
 
 cfg_core = $(word 1,$(subst -, ,$(1)))
 cfg_opt = $(word 2,$(subst -, ,$(1)))
