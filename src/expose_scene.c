@@ -340,20 +340,29 @@ static OI_NOINLINE int sky_radii(const oi_model *model, const oi_sky_table **t, 
     return 0;
 }
 
+/* The angle between the Sun and the observer seen from the Earth's centre,
+ * and the Sun's distance (km). A frame of its own: the unit vectors are not
+ * live during the sky table's lookup (make stack). */
+static OI_NOINLINE oi_real sun_observer_angle(const oi_scene *scene, oi_real *d_sun)
+{
+    oi_real s_hat[3], o_hat[3], c[3];
+    *d_sun = oi__unit(scene->sun_km, s_hat);
+    (void)oi__unit(scene->observer_km, o_hat);
+    oi__cross(s_hat, o_hat, c);
+    return OI_ATAN2(oi__norm(c), oi__dot(s_hat, o_hat));
+}
+
 static OI_NOINLINE oi_real sky_background(const oi_scene *scene, const oi_model *model,
                                           const scene_geom *g)
 {
     const oi_sky_table *t;
-    oi_real s_hat[3], o_hat[3], c[3], top, fl, ob, b2, theta, e, psi, st, sf, ct, cf, d_sun;
+    oi_real top, fl, ob, b2, theta, e, psi, st, sf, ct, cf, d_sun;
     if (sky_radii(model, &t, &top, &fl) < 0) return 0;
     if (!(g->r_obs > top) || !(fl < top)) return 0;
     ob = oi__dot(scene->observer_km, g->bh);
     b2 = (g->r_obs - ob) * (g->r_obs + ob); /* squared closest approach (|ob| <= r_obs) */
     if (!(ob < 0) || b2 >= top * top || b2 <= fl * fl) return 0;
-    d_sun = oi__unit(scene->sun_km, s_hat);
-    (void)oi__unit(scene->observer_km, o_hat);
-    oi__cross(s_hat, o_hat, c);
-    theta = OI_ATAN2(oi__norm(c), oi__dot(s_hat, o_hat));
+    theta = sun_observer_angle(scene, &d_sun);
     (void)oi__sky_lookup(t, theta, g->r_obs, &e, &psi);
     st = top / g->r_obs;
     sf = fl / g->r_obs;
