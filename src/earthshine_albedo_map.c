@@ -123,7 +123,9 @@ static int value(const oi__albedo_field *f, int i, int j, oi_real *v)
 static NODE_INLINE void node(const cells *q, oi_real sc, oi_real cc, oi_real lam, oi_real wt, oi_real ti,
                  oi_real tj, const oi_real v[4], oi__albedo_sums *acc)
 {
-    oi_real sl, cl, p[3], t[3], ci, ce, d2, d, kw, a, da, om[3];
+    /* p, once t is formed, holds the cross product, and t the unit
+     * direction omega: fewer arrays live in the row's frame (make stack) */
+    oi_real sl, cl, p[3], t[3], ci, ce, d2, d, kw, a, da;
     int i;
     OI_SINCOS(lam, &sl, &cl);
     p[0] = sc * cl;
@@ -142,19 +144,19 @@ static NODE_INLINE void node(const cells *q, oi_real sc, oi_real cc, oi_real lam
     /* a map of one value gives that value exactly (every difference 0) */
     a = v[0] + ti * (v[2] - v[0]) + tj * (v[1] - v[0]) + ti * tj * ((v[3] - v[2]) - (v[1] - v[0]));
     da = a - q->a_ref;
-    for (i = 0; i < 3; i++) om[i] = t[i] / d;
+    for (i = 0; i < 3; i++) t[i] = t[i] / d;
     acc->s0 += kw;
     acc->s1 += kw * da;
     for (i = 0; i < 3; i++) {
-        acc->w[i] += kw * om[i];
-        acc->v[i] += kw * da * om[i];
+        acc->w[i] += kw * t[i];
+        acc->v[i] += kw * da * t[i];
     }
     if (da != (oi_real)0) acc->varies = 1;
     if (q->has_obs) {
-        oi_real cr[3], sx, cx, ph;
-        oi__cross(om, q->o, cr);
-        sx = oi__norm_bounded(cr);
-        cx = oi__dot(om, q->o);
+        oi_real sx, cx, ph;
+        oi__cross(t, q->o, p);
+        sx = oi__norm_bounded(p);
+        cx = oi__dot(t, q->o);
         ph = oi__lambert_phase_cs(OI_ATAN2(sx, cx), cx, sx);
         acc->q += kw * ph;
         acc->p += kw * da * ph;

@@ -436,6 +436,9 @@ static OI_NOINLINE unsigned expose_moving(const oi_camera *camera, const oi_expo
     return flags;
 }
 
+static void expose_at_rest(const oi_camera *camera, const oi_expose_in *in,
+                           const expose_rates *r, unsigned flags, oi_exposure *out);
+
 /*
  * oi__expose_valid: the choice of oi_expose for a valid camera; out already
  * zeroed, and left so on error.
@@ -466,7 +469,7 @@ int oi__expose_valid(const oi_camera *camera, const oi_expose_in *in,
 {
     expose_rates r;
     oi_real dark;
-    int kk, best_t, best_g, st;
+    int st;
     unsigned flags;
 
     st = check_input(in, goal, &r);
@@ -484,32 +487,42 @@ int oi__expose_valid(const oi_camera *camera, const oi_expose_in *in,
         out->rate_rad_s = in->rate_rad_s;
         return OI_OK;
     }
-    kk = first_time_over_goal(camera, &r); /* 1 */
+    expose_at_rest(camera, in, &r, flags, out);
+    return OI_OK;
+}
+
+/* The target at rest: steps 1-5 above; out->flags gets flags and the
+ * search's. A frame of its own: the search's locals are not live while the
+ * moving target's trail is integrated (make stack). */
+static OI_NOINLINE void expose_at_rest(const oi_camera *camera, const oi_expose_in *in,
+                                       const expose_rates *r, unsigned flags, oi_exposure *out)
+{
+    int kk, best_t, best_g;
+    kk = first_time_over_goal(camera, r); /* 1 */
     if (kk == 0) {
         /* 2. */
-        evaluate(camera, &r, 0, 0, out);
+        evaluate(camera, r, 0, 0, out);
         if (!(out->fill < OI_R(1.0))) flags |= OI_FLAG_SATURATED;
     } else {
-        best_setting(camera, &r, kk, &best_t, &best_g);
-        evaluate(camera, &r, best_t, best_g, out);
+        best_setting(camera, r, kk, &best_t, &best_g);
+        evaluate(camera, r, best_t, best_g, out);
     }
-    if (r.det_k < 0) {
-        if (snr_at(&r, camera->times_s[camera->n_times - 1],
-                   camera->read_noise_e[camera->n_gains - 1]) < r.snr_min) {
+    if (r->det_k < 0) {
+        if (snr_at(r, camera->times_s[camera->n_times - 1],
+                   camera->read_noise_e[camera->n_gains - 1]) < r->snr_min) {
             flags |= OI_FLAG_TOO_FAINT;
         }
     } else {
         oi_real t = camera->times_s[camera->n_times - 1];
-        if (!detected(&r, r.rate_s * t, r.rate_b * t, camera->read_noise_e[camera->n_gains - 1])) {
+        if (!detected(r, r->rate_s * t, r->rate_b * t, camera->read_noise_e[camera->n_gains - 1])) {
             flags |= OI_FLAG_TOO_FAINT;
         }
     }
-    detect_margin(camera, &r, out);
+    detect_margin(camera, r, out);
     out->flags = flags;
     out->sun_angle_rad = 0;
     out->background_w_m2_sr = in->background_w_m2_sr;
     out->trail_factor = 1; /* at rest: no trail */
-    return OI_OK;
 }
 
 /* oi_expose: the contract is in include/orbillum.h; the method above

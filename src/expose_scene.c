@@ -326,24 +326,43 @@ static OI_NOINLINE oi_real starlight_background(const scene_geom *g)
  * floor's disc and the top's (an estimate: most of e_sky comes from the limb
  * near the shadow; docs/skylight.md measures it). 0 for an observer inside
  * the atmosphere or a boresight that misses the ring. */
+/* The sky table of the model and the radii of its floor and top: 0, or -1
+ * without a table. A frame of its own: the resolved model is not live
+ * during the table's lookup (make stack). */
+static OI_NOINLINE int sky_radii(const oi_model *model, const oi_sky_table **t, oi_real *top,
+                                 oi_real *fl)
+{
+    oi_model m;
+    if (oi__model_resolve(model, &m) < 0) return -1;
+    if (oi__sky_table_of(&m, t) < 0 || *t == NULL) return -1;
+    *top = m.earth_radius_km + (*t)->top_km;
+    *fl = m.earth_radius_km + (*t)->floor_km;
+    return 0;
+}
+
+/* The angle between the Sun and the observer seen from the Earth's centre,
+ * and the Sun's distance (km). A frame of its own: the unit vectors are not
+ * live during the sky table's lookup (make stack). */
+static OI_NOINLINE oi_real sun_observer_angle(const oi_scene *scene, oi_real *d_sun)
+{
+    oi_real s_hat[3], o_hat[3], c[3];
+    *d_sun = oi__unit(scene->sun_km, s_hat);
+    (void)oi__unit(scene->observer_km, o_hat);
+    oi__cross(s_hat, o_hat, c);
+    return OI_ATAN2(oi__norm(c), oi__dot(s_hat, o_hat));
+}
+
 static OI_NOINLINE oi_real sky_background(const oi_scene *scene, const oi_model *model,
                                           const scene_geom *g)
 {
-    oi_model m;
     const oi_sky_table *t;
-    oi_real s_hat[3], o_hat[3], c[3], top, fl, ob, b2, theta, e, psi, st, sf, ct, cf, d_sun;
-    if (oi__model_resolve(model, &m) < 0) return 0;
-    if (oi__sky_table_of(&m, &t) < 0 || t == NULL) return 0;
-    top = m.earth_radius_km + t->top_km;
-    fl = m.earth_radius_km + t->floor_km;
+    oi_real top, fl, ob, b2, theta, e, psi, st, sf, ct, cf, d_sun;
+    if (sky_radii(model, &t, &top, &fl) < 0) return 0;
     if (!(g->r_obs > top) || !(fl < top)) return 0;
     ob = oi__dot(scene->observer_km, g->bh);
     b2 = (g->r_obs - ob) * (g->r_obs + ob); /* squared closest approach (|ob| <= r_obs) */
     if (!(ob < 0) || b2 >= top * top || b2 <= fl * fl) return 0;
-    d_sun = oi__unit(scene->sun_km, s_hat);
-    (void)oi__unit(scene->observer_km, o_hat);
-    oi__cross(s_hat, o_hat, c);
-    theta = OI_ATAN2(oi__norm(c), oi__dot(s_hat, o_hat));
+    theta = sun_observer_angle(scene, &d_sun);
     (void)oi__sky_lookup(t, theta, g->r_obs, &e, &psi);
     st = top / g->r_obs;
     sf = fl / g->r_obs;

@@ -44,10 +44,12 @@ static oi_real chosen_disc(const oi_model *m, oi_real frac, oi_real frac_ld)
  *   visible = fraction_earth - (1 - fraction_moon) + area(S, E, M) / area(S).
  * The limb-darkened disc: a ring integral over the Sun's disc of what both
  * discs leave visible (oi__fraction_ld_two, src/limb_darkened_union.c).
+ * Out of line: its caps' centres and radii are not live while the
+ * ellipsoid's silhouette is traced (oblate_both, make stack).
  */
-static void both_occulters(const oi_real u_sun[3], const oi_real u_moon[3],
+static OI_NOINLINE void both_occulters(const oi_real u_sun[3], const oi_real u_moon[3],
                            const oi_real target_km[3], oi_real rm, oi_real sep_moon, oi_real fm,
-                           oi_real fm_ld, const oi_model *m, oi_shadow *sh)
+                           oi_real fm_ld, oi_shadow *sh)
 {
     oi_real c[3][3], r[3], triple, a_sun, lim;
     int i;
@@ -77,20 +79,23 @@ static void both_occulters(const oi_real u_sun[3], const oi_real u_moon[3],
     lim = fm_ld < (oi_real)1 ? fm_ld : (oi_real)1;
     if (sh->fraction_ld > lim) sh->fraction_ld = lim;
 #endif
-#ifndef OI_NO_OBLATE
-    if (m->earth_shape == OI_EARTH_WGS84 && r[0] <= OI_R(0.5)) {
-        /* the ellipsoid's silhouette and the Moon's disc (src/oblate.c);
-         * the limb-darkened fraction moved by as much as the uniform one */
-        const oi_real exact = oi__oblate_visible(u_sun, r[0], target_km, m->earth_radius_km,
-                                                 u_moon, rm);
-        sh->fraction_ld = oi__clamp(sh->fraction_ld + (exact - sh->fraction), (oi_real)0,
-                                    (oi_real)1);
-        sh->fraction = exact;
-    }
-#else
-    (void)m;
-#endif
 }
+
+#ifndef OI_NO_OBLATE
+/* both_occulters on the ellipsoid: its silhouette and the Moon's disc
+ * (src/oblate.c) replace the sphere's uniform fraction; the limb-darkened
+ * fraction moved by as much as the uniform one. */
+static OI_NOINLINE void oblate_both(const oi_real u_sun[3], const oi_real u_moon[3],
+                                    const oi_real target_km[3], oi_real rm, const oi_model *m,
+                                    oi_shadow *sh)
+{
+    const oi_real exact = oi__oblate_visible(u_sun, sh->sun_radius_rad, target_km,
+                                             m->earth_radius_km, u_moon, rm);
+    sh->fraction_ld = oi__clamp(sh->fraction_ld + (exact - sh->fraction), (oi_real)0,
+                                (oi_real)1);
+    sh->fraction = exact;
+}
+#endif
 
 /*
  * The Moon's shadow on a point: sh holds oi__sun_shadow's result for the
@@ -132,7 +137,11 @@ int oi__moon_shadow(const oi_real sun_km[3], const oi_real moon_km[3],
         sh->fraction = fm;
         sh->fraction_ld = fm_ld;
     } else if (sh->region != OI_SHADOW_UMBRA) {
-        both_occulters(u_sun, u_moon, point_km, rm, sep, fm, fm_ld, m, sh);
+        both_occulters(u_sun, u_moon, point_km, rm, sep, fm, fm_ld, sh);
+#ifndef OI_NO_OBLATE
+        if (m->earth_shape == OI_EARTH_WGS84 && sh->sun_radius_rad <= OI_R(0.5))
+            oblate_both(u_sun, u_moon, point_km, rm, m, sh);
+#endif
     }
     new_disc = chosen_disc(m, sh->fraction, sh->fraction_ld);
     if (sh->fraction_atm == old)

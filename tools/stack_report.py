@@ -15,7 +15,10 @@ Worst case of f = frame(f) + max over callees of worst case(callee).
 Fails (exit 1) when the runtime has recursion (a cycle in its call graph),
 a dynamic frame (VLA, alloca) or an indirect call it cannot follow. A public
 function above --limit bytes is reported as a missed goal (goal.* line), not
-a failure. Each function gets two numbers: the worst case through every
+a failure, unless --guard names it: the calls that meet the goal are held to
+it (a regression guard: exit 1 when one of them grows past --limit). A guard
+entry is a function name (every configuration) or name@core (the
+configurations of that core, e.g. oi_expose_scene@m4f). Each function gets two numbers: the worst case through every
 path, and `.bounded_args`, the same without libm's large-argument reduction
 (__kernel_rem_pio2 / __kernel_rem_pio2f, a 416-656 byte frame that newlib's
 sin/cos/tan reach only for |x| > 2^7 pi/2 (float) or 2^19 pi/2 (double);
@@ -147,6 +150,8 @@ def main():
     ap.add_argument("--objdump", default="arm-none-eabi-objdump")
     ap.add_argument("--limit", type=int, default=512)
     ap.add_argument("--public", required=True)
+    ap.add_argument("--guard", default="",
+                    help="public functions held to --limit: name (every cfg) or name@core")
     args = ap.parse_args()
     failed = False
     over = []
@@ -220,9 +225,34 @@ def main():
         print("goal.stack_at_most_%d missed (worst/bounded_args bytes: %s)" % (args.limit, ", ".join(over)))
     else:
         print("goal.stack_at_most_%d met" % args.limit)
+    guarded, broken = guards(args.guard, cfgs, summary, args.limit)
+    if guarded:
+        if broken:
+            print("guard.stack_at_most_%d broken (bytes: %s)" % (args.limit, ", ".join(broken)))
+        else:
+            print("guard.stack_at_most_%d held (%d calls x configurations)" % (args.limit, guarded))
     if failed:
         print("stack: FAILED (recursion, dynamic frame or indirect call in the runtime)")
-    return 1 if failed else 0
+    if broken:
+        print("stack: FAILED (a guarded public function grew past %d bytes)" % args.limit)
+    return 1 if failed or broken else 0
+
+
+def guards(spec, cfgs, summary, limit):
+    """The guarded (cfg, function) pairs counted and those over the limit."""
+    n, broken = 0, []
+    for entry in spec.split():
+        fn, _, core = entry.partition("@")
+        for cfg in cfgs:
+            if core and cfg.split("-")[0] != core:
+                continue
+            if (cfg, fn) not in summary:
+                broken.append("%s.%s missing" % (cfg, fn))
+                continue
+            n += 1
+            if summary[(cfg, fn)][0] > limit:
+                broken.append("%s.%s %d" % (cfg, fn, summary[(cfg, fn)][0]))
+    return n, broken
 
 
 if __name__ == "__main__":
