@@ -131,6 +131,9 @@ def main():
     ap.add_argument("--n1", type=int, default=2)
     ap.add_argument("--n2", type=int, default=12)
     ap.add_argument("--no-quadrature", action="store_true")
+    ap.add_argument("--baseline", metavar="BENCH",
+                    help="the bench of the illumination before the batch interface (make bench builds "
+                         "it from git): its oi_illuminate over the same mix, the full illumination goal's base")
     ap.add_argument("--goals-from", metavar="JSON",
                     help="print the goal lines of a finished run's bench.json and stop")
     ap.add_argument("--only-peers", action="store_true",
@@ -178,6 +181,20 @@ def main():
                         per = (t2 - t1) / float((args.n2 - args.n1) * ns / len(LIGHTS))
                         out.put("bench.%s.%s.%s.instructions" % (prec, c, light), "%.0f" % per,
                                 "instructions", "the %s third of the mix" % light)
+        if args.baseline:  # the same mix through the baseline's oi_illuminate, in this run
+            ns = nscenes(args.baseline)
+            t1 = callgrind_total(args.baseline, "all", args.n1, tmp)
+            t2 = callgrind_total(args.baseline, "all", args.n2, tmp)
+            out.put("bench.double.all_baseline.instructions",
+                    "%.0f" % ((t2 - t1) / float((args.n2 - args.n1) * ns)), "instructions",
+                    "oi_illuminate before the batch interface, same mix; callgrind, (I(%d) - I(%d)) / (%d x %d scenes)"
+                    % (args.n2, args.n1, args.n2 - args.n1, ns))
+            for light in LIGHTS:
+                t1 = callgrind_total(args.baseline, "all", args.n1, tmp, light)
+                t2 = callgrind_total(args.baseline, "all", args.n2, tmp, light)
+                out.put("bench.double.all_baseline.%s.instructions" % light,
+                        "%.0f" % ((t2 - t1) / float((args.n2 - args.n1) * ns / len(LIGHTS))),
+                        "instructions", "the %s third of the mix" % light)
         b = os.path.join(args.bindir, "bench-double")
         if shutil.which("callgrind_annotate"):
             callgrind_profile(b, "all_expose", args.n2, nscenes(b), tmp, out, "double")
@@ -354,17 +371,21 @@ def goals(out):
     # outputs a planner reads (OI_BATCH_OBSERVER: irradiances, fluxes,
     # magnitude), in instructions (wall times of one shared run vary by 2x);
     # beside it the batch with every output and with the irradiances only
+    # The base is the baseline's oi_illuminate (before the batch interface, built
+    # from git by make bench); without it, today's oi_illuminate.
+    base = val("bench.double.all_baseline.instructions")
     a = val("bench.double.all.instructions")
     b = val("bench.double.all_batch_observer.instructions")
     full = val("bench.double.all_batch_full.instructions")
     irr = val("bench.double.all_batch_irradiance.instructions")
     if a and b:
-        extra = ""
-        if full and irr:
-            extra = "; every output %.2fx, irradiances only %.2fx" % (a / full, a / irr)
-        out.put("goal.full_illumination_3x_faster", "met" if a / b >= 3 else "missed", "-",
-                "oi_illuminate / oi_illuminate_batch_outputs(OI_BATCH_OBSERVER), instructions "
-                "per scene: %.2fx%s%s" % (a / b, extra, note))
+        ref, what = (base, "oi_illuminate before the batch interface") if base else (a, "oi_illuminate")
+        extra = "; every output %.2fx, irradiances only %.2fx" % (ref / full, ref / irr) if full and irr else ""
+        if base:
+            extra += "; today's oi_illuminate %.2fx" % (base / a)
+        out.put("goal.full_illumination_3x_faster", "met" if ref / b >= 3 else "missed", "-",
+                "%s / oi_illuminate_batch_outputs(OI_BATCH_OBSERVER), instructions "
+                "per scene: %.2fx%s%s" % (what, ref / b, extra, note))
     s = val("bench.double.earthshine.speedup_vs_quadrature")
     if s is not None:
         out.put("goal.earthshine_%dx_faster_than_quadrature" % GOAL_SPEEDUP, "met" if s >= GOAL_SPEEDUP else "missed",
