@@ -59,7 +59,7 @@ bench: $(BENCH_DIR)/bench-double $(BENCH_DIR)/bench-float deps-py deps-bench ## 
 
 # The illumination as it was before the batch interface, the baseline of the full
 # illumination's speed goal: the library, tables and bench of the parent of the commit that
-# added src/batch.c, built as the bench is (-O2, double) and run over the same scene mix
+# added src/batch.c, built with the library's flags (double) and run over the same scene mix
 # (bench/scenes.h is unchanged since). Needs the git history.
 ILLUM_BASELINE := $(BENCH_DIR)/illum-baseline/bench-double
 $(ILLUM_BASELINE):
@@ -67,7 +67,7 @@ $(ILLUM_BASELINE):
 	  [ -n "$$rev" ] || { echo "illum-baseline: no git history of src/batch.c"; exit 1; }; \
 	  d=$(BENCH_DIR)/illum-baseline; rm -rf $$d && mkdir -p $$d && \
 	  git archive "$$rev^" src include tables bench | tar -x -C $$d && \
-	  $(CC) -std=c99 -O2 -g -I$$d/include -I$$d/src -I$$d/tables -D_POSIX_C_SOURCE=199309L \
+	  $(CC) -std=c99 $(OPT) $(RT_MATH) -g -I$$d/include -I$$d/src -I$$d/tables -D_POSIX_C_SOURCE=199309L \
 	    $$d/bench/bench.c $$d/src/*.c $$d/tables/*.c -lm -o $@
 
 # ---- the catalogue planner's throughput (bench/catalog_bench.py): scenes per CPU-second per
