@@ -437,6 +437,71 @@ static OI_NOINLINE int observer_term(const oi_scene *scene, const oi_model *m,
     return OI_OK;
 }
 
+/* The scene's terms in their order, once for both callers: oi_illuminate's
+ * (oi__illuminate_resolved, every output) and the batch's under an outputs
+ * mask (oi__illuminate_outputs, src/illuminate_outputs.c: the Sun's term
+ * through sun_term_outputs, the observer's only when asked). out is zeroed
+ * first and again on an error. */
+#ifdef OI_ILLUMINATE_OUTPUTS_ONLY
+static int sun_term_outputs(const oi_scene *scene, const oi_model *m, unsigned outputs,
+                            oi_illum *out);
+#define SCENE_SUN_TERM(scene, m, outputs, out) sun_term_outputs((scene), (m), (outputs), (out))
+#else
+#define SCENE_SUN_TERM(scene, m, outputs, out) ((void)(outputs), sun_term((scene), (m), (out)))
+#endif
+static int scene_terms(const oi_scene *scene, const oi_model *m, unsigned outputs, oi_illum *out)
+{
+    int st, warn = OI_OK;
+    oi_real shape_add = (oi_real)0;
+
+    memset(out, 0, sizeof *out);
+    st = check_scene(scene, m);
+    if (st < 0) return st;
+
+    st = SCENE_SUN_TERM(scene, m, outputs, out);
+    if (st < 0) goto fail;
+    if (st > 0) warn = st;
+#ifndef OI_NO_MOON
+    if (moon_given(scene)) {
+        st = moon_shadow_term(scene, m, out);
+        if (st < 0) goto fail;
+    }
+#endif
+    st = earth_term(scene, m, out);
+    if (st < 0) goto fail;
+    if (st > 0) warn = st;
+#ifndef OI_NO_ALBEDO_MODELS
+    if ((scene->terms & OI_TERM_EARTH) && m->albedo_model != OI_ALBEDO_UNIFORM) {
+        st = albedo_field_term(scene, m, out, &shape_add);
+        if (st < 0) goto fail;
+    }
+#endif
+#ifndef OI_NO_SKYLIGHT
+    if (scene->terms & OI_TERM_SKY) {
+        st = sky_term(scene, m, out);
+        if (st < 0) goto fail;
+        if (st > 0) warn = st;
+    }
+#endif
+#ifndef OI_NO_MOON
+    if (scene->terms & OI_TERM_MOON) {
+        st = moon_sun_fraction(scene, m, &out->moon_sun_fraction);
+        if (st < 0) goto fail;
+        st = moon_term(scene, m, out);
+        if (st < 0) goto fail;
+    }
+#endif
+    if (scene->has_observer && (outputs & OI_BATCH_OBSERVER)) {
+        st = observer_term(scene, m, shape_add, out);
+        if (st < 0) goto fail;
+    }
+    return warn;
+
+fail:
+    memset(out, 0, sizeof *out);
+    return st;
+}
+
 #ifndef OI_ILLUMINATE_OUTPUTS_ONLY /* src/illuminate_outputs.c: the helpers above only */
 /*
  * oi_illuminate: the contract (given, returned, statuses) is in
@@ -513,54 +578,6 @@ int oi__albedo_resolve(const oi_model *in, oi_model *out)
  * batch, src/batch.c); out is zeroed here too. */
 int oi__illuminate_resolved(const oi_scene *scene, const oi_model *m, oi_illum *out)
 {
-    int st, warn = OI_OK;
-    oi_real shape_add = (oi_real)0;
-
-    memset(out, 0, sizeof *out);
-    st = check_scene(scene, m);
-    if (st < 0) return st;
-
-    st = sun_term(scene, m, out);
-    if (st < 0) goto fail;
-    if (st > 0) warn = st;
-#ifndef OI_NO_MOON
-    if (moon_given(scene)) {
-        st = moon_shadow_term(scene, m, out);
-        if (st < 0) goto fail;
-    }
-#endif
-    st = earth_term(scene, m, out);
-    if (st < 0) goto fail;
-    if (st > 0) warn = st;
-#ifndef OI_NO_ALBEDO_MODELS
-    if ((scene->terms & OI_TERM_EARTH) && m->albedo_model != OI_ALBEDO_UNIFORM) {
-        st = albedo_field_term(scene, m, out, &shape_add);
-        if (st < 0) goto fail;
-    }
-#endif
-#ifndef OI_NO_SKYLIGHT
-    if (scene->terms & OI_TERM_SKY) {
-        st = sky_term(scene, m, out);
-        if (st < 0) goto fail;
-        if (st > 0) warn = st;
-    }
-#endif
-#ifndef OI_NO_MOON
-    if (scene->terms & OI_TERM_MOON) {
-        st = moon_sun_fraction(scene, m, &out->moon_sun_fraction);
-        if (st < 0) goto fail;
-        st = moon_term(scene, m, out);
-        if (st < 0) goto fail;
-    }
-#endif
-    if (scene->has_observer) {
-        st = observer_term(scene, m, shape_add, out);
-        if (st < 0) goto fail;
-    }
-    return warn;
-
-fail:
-    memset(out, 0, sizeof *out);
-    return st;
+    return scene_terms(scene, m, OI_BATCH_SCENE_ALL, out);
 }
 #endif /* OI_ILLUMINATE_OUTPUTS_ONLY */
