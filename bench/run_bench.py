@@ -137,12 +137,20 @@ def main():
                          "it from git): its oi_illuminate over the same mix, the full illumination goal's base")
     ap.add_argument("--goals-from", metavar="JSON",
                     help="print the goal lines of a finished run's bench.json and stop")
+    ap.add_argument("--only-illumination", action="store_true",
+                    help="only the full illumination goal's instructions (double, callgrind: the "
+                         "scene configurations and the --baseline), then the goals")
     ap.add_argument("--only-peers", action="store_true",
                     help="only the peers and the binding's cost (section 2b), then the goals")
     args = ap.parse_args()
     out = Out(args.out)
     if args.only_peers:
         peer_run(args, out)
+        goals(out)
+        out.save()
+        return 0
+    if args.only_illumination:
+        illumination_run(args, out)
         goals(out)
         out.save()
         return 0
@@ -212,6 +220,25 @@ def main():
     goals(out)
     out.save()
     return 0
+
+
+ILLUMINATION_CONFIGS = ["all", "all_batch_observer", "all_batch_observer_mean", "all_batch_full",
+                        "all_batch_irradiance"]
+
+
+def illumination_run(args, out):
+    """The full illumination goal's numbers alone, as section 2 forms them."""
+    tmp = os.path.join(args.bindir, "cg")
+    os.makedirs(tmp, exist_ok=True)
+    runs = [(os.path.join(args.bindir, "bench-double"), c, c) for c in ILLUMINATION_CONFIGS]
+    if args.baseline:
+        runs.append((args.baseline, "all", "all_baseline"))
+    for b, c, name in runs:
+        ns = nscenes(b)
+        t1 = callgrind_total(b, c, args.n1, tmp)
+        t2 = callgrind_total(b, c, args.n2, tmp)
+        out.put("bench.double.%s.instructions" % name, "%.0f" % ((t2 - t1) / float((args.n2 - args.n1) * ns)),
+                "instructions", "callgrind, (I(%d) - I(%d)) / (%d x %d scenes)" % (args.n2, args.n1, args.n2 - args.n1, ns))
 
 
 def peer_run(args, out):

@@ -57,6 +57,14 @@ bench: $(BENCH_DIR)/bench-double $(BENCH_DIR)/bench-float deps-py deps-bench ## 
 	@nice -n 5 $(PY) bench/run_bench.py --bindir $(BENCH_DIR) --out $(BENCH_DIR)/bench.txt \
 	  $$([ -x $(ILLUM_BASELINE) ] && echo --baseline $(ILLUM_BASELINE))
 
+# ---- the full illumination goal alone (instructions, double): today's scene configurations
+# and the baseline below, then the goal lines (build/bench/illum.txt)
+.PHONY: illum-bench
+illum-bench: $(BENCH_DIR)/bench-double deps-py ## the full illumination goal: instructions per scene, today's batch against the baseline's oi_illuminate (build/bench/illum.txt)
+	-@$(MAKE) --no-print-directory $(ILLUM_BASELINE)
+	nice -n 5 $(PY) bench/run_bench.py --bindir $(BENCH_DIR) --out $(BENCH_DIR)/illum.txt --only-illumination \
+	  $$([ -x $(ILLUM_BASELINE) ] && echo --baseline $(ILLUM_BASELINE))
+
 # The illumination as it was before the batch interface, the baseline of the full
 # illumination's speed goal: the library, tables and bench of the parent of the commit that
 # added src/batch.c, built with the library's flags (double) and run over the same scene mix
