@@ -353,21 +353,31 @@ static OI_NOINLINE int sky_term(const oi_scene *scene, const oi_model *m, oi_ill
  * distribution (the cubature, or the table's moments with
  * OI_EARTH_REFLECT_TABLE: src/earthshine_angular.c); 0 below 100 km (then
  * the caller keeps the mean direction's flux). */
+/* The observer's direction in the target's local frame (o) and the Sun's
+ * angle theta from the zenith (cs: cosine, sine): in a frame of its own, so
+ * that the frame's vectors are not on the stack while the cubature runs. */
+static OI_NOINLINE void sphere_local(const oi_scene *scene, const oi_real obs_hat[3],
+                                     oi_real o[3], oi_real cs[2])
+{
+    oi_real r_hat[3], s_hat[3], x[3], y[3], c[3];
+    oi__local_frame_toward(scene->target_km, scene->sun_km, obs_hat, r_hat, s_hat, x, y);
+    oi__cross(s_hat, r_hat, c);
+    cs[1] = oi__norm_bounded(c);
+    cs[0] = oi__dot(s_hat, r_hat);
+    o[0] = oi__dot(obs_hat, x);
+    o[1] = oi__dot(obs_hat, y);
+    o[2] = oi__dot(obs_hat, r_hat);
+}
+
 static OI_NOINLINE int earth_flux_moments(const oi_scene *scene, const oi_model *m,
                                           const oi_earth_angular_table *t,
                                           const oi_real obs_hat[3], oi_real ratio,
                                           oi_real shape_add, oi_illum *out)
 {
-    oi_real r_hat[3], s_hat[3], x[3], y[3], o[3], c[3], cos_theta, sin_theta, shape;
-    oi__local_frame_toward(scene->target_km, scene->sun_km, obs_hat, r_hat, s_hat, x, y);
-    oi__cross(s_hat, r_hat, c);
-    sin_theta = oi__norm_bounded(c);
-    cos_theta = oi__dot(s_hat, r_hat);
-    o[0] = oi__dot(obs_hat, x);
-    o[1] = oi__dot(obs_hat, y);
-    o[2] = oi__dot(obs_hat, r_hat);
+    oi_real o[3], cs[2], shape;
+    sphere_local(scene, obs_hat, o, cs);
     (void)t;
-    if (!oi__earth_sphere_shape(m, out->earth_theta, cos_theta, sin_theta, out->earth_h_km,
+    if (!oi__earth_sphere_shape(m, out->earth_theta, cs[0], cs[1], out->earth_h_km,
                                 m->earth_radius_km, o, out->earth_phi, &shape))
         return 0;
     /* the albedo field's change (0 when uniform), the sum kept non-negative */
