@@ -43,6 +43,9 @@
  *                  a planner reads: irradiances, the fluxes at the observer,
  *                  magnitude; no shadow angles, no limb-darkened fraction, no
  *                  directions), as all
+ *   all_batch_observer_mean  as all_batch_observer, the sphere's earthshine
+ *                  reflected from its mean direction (OI_EARTH_REFLECT_MEAN, what
+ *                  oi_illuminate did before the angular distribution)
  *   all_batch_irradiance  the same, mask 0 (the irradiances at the target)
  *   all_batch_full  the same, OI_BATCH_SCENE_ALL (every output of oi_illuminate)
  *   earthshine_batch  oi_earthshine_batch (as earthshine)
@@ -86,7 +89,8 @@ enum { C_ALL, C_SUN, C_SUN_EARTH, C_ALL_EXPOSE, C_SUN_FRACTION, C_EARTHSHINE, C_
        C_SUN_FRACTION_WGS84, C_ALL_WGS84,
        C_SUN_FRACTION_BATCH, C_SUN_FRACTION_BATCH_ALL, C_ALL_BATCH, C_ALL_BATCH_OBSERVER,
        C_ALL_BATCH_IRRADIANCE, C_ALL_BATCH_FULL, C_EARTHSHINE_BATCH,
-       C_SUN_EARTH_KNOCKE, C_SUN_EARTH_MAP, C_SUN_EARTH_TABLE, C_SUN_EARTH_MAP_9X18, C_SUN_EARTH_MAP_Q, C_N };
+       C_SUN_EARTH_KNOCKE, C_SUN_EARTH_MAP, C_SUN_EARTH_TABLE, C_SUN_EARTH_MAP_9X18, C_SUN_EARTH_MAP_Q,
+       C_ALL_BATCH_OBSERVER_MEAN, C_N };
 static const char *const config_name[C_N] = {"all",          "sun",        "sun_earth",
                                              "all_expose",   "sun_fraction", "earthshine",
                                              "earthshine_lambert", "sun_moon", "sun_earth_mean",
@@ -98,7 +102,7 @@ static const char *const config_name[C_N] = {"all",          "sun",        "sun_
                                              "all_batch_observer", "all_batch_irradiance",
                                              "all_batch_full", "earthshine_batch", "sun_earth_knocke",
                                              "sun_earth_map", "sun_earth_table", "sun_earth_map_9x18",
-                                             "sun_earth_map_q"};
+                                             "sun_earth_map_q", "all_batch_observer_mean"};
 
 /* the albedo map of sun_earth_map: 1-degree cells (a CERES grid's size),
  * a smooth zonal and tesseral pattern (filled by setup) */
@@ -215,6 +219,14 @@ static double run_batch(int cfg)
         (void)oi_illuminate_batch(nb, b_scenes, NULL, b_illum, b_status);
         for (i = 0; i < nb; i++) acc += (double)b_illum[i].flux_obs;
         break;
+    case C_ALL_BATCH_OBSERVER_MEAN: {
+        oi_model mean;
+        memset(&mean, 0, sizeof mean);
+        mean.earth_reflection = OI_EARTH_REFLECT_MEAN;
+        (void)oi_illuminate_batch_outputs(nb, b_scenes, &mean, OI_BATCH_OBSERVER, b_illum, b_status);
+        for (i = 0; i < nb; i++) acc += (double)(b_illum[i].flux_obs + b_illum[i].e_sun);
+        break;
+    }
     case C_ALL_BATCH_OBSERVER:
     case C_ALL_BATCH_IRRADIANCE:
     case C_ALL_BATCH_FULL:
@@ -246,7 +258,8 @@ static double run_config(int cfg)
 #ifndef OI_NO_EXPOSURE
     cam = oi_camera_builtin(0);
 #endif
-    if (cfg >= C_SUN_FRACTION_BATCH && cfg <= C_EARTHSHINE_BATCH) return run_batch(cfg);
+    if ((cfg >= C_SUN_FRACTION_BATCH && cfg <= C_EARTHSHINE_BATCH) || cfg == C_ALL_BATCH_OBSERVER_MEAN)
+        return run_batch(cfg);
     memset(&lambert, 0, sizeof lambert);
     lambert.earth_model = OI_EARTH_LAMBERT;
     memset(&mean, 0, sizeof mean);

@@ -34,7 +34,8 @@ CONFIGS = ["all", "sun", "sun_earth", "all_expose", "sun_fraction", "earthshine"
            "sun_earth_cylinder", "sun_fraction_wgs84", "all_wgs84", "sun_fraction_batch",
            "sun_fraction_batch_all", "all_batch", "all_batch_observer", "all_batch_irradiance",
            "all_batch_full", "earthshine_batch",
-           "sun_earth_knocke", "sun_earth_map", "sun_earth_table", "sun_earth_map_9x18", "sun_earth_map_q"]
+           "sun_earth_knocke", "sun_earth_map", "sun_earth_table", "sun_earth_map_9x18", "sun_earth_map_q",
+           "all_batch_observer_mean"]
 # the finer albedo maps cost milliseconds per scene: callgrind over fewer passes
 CALLGRIND_PASSES = {"sun_earth_map": (0, 2), "sun_earth_map_q": (0, 1)}
 
@@ -131,14 +132,25 @@ def main():
     ap.add_argument("--n1", type=int, default=2)
     ap.add_argument("--n2", type=int, default=12)
     ap.add_argument("--no-quadrature", action="store_true")
+    ap.add_argument("--baseline", metavar="BENCH",
+                    help="the bench of the illumination before the batch interface (make bench builds "
+                         "it from git): its oi_illuminate over the same mix, the full illumination goal's base")
     ap.add_argument("--goals-from", metavar="JSON",
                     help="print the goal lines of a finished run's bench.json and stop")
+    ap.add_argument("--only-illumination", action="store_true",
+                    help="only the full illumination goal's instructions (double, callgrind: the "
+                         "scene configurations and the --baseline), then the goals")
     ap.add_argument("--only-peers", action="store_true",
                     help="only the peers and the binding's cost (section 2b), then the goals")
     args = ap.parse_args()
     out = Out(args.out)
     if args.only_peers:
         peer_run(args, out)
+        goals(out)
+        out.save()
+        return 0
+    if args.only_illumination:
+        illumination_run(args, out)
         goals(out)
         out.save()
         return 0
@@ -178,6 +190,20 @@ def main():
                         per = (t2 - t1) / float((args.n2 - args.n1) * ns / len(LIGHTS))
                         out.put("bench.%s.%s.%s.instructions" % (prec, c, light), "%.0f" % per,
                                 "instructions", "the %s third of the mix" % light)
+        if args.baseline:  # the same mix through the baseline's oi_illuminate, in this run
+            ns = nscenes(args.baseline)
+            t1 = callgrind_total(args.baseline, "all", args.n1, tmp)
+            t2 = callgrind_total(args.baseline, "all", args.n2, tmp)
+            out.put("bench.double.all_baseline.instructions",
+                    "%.0f" % ((t2 - t1) / float((args.n2 - args.n1) * ns)), "instructions",
+                    "oi_illuminate before the batch interface, same mix; callgrind, (I(%d) - I(%d)) / (%d x %d scenes)"
+                    % (args.n2, args.n1, args.n2 - args.n1, ns))
+            for light in LIGHTS:
+                t1 = callgrind_total(args.baseline, "all", args.n1, tmp, light)
+                t2 = callgrind_total(args.baseline, "all", args.n2, tmp, light)
+                out.put("bench.double.all_baseline.%s.instructions" % light,
+                        "%.0f" % ((t2 - t1) / float((args.n2 - args.n1) * ns / len(LIGHTS))),
+                        "instructions", "the %s third of the mix" % light)
         b = os.path.join(args.bindir, "bench-double")
         if shutil.which("callgrind_annotate"):
             callgrind_profile(b, "all_expose", args.n2, nscenes(b), tmp, out, "double")
@@ -194,6 +220,25 @@ def main():
     goals(out)
     out.save()
     return 0
+
+
+ILLUMINATION_CONFIGS = ["all", "all_batch_observer", "all_batch_observer_mean", "all_batch_full",
+                        "all_batch_irradiance"]
+
+
+def illumination_run(args, out):
+    """The full illumination goal's numbers alone, as section 2 forms them."""
+    tmp = os.path.join(args.bindir, "cg")
+    os.makedirs(tmp, exist_ok=True)
+    runs = [(os.path.join(args.bindir, "bench-double"), c, c) for c in ILLUMINATION_CONFIGS]
+    if args.baseline:
+        runs.append((args.baseline, "all", "all_baseline"))
+    for b, c, name in runs:
+        ns = nscenes(b)
+        t1 = callgrind_total(b, c, args.n1, tmp)
+        t2 = callgrind_total(b, c, args.n2, tmp)
+        out.put("bench.double.%s.instructions" % name, "%.0f" % ((t2 - t1) / float((args.n2 - args.n1) * ns)),
+                "instructions", "callgrind, (I(%d) - I(%d)) / (%d x %d scenes)" % (args.n2, args.n1, args.n2 - args.n1, ns))
 
 
 def peer_run(args, out):
@@ -354,17 +399,24 @@ def goals(out):
     # outputs a planner reads (OI_BATCH_OBSERVER: irradiances, fluxes,
     # magnitude), in instructions (wall times of one shared run vary by 2x);
     # beside it the batch with every output and with the irradiances only
+    # The base is the baseline's oi_illuminate (before the batch interface, built
+    # from git by make bench); without it, today's oi_illuminate.
+    base = val("bench.double.all_baseline.instructions")
     a = val("bench.double.all.instructions")
     b = val("bench.double.all_batch_observer.instructions")
     full = val("bench.double.all_batch_full.instructions")
     irr = val("bench.double.all_batch_irradiance.instructions")
     if a and b:
-        extra = ""
-        if full and irr:
-            extra = "; every output %.2fx, irradiances only %.2fx" % (a / full, a / irr)
-        out.put("goal.full_illumination_3x_faster", "met" if a / b >= 3 else "missed", "-",
-                "oi_illuminate / oi_illuminate_batch_outputs(OI_BATCH_OBSERVER), instructions "
-                "per scene: %.2fx%s%s" % (a / b, extra, note))
+        ref, what = (base, "oi_illuminate before the batch interface") if base else (a, "oi_illuminate")
+        extra = "; every output %.2fx, irradiances only %.2fx" % (ref / full, ref / irr) if full and irr else ""
+        mean = val("bench.double.all_batch_observer_mean.instructions")
+        if base:
+            extra += "; today's oi_illuminate %.2fx" % (base / a)
+            if mean:  # the baseline's physics: the sphere reflects from the mean direction
+                extra += "; the batch with the mean direction (OI_EARTH_REFLECT_MEAN) %.2fx" % (base / mean)
+        out.put("goal.full_illumination_3x_faster", "met" if ref / b >= 3 else "missed", "-",
+                "%s / oi_illuminate_batch_outputs(OI_BATCH_OBSERVER), instructions "
+                "per scene: %.2fx%s%s" % (what, ref / b, extra, note))
     s = val("bench.double.earthshine.speedup_vs_quadrature")
     if s is not None:
         out.put("goal.earthshine_%dx_faster_than_quadrature" % GOAL_SPEEDUP, "met" if s >= GOAL_SPEEDUP else "missed",

@@ -463,7 +463,7 @@ int oi_earthshine(oi_real theta, oi_real h_km, const oi_model *model,
  *          OI_ERR_NONFINITE (a component of obs), OI_ERR_ZERO_VECTOR (obs
  *          zero). On error *flux is 0.
  * Notes:   By default F = phi S(o), S from a cubature over the visible
- *          sunlit Earth (10 x 6 nodes per piece, at most 8 pieces), with
+ *          sunlit Earth (9 x 4 nodes per piece, at most 8 pieces), with
  *          OI_EARTH_REFLECT_TABLE from the angular table's moments
  *          (docs/earthshine-angular.md, with the measured errors of both
  *          against a quadrature over the visible sunlit Earth); below the

@@ -53,7 +53,30 @@ endef
 $(foreach p,double float,$(eval $(call BENCH_RULES,$(p))))
 
 bench: $(BENCH_DIR)/bench-double $(BENCH_DIR)/bench-float deps-py deps-bench ## ns and instructions per scene; table vs quadrature
-	@nice -n 5 $(PY) bench/run_bench.py --bindir $(BENCH_DIR) --out $(BENCH_DIR)/bench.txt
+	-@$(MAKE) --no-print-directory $(ILLUM_BASELINE)
+	@nice -n 5 $(PY) bench/run_bench.py --bindir $(BENCH_DIR) --out $(BENCH_DIR)/bench.txt \
+	  $$([ -x $(ILLUM_BASELINE) ] && echo --baseline $(ILLUM_BASELINE))
+
+# ---- the full illumination goal alone (instructions, double): today's scene configurations
+# and the baseline below, then the goal lines (build/bench/illum.txt)
+.PHONY: illum-bench
+illum-bench: $(BENCH_DIR)/bench-double deps-py ## the full illumination goal: instructions per scene, today's batch against the baseline's oi_illuminate (build/bench/illum.txt)
+	-@$(MAKE) --no-print-directory $(ILLUM_BASELINE)
+	nice -n 5 $(PY) bench/run_bench.py --bindir $(BENCH_DIR) --out $(BENCH_DIR)/illum.txt --only-illumination \
+	  $$([ -x $(ILLUM_BASELINE) ] && echo --baseline $(ILLUM_BASELINE))
+
+# The illumination as it was before the batch interface, the baseline of the full
+# illumination's speed goal: the library, tables and bench of the parent of the commit that
+# added src/batch.c, built with the library's flags (double) and run over the same scene mix
+# (bench/scenes.h is unchanged since). Needs the git history.
+ILLUM_BASELINE := $(BENCH_DIR)/illum-baseline/bench-double
+$(ILLUM_BASELINE):
+	@rev=$$(git log --diff-filter=A --format=%H -- src/batch.c | tail -n 1); \
+	  [ -n "$$rev" ] || { echo "illum-baseline: no git history of src/batch.c"; exit 1; }; \
+	  d=$(BENCH_DIR)/illum-baseline; rm -rf $$d && mkdir -p $$d && \
+	  git archive "$$rev^" src include tables bench | tar -x -C $$d && \
+	  $(CC) -std=c99 $(OPT) $(RT_MATH) -g -I$$d/include -I$$d/src -I$$d/tables -D_POSIX_C_SOURCE=199309L \
+	    $$d/bench/bench.c $$d/src/*.c $$d/tables/*.c -lm -o $@
 
 # ---- the catalogue planner's throughput (bench/catalog_bench.py): scenes per CPU-second per
 # core (propagation, illumination apart) and the scaling from 1 to 2 local Dask workers

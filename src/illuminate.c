@@ -353,21 +353,31 @@ static OI_NOINLINE int sky_term(const oi_scene *scene, const oi_model *m, oi_ill
  * distribution (the cubature, or the table's moments with
  * OI_EARTH_REFLECT_TABLE: src/earthshine_angular.c); 0 below 100 km (then
  * the caller keeps the mean direction's flux). */
+/* The observer's direction in the target's local frame (o) and the Sun's
+ * angle theta from the zenith (cs: cosine, sine): in a frame of its own, so
+ * that the frame's vectors are not on the stack while the cubature runs. */
+static OI_NOINLINE void sphere_local(const oi_scene *scene, const oi_real obs_hat[3],
+                                     oi_real o[3], oi_real cs[2])
+{
+    oi_real r_hat[3], s_hat[3], x[3], y[3], c[3];
+    oi__local_frame_toward(scene->target_km, scene->sun_km, obs_hat, r_hat, s_hat, x, y);
+    oi__cross(s_hat, r_hat, c);
+    cs[1] = oi__norm_bounded(c);
+    cs[0] = oi__dot(s_hat, r_hat);
+    o[0] = oi__dot(obs_hat, x);
+    o[1] = oi__dot(obs_hat, y);
+    o[2] = oi__dot(obs_hat, r_hat);
+}
+
 static OI_NOINLINE int earth_flux_moments(const oi_scene *scene, const oi_model *m,
                                           const oi_earth_angular_table *t,
                                           const oi_real obs_hat[3], oi_real ratio,
                                           oi_real shape_add, oi_illum *out)
 {
-    oi_real r_hat[3], s_hat[3], x[3], y[3], o[3], c[3], cos_theta, sin_theta, shape;
-    oi__local_frame_toward(scene->target_km, scene->sun_km, obs_hat, r_hat, s_hat, x, y);
-    oi__cross(s_hat, r_hat, c);
-    sin_theta = oi__norm_bounded(c);
-    cos_theta = oi__dot(s_hat, r_hat);
-    o[0] = oi__dot(obs_hat, x);
-    o[1] = oi__dot(obs_hat, y);
-    o[2] = oi__dot(obs_hat, r_hat);
+    oi_real o[3], cs[2], shape;
+    sphere_local(scene, obs_hat, o, cs);
     (void)t;
-    if (!oi__earth_sphere_shape(m, out->earth_theta, cos_theta, sin_theta, out->earth_h_km,
+    if (!oi__earth_sphere_shape(m, out->earth_theta, cs[0], cs[1], out->earth_h_km,
                                 m->earth_radius_km, o, out->earth_phi, &shape))
         return 0;
     /* the albedo field's change (0 when uniform), the sum kept non-negative */
@@ -435,6 +445,71 @@ static OI_NOINLINE int observer_term(const oi_scene *scene, const oi_model *m,
     out->flux_obs = out->flux_sun + out->flux_earth + out->flux_moon + out->flux_sky;
     out->mag_v = oi__magnitude_v(out->flux_obs, m->tsi_w_m2);
     return OI_OK;
+}
+
+/* The scene's terms in their order, once for both callers: oi_illuminate's
+ * (oi__illuminate_resolved, every output) and the batch's under an outputs
+ * mask (oi__illuminate_outputs, src/illuminate_outputs.c: the Sun's term
+ * through sun_term_outputs, the observer's only when asked). out is zeroed
+ * first and again on an error. */
+#ifdef OI_ILLUMINATE_OUTPUTS_ONLY
+static int sun_term_outputs(const oi_scene *scene, const oi_model *m, unsigned outputs,
+                            oi_illum *out);
+#define SCENE_SUN_TERM(scene, m, outputs, out) sun_term_outputs((scene), (m), (outputs), (out))
+#else
+#define SCENE_SUN_TERM(scene, m, outputs, out) ((void)(outputs), sun_term((scene), (m), (out)))
+#endif
+static int scene_terms(const oi_scene *scene, const oi_model *m, unsigned outputs, oi_illum *out)
+{
+    int st, warn = OI_OK;
+    oi_real shape_add = (oi_real)0;
+
+    memset(out, 0, sizeof *out);
+    st = check_scene(scene, m);
+    if (st < 0) return st;
+
+    st = SCENE_SUN_TERM(scene, m, outputs, out);
+    if (st < 0) goto fail;
+    if (st > 0) warn = st;
+#ifndef OI_NO_MOON
+    if (moon_given(scene)) {
+        st = moon_shadow_term(scene, m, out);
+        if (st < 0) goto fail;
+    }
+#endif
+    st = earth_term(scene, m, out);
+    if (st < 0) goto fail;
+    if (st > 0) warn = st;
+#ifndef OI_NO_ALBEDO_MODELS
+    if ((scene->terms & OI_TERM_EARTH) && m->albedo_model != OI_ALBEDO_UNIFORM) {
+        st = albedo_field_term(scene, m, out, &shape_add);
+        if (st < 0) goto fail;
+    }
+#endif
+#ifndef OI_NO_SKYLIGHT
+    if (scene->terms & OI_TERM_SKY) {
+        st = sky_term(scene, m, out);
+        if (st < 0) goto fail;
+        if (st > 0) warn = st;
+    }
+#endif
+#ifndef OI_NO_MOON
+    if (scene->terms & OI_TERM_MOON) {
+        st = moon_sun_fraction(scene, m, &out->moon_sun_fraction);
+        if (st < 0) goto fail;
+        st = moon_term(scene, m, out);
+        if (st < 0) goto fail;
+    }
+#endif
+    if (scene->has_observer && (outputs & OI_BATCH_OBSERVER)) {
+        st = observer_term(scene, m, shape_add, out);
+        if (st < 0) goto fail;
+    }
+    return warn;
+
+fail:
+    memset(out, 0, sizeof *out);
+    return st;
 }
 
 #ifndef OI_ILLUMINATE_OUTPUTS_ONLY /* src/illuminate_outputs.c: the helpers above only */
@@ -513,54 +588,6 @@ int oi__albedo_resolve(const oi_model *in, oi_model *out)
  * batch, src/batch.c); out is zeroed here too. */
 int oi__illuminate_resolved(const oi_scene *scene, const oi_model *m, oi_illum *out)
 {
-    int st, warn = OI_OK;
-    oi_real shape_add = (oi_real)0;
-
-    memset(out, 0, sizeof *out);
-    st = check_scene(scene, m);
-    if (st < 0) return st;
-
-    st = sun_term(scene, m, out);
-    if (st < 0) goto fail;
-    if (st > 0) warn = st;
-#ifndef OI_NO_MOON
-    if (moon_given(scene)) {
-        st = moon_shadow_term(scene, m, out);
-        if (st < 0) goto fail;
-    }
-#endif
-    st = earth_term(scene, m, out);
-    if (st < 0) goto fail;
-    if (st > 0) warn = st;
-#ifndef OI_NO_ALBEDO_MODELS
-    if ((scene->terms & OI_TERM_EARTH) && m->albedo_model != OI_ALBEDO_UNIFORM) {
-        st = albedo_field_term(scene, m, out, &shape_add);
-        if (st < 0) goto fail;
-    }
-#endif
-#ifndef OI_NO_SKYLIGHT
-    if (scene->terms & OI_TERM_SKY) {
-        st = sky_term(scene, m, out);
-        if (st < 0) goto fail;
-        if (st > 0) warn = st;
-    }
-#endif
-#ifndef OI_NO_MOON
-    if (scene->terms & OI_TERM_MOON) {
-        st = moon_sun_fraction(scene, m, &out->moon_sun_fraction);
-        if (st < 0) goto fail;
-        st = moon_term(scene, m, out);
-        if (st < 0) goto fail;
-    }
-#endif
-    if (scene->has_observer) {
-        st = observer_term(scene, m, shape_add, out);
-        if (st < 0) goto fail;
-    }
-    return warn;
-
-fail:
-    memset(out, 0, sizeof *out);
-    return st;
+    return scene_terms(scene, m, OI_BATCH_SCENE_ALL, out);
 }
 #endif /* OI_ILLUMINATE_OUTPUTS_ONLY */

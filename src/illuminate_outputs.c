@@ -85,59 +85,12 @@ static void clear_unasked(unsigned outputs, oi_illum *out)
     }
 }
 
-/* oi__illuminate_resolved's composition (src/illuminate.c), each step
- * under the mask (src/oi_internal.h). */
+/* oi__illuminate_resolved's composition (scene_terms, src/illuminate.c)
+ * under the mask (src/oi_internal.h); what was not asked for is cleared. */
 int oi__illuminate_outputs(const oi_scene *scene, const oi_model *m, unsigned outputs,
                            oi_illum *out)
 {
-    int st, warn = OI_OK;
-    oi_real shape_add = (oi_real)0;
-
-    memset(out, 0, sizeof *out);
-    st = check_scene(scene, m);
-    if (st < 0) return st;
-
-    st = sun_term_outputs(scene, m, outputs, out);
-    if (st < 0) goto fail;
-    if (st > 0) warn = st;
-#ifndef OI_NO_MOON
-    if (moon_given(scene)) {
-        st = moon_shadow_term(scene, m, out);
-        if (st < 0) goto fail;
-    }
-#endif
-    st = earth_term(scene, m, out);
-    if (st < 0) goto fail;
-    if (st > 0) warn = st;
-#ifndef OI_NO_ALBEDO_MODELS
-    if ((scene->terms & OI_TERM_EARTH) && m->albedo_model != OI_ALBEDO_UNIFORM) {
-        st = albedo_field_term(scene, m, out, &shape_add);
-        if (st < 0) goto fail;
-    }
-#endif
-#ifndef OI_NO_SKYLIGHT
-    if (scene->terms & OI_TERM_SKY) {
-        st = sky_term(scene, m, out);
-        if (st < 0) goto fail;
-        if (st > 0) warn = st;
-    }
-#endif
-#ifndef OI_NO_MOON
-    if (scene->terms & OI_TERM_MOON) {
-        st = moon_sun_fraction(scene, m, &out->moon_sun_fraction);
-        if (st < 0) goto fail;
-        st = moon_term(scene, m, out);
-        if (st < 0) goto fail;
-    }
-#endif
-    if (scene->has_observer && (outputs & OI_BATCH_OBSERVER)) {
-        st = observer_term(scene, m, shape_add, out);
-        if (st < 0) goto fail;
-    }
-    clear_unasked(outputs, out);
-    return warn;
-
-fail:
-    memset(out, 0, sizeof *out);
+    const int st = scene_terms(scene, m, outputs, out);
+    if (st >= 0) clear_unasked(outputs, out);
     return st;
 }

@@ -37,8 +37,8 @@ sys.path.insert(0, ROOT)
 from bake.earthshine import angular  # noqa: E402
 from cap_cubature import R, cap_breaks, mapped_rule, score  # noqa: E402
 
-ORDERS = ((6, 4), (8, 4), (8, 6), (10, 6), (12, 8))
-DEFAULT = (10, 6)
+ORDERS = ((6, 4), (8, 4), (9, 4), (10, 4), (8, 6), (10, 6), (12, 8))
+DEFAULT = (9, 4)
 
 
 def _rules(na, nb):

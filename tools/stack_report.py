@@ -26,6 +26,7 @@ see newlib/libm/math/ef_rem_pio2.c and e_rem_pio2.c), valid when the runtime
 passes only bounded angles to the trigonometric functions.
 Prints `name value unit` lines.
 Usage: tools/stack_report.py --objdir build/cross --cfgs "m4f-Os ..." --limit 512
+       [--via FUNCTION ...]  (the worst path through FUNCTION as well)
 """
 import argparse
 import glob
@@ -139,6 +140,27 @@ def worst(fn, frames, edges, memo, stack, problems, origin, cut=()):
     return memo[fn]
 
 
+def worst_via(fn, via, frames, edges, memo, stack, cut=()):
+    """The worst case of fn over the paths that pass through the function named
+    via, and that path; None when no path reaches it."""
+    if fn in memo:
+        return memo[fn]
+    if plain(fn) == via:
+        memo[fn] = worst(fn, frames, edges, {}, [], [], fn, cut)
+        return memo[fn]
+    if fn in stack or fn in cut:
+        return None
+    stack.append(fn)
+    best = None
+    for callee in sorted(edges.get(fn, ())):
+        r = worst_via(callee, via, frames, edges, memo, stack, cut)
+        if r is not None and (best is None or r[0] > best[0]):
+            best = r
+    stack.pop()
+    memo[fn] = None if best is None else (frames.get(fn, 0) + best[0], [fn] + best[1])
+    return memo[fn]
+
+
 def plain(title):
     return title.split(":")[-1]
 
@@ -152,6 +174,9 @@ def main():
     ap.add_argument("--public", required=True)
     ap.add_argument("--guard", default="",
                     help="public functions held to --limit: name (every cfg) or name@core")
+    ap.add_argument("--via", action="append", default=[], metavar="FUNCTION",
+                    help="also the worst case of each public function over the paths through "
+                         "FUNCTION (e.g. cubature_flux), as stack.CFG.FN.via.FUNCTION lines")
     args = ap.parse_args()
     failed = False
     over = []
@@ -208,6 +233,11 @@ def main():
                 "%s(%d)" % (plain(p), g_frames.get(p, 0)) for p in pathb)))
             if w > args.limit:
                 over.append("%s.%s %d/%d" % (cfg, fn, w, wb))
+            for via in args.via:
+                r = worst_via(sym, via, g_frames, g_edges, {}, [])
+                if r is not None:
+                    print("stack.%s.%s.via.%s %d bytes  # %s" % (cfg, fn, via, r[0], " > ".join(
+                        "%s(%d)" % (plain(p), g_frames.get(p, 0)) for p in r[1])))
         libm_max = max([dframes.get(e, 0) for e in external] + [0])
         print("stack.%s.external_max_frame %d bytes  # largest single libm/libc frame" % (cfg, libm_max))
         for p in sorted(set(problems + runtime_problems)):

@@ -176,13 +176,13 @@ def test_cubature_kernel_acos_polynomial():
 
 
 def test_cubature_rules_are_the_gauss_rules():
-    # a_rule: (1 - cos(pi t)) / 2 and pi sin(pi t) / 2 w of the 10-point
-    # Gauss-Legendre rule (t, w) on [0, 1]; b_rule: the 6-point rule's lower
+    # a_rule: (1 - cos(pi t)) / 2 and pi sin(pi t) / 2 w of the 9-point
+    # Gauss-Legendre rule (t, w) on [0, 1]; b_rule: the 4-point rule's lower
     # half (the rule is symmetric: t -> 1 - t, the same weight)
     import re
     import mpmath
     text = open(os.path.join(ROOT, "src", "earthshine_angular.c")).read()
-    for name, n, mapped, kept in (("a_rule", 10, True, 10), ("b_rule", 6, False, 3)):
+    for name, n, mapped, kept in (("a_rule", 9, True, 9), ("b_rule", 4, False, 2)):
         body = re.search(name + r"\[N[AB]_SPHERE( / 2)?\]\[2\] = \{(.*?)\};", text, re.S).group(2)
         with mpmath.workdps(40):
             vals = [mpmath.mpf(v) for v in re.findall(r"OI_R\(([-0-9.e]+)\)", body)]
