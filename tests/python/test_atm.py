@@ -293,6 +293,15 @@ def test_eclipse_observables_against_published():
     m2015, (p2015, _) = rows["2015-09-28"][4], rows["2015-09-28"][6]
     assert -1.0 < m2015 - p2015 < 0.0
     assert abs(o["grazing_bending_deg"] - 2 * 35.4 / 60) < 0.1
+    # docs/atmosphere.md's disc table prints these numbers (ours, at the mean distances)
+    import re
+    root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    with open(os.path.join(root, "docs", "atmosphere.md")) as fh:
+        doc = fh.read()
+    for name, r in rows.items():
+        m = re.search(r"^\| %s \([^)]*\) \| ([0-9.]+) \| ([0-9.]+) \|" % name, doc, re.M)
+        assert m, name
+        assert (float(m.group(1)), float(m.group(2))) == (round(r[4], 2), round(r[5], 2)), name
     # the local brightness falls monotonically from the umbra's edge to its centre
     assert all(a > b for a, b in zip(o["local_mag"], o["local_mag"][1:]))
 
