@@ -7,17 +7,22 @@ V band, Sun at 1 AU) with the default profile (bake/atmosphere/profile.py):
 
 * local brightness across the umbra at the Moon's mean distance, in
   magnitudes below unobstructed sunlight (-2.5 log10 F);
-* disc-averaged brightness of the totally eclipsed Moon at mid-totality of
-  measured eclipses, the Moon's centre gamma equatorial Earth radii from
-  the shadow's axis (gamma from Espenak & Meeus 2009, NASA TP-2009-214172),
-  in magnitudes below the uneclipsed Moon;
+* disc-averaged brightness of the totally eclipsed Moon at greatest eclipse
+  of measured eclipses, the Moon's centre gamma equatorial Earth radii from
+  the shadow's axis (gamma and the time of greatest eclipse from Espenak &
+  Meeus 2009, NASA TP-2009-214172), with the Moon and the Sun at their
+  distances of that instant (erfa.moon98, Simon et al. 1994; erfa.epv00),
+  in magnitudes below the uneclipsed Moon, beside the published measurement
+  (a V magnitude converted with the uneclipsed full Moon's V = -12.74 at
+  384,400 km, Allen's Astrophysical Quantities, scaled to that distance);
 * the umbra's enlargement at the Moon: the radius of the steepest gradient
   of log F (the eye's edge) and of F, minus the geometric umbra's radius;
 * the total bending of a ray grazing the surface;
 * the shadow-entry height of a LEO satellite: the tangent height of the line
   to the Sun's centre where F = 0.5 and 0.1, at z = 2400 km.
 
-    python -m bake.atmosphere.eclipse      # prints the table (about a minute)
+    python -m bake.atmosphere.eclipse                # prints the table (seconds)
+    python -m bake.atmosphere.eclipse --sensitivity  # each piece of the air switched
 """
 from __future__ import annotations
 
@@ -30,9 +35,48 @@ from . import rays as ar
 R_KM = ap.R_EARTH_KM
 MOON_RADIUS_KM = 1737.4
 Z_MOON_KM = 384400.0
-# mid-totality geometry (gamma) of measured eclipses, Espenak & Meeus 2009
-ECLIPSES = (("1990-02-09", -0.4148), ("2007-03-03", 0.3175), ("2015-09-28", -0.3296),
-            ("2019-01-21", 0.3684))
+MOON_FULL_V = -12.74        # uneclipsed full Moon at 384,400 km (Allen's Astrophysical Quantities)
+# greatest eclipse (UT: year, month, day, hours) and gamma (Espenak & Meeus
+# 2009, NASA TP-2009-214172; eclipsewise.com), and the measured V magnitude
+# of the whole Moon near greatest eclipse as (low, high) or None where none
+# was found; the sources are in docs/atmosphere.md, "Eclipse observables".
+ECLIPSES = (
+    ("1990-02-09", (1990, 2, 9, 19 + 11 / 60), -0.4148, None),
+    ("2007-03-03", (2007, 3, 3, 23 + 21 / 60), 0.3175, None),
+    # REA mean -2.8 +- 0.3 (H. C. Vital); reversed binoculars -3.4 (R. Sinnott)
+    # and -3.2 (J. Bortle), Sky & Telescope's report of 2008-02-21
+    ("2008-02-21", (2008, 2, 21, 3 + 26 / 60), -0.3992, (-3.4, -2.5)),
+    # "~50,000 times fainter than the full Moon" at mid-totality (Vital, REA)
+    ("2015-09-28", (2015, 9, 28, 2 + 47 / 60), -0.3296, "ratio 5e4"),
+    # SSP-3 photometer, V = -2.04 at 05:13:30 UT (Schmude 2022, Georgia J. Sci. 80(1), 32)
+    ("2019-01-21", (2019, 1, 21, 5 + 12 / 60), 0.3684, (-2.04, -2.04)),
+    ("2022-05-16", (2022, 5, 16, 4 + 11 / 60), -0.2532, None),
+)
+
+
+def distances(ut):
+    """Geocentric Moon distance (km) and heliocentric Earth distance (km) at
+    ut = (year, month, day, hours UT) from ERFA's analytic ephemerides
+    (moon98: Simon et al. 1994; epv00); UT for TT (< 2 min: < 20 km)."""
+    import erfa
+    y, m, d, h = ut
+    jd1, jd2 = erfa.cal2jd(y, m, d)
+    jd2 = jd2 + h / 24.0
+    pv = erfa.moon98(jd1, jd2)
+    ph, _ = erfa.epv00(jd1, jd2)
+    return (float(np.linalg.norm(pv[0])) * ar.AU_KM,
+            float(np.linalg.norm(ph[0])) * ar.AU_KM)
+
+
+def published_mag_below_full(measured, moon_km):
+    """(low, high) published magnitudes below the uneclipsed Moon, or None."""
+    if measured is None:
+        return None
+    if isinstance(measured, str):     # "ratio X": a brightness ratio to the full Moon
+        m = 2.5 * np.log10(float(measured.split()[1]))
+        return (m, m)
+    v_full = MOON_FULL_V + 5.0 * np.log10(moon_km / Z_MOON_KM)
+    return tuple(sorted(v - v_full for v in measured))
 
 
 def local_magnitudes(rays, rho_km, z=Z_MOON_KM):
@@ -40,16 +84,17 @@ def local_magnitudes(rays, rho_km, z=Z_MOON_KM):
     return -2.5 * np.log10(np.maximum(F, 1e-30))
 
 
-def disc_fraction(rays, rho_c, z=Z_MOON_KM, n=12):
+def disc_fraction(rays, rho_c, z=Z_MOON_KM, n=12, d_sun=ar.AU_KM):
     """Mean F over the lunar disc centred rho_c km from the axis (area mean,
-    Gauss-Legendre in radius and angle)."""
+    Gauss-Legendre in radius and angle; the Moon's albedo taken uniform and
+    its phase law the same as the uneclipsed full Moon's)."""
     x, w = gauss_legendre(n)
     r = 0.5 * MOON_RADIUS_KM * (x + 1.0)
     wr = 0.5 * MOON_RADIUS_KM * w * r
     t = np.pi * (x + 1.0)
     wt = np.pi * w
     pts = np.hypot(rho_c + r[:, None] * np.cos(t)[None, :], r[:, None] * np.sin(t)[None, :])
-    F, _ = ar.fraction(rays, z, pts.ravel(), want_psi=False, n_mu=16)
+    F, _ = ar.fraction(rays, z, pts.ravel(), d_sun=d_sun, want_psi=False, n_mu=16)
     wts = (wr[:, None] * wt[None, :]).ravel()
     return float(np.sum(F * wts) / np.sum(wts))
 
@@ -75,14 +120,51 @@ def shadow_entry_km(rays, z=2400.0, levels=(0.5, 0.1)):
     return [float(rho[np.where(F >= lv)[0][0]] - rc) for lv in levels]
 
 
+def disc_magnitudes(rays):
+    """Per measured eclipse: (name, gamma, Moon km, Sun km, ours at those
+    distances, ours at the mean distances, published (low, high) or None)."""
+    rows = []
+    for name, ut, g, measured in ECLIPSES:
+        zm, ds = distances(ut)
+        ours = -2.5 * np.log10(disc_fraction(rays, abs(g) * R_KM, z=zm, d_sun=ds))
+        mean = -2.5 * np.log10(disc_fraction(rays, abs(g) * R_KM))
+        rows.append((name, g, zm, ds, float(ours), float(mean),
+                     published_mag_below_full(measured, zm)))
+    return rows
+
+
+# each piece of the default air switched alone (docs/atmosphere.md, "Eclipse observables")
+SENSITIVITY = (
+    ("default", {}),
+    ("no stratospheric aerosol", dict(aer_strat_tau=0.0)),
+    ("stratospheric aerosol tau 0.01", dict(aer_strat_tau=0.01)),
+    ("stratospheric aerosol tau 0.02", dict(aer_strat_tau=0.02)),
+    ("no ozone", dict(ozone_du=0.0)),
+    ("no boundary-layer aerosol", dict(aer_trop_tau=0.0)),
+    ("cloud top 12 km", dict(cloud_top_km=12.0)),
+    ("cloud top 14 km", dict(cloud_top_km=14.0)),
+    ("opaque clouds (fraction 1)", dict(cloud_fraction=1.0)),
+    ("no clouds (fraction 0)", dict(cloud_fraction=0.0)),
+)
+
+
+def sensitivity(dh_km=0.02):
+    """Disc magnitudes (at the eclipses' distances) with each piece switched."""
+    import dataclasses
+    out = []
+    for label, kw in SENSITIVITY:
+        rays = ar.make_rays(dataclasses.replace(ap.us1976(), **kw), dh_km=dh_km)
+        out.append((label, [r[4] for r in disc_magnitudes(rays)]))
+    return out
+
+
 def observables(profile=None, dh_km=0.02):
     profile = profile or ap.us1976()
     rays = ar.make_rays(profile, dh_km=dh_km)
     out = {}
     out["local_rho_km"] = [0.0, 1000.0, 2000.0, 3000.0, 4000.0]
     out["local_mag"] = [float(v) for v in local_magnitudes(rays, out["local_rho_km"])]
-    out["eclipses"] = [(name, g, -2.5 * np.log10(disc_fraction(rays, abs(g) * R_KM)))
-                       for name, g in ECLIPSES]
+    out["eclipses"] = disc_magnitudes(rays)
     e_log, umbra = enlargement_km(rays)
     out["enlargement_km"] = (float(e_log), float(umbra))
     _, a0, _ = ar.trace(profile, [0.0])
@@ -97,7 +179,16 @@ def main(argv=None):
     ap_ = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap_.add_argument("--cloud-fraction", type=float, default=ap.CLOUD_FRACTION)
     ap_.add_argument("--cloud-top-km", type=float, default=ap.CLOUD_TOP_KM)
+    ap_.add_argument("--sensitivity", action="store_true",
+                     help="disc magnitudes with each piece of the default air switched")
     args = ap_.parse_args(argv)
+    if args.sensitivity:
+        names = [e[0] for e in ECLIPSES]
+        print("disc-averaged, mag below the uneclipsed Moon, at each eclipse's distances")
+        print("%-32s %s" % ("", " ".join("%10s" % n for n in names)))
+        for label, ms in sensitivity():
+            print("%-32s %s" % (label, " ".join("%10.2f" % m for m in ms)))
+        return
     prof = dataclasses.replace(ap.us1976(), cloud_fraction=args.cloud_fraction,
                                cloud_top_km=args.cloud_top_km)
     print("clouds below %g km stop %g of the rays" % (prof.cloud_top_km, prof.cloud_fraction))
@@ -105,9 +196,18 @@ def main(argv=None):
     print("local brightness at %.0f km behind the Earth, mag below sunlight:" % Z_MOON_KM)
     for r, m in zip(o["local_rho_km"], o["local_mag"]):
         print("  rho %6.0f km: %.2f" % (r, m))
-    print("disc-averaged, mag below the uneclipsed Moon (Moon at %.0f km):" % Z_MOON_KM)
-    for name, g, m in o["eclipses"]:
-        print("  %s (gamma %+.4f): %.2f" % (name, g, m))
+    print("disc-averaged, mag below the uneclipsed Moon at greatest eclipse: ours (at the"
+          " eclipse's distances; at the mean ones), published, ours - published:")
+    for name, g, zm, ds, m, m_mean, pub in o["eclipses"]:
+        if pub is None:
+            tail = "published: none found"
+        else:
+            lo, hi = pub
+            mid = 0.5 * (lo + hi)
+            span = "%.2f" % lo if hi - lo < 0.005 else "%.2f-%.2f" % (lo, hi)
+            tail = "published %s, difference %+.2f" % (span, m - mid)
+        print("  %s (gamma %+.4f, Moon %.0f km, Sun %.4f AU): %.2f (%.2f); %s"
+              % (name, g, zm, ds / ar.AU_KM, m, m_mean, tail))
     e_log, umbra = o["enlargement_km"]
     print("umbra enlargement (steepest log F): %+.0f km, %.2f %% of the geometric %.0f km"
           % (e_log, 100 * e_log / umbra, umbra))

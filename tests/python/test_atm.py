@@ -269,20 +269,54 @@ def test_eclipse_observables_against_published():
     (bake/atmosphere/eclipse.py; docs/atmosphere.md, "Eclipse observables"):
     local brightness near the umbra's centre 13-16 mag below sunlight (Link
     1969); the umbra's enlargement +64 to +89 km (Danjon's and Chauvenet's
-    rules, Espenak & Meeus 2009); 2019-01-21 at mid-totality V = -2.04
-    (Schmude 2022) against the uneclipsed Moon's ~-12.9 at that distance,
-    10.8 mag, within the stated 1 mag; grazing bending 2 x 35.4' (Allen)
-    within 0.1 deg."""
+    rules, Espenak & Meeus 2009); grazing bending 2 x 35.4' (Allen) within
+    0.1 deg; the disc at greatest eclipse, the Moon and the Sun at that
+    instant's distances: 2008-02-21 inside the observers' V = -3.4 to -2.5
+    (Sky & Telescope's reversed binoculars, REA's -2.8 +- 0.3), 9.34-10.24
+    mag below the full Moon; 2019-01-21 within 0.5 mag of V = -2.04 (Schmude
+    2022), 10.86 mag; 2015-09-28 brighter than the measured ~50,000 times
+    fainter than the full Moon (Vital), a stratosphere loaded by Calbuco
+    (Keen: 0.4 mag dimmer than expected) that the default's does not carry,
+    but by less than 1 mag."""
     from bake.atmosphere import eclipse
     o = eclipse.observables()
     assert 13.0 <= o["local_mag"][0] <= 16.0
     e_km, _ = o["enlargement_km"]
     assert 64.0 <= e_km <= 89.0
-    m2019 = dict((n, m) for n, _, m in o["eclipses"])["2019-01-21"]
-    assert abs(m2019 - 10.8) < 1.0
+    rows = dict((r[0], r) for r in o["eclipses"])
+    m2008, (lo, hi) = rows["2008-02-21"][4], rows["2008-02-21"][6]
+    assert abs(lo - 9.34) < 0.01 and abs(hi - 10.24) < 0.01
+    assert lo <= m2008 <= hi
+    m2019, (p2019, _) = rows["2019-01-21"][4], rows["2019-01-21"][6]
+    assert abs(p2019 - 10.86) < 0.01
+    assert abs(m2019 - p2019) < 0.5
+    m2015, (p2015, _) = rows["2015-09-28"][4], rows["2015-09-28"][6]
+    assert -1.0 < m2015 - p2015 < 0.0
     assert abs(o["grazing_bending_deg"] - 2 * 35.4 / 60) < 0.1
+    # docs/atmosphere.md's disc table prints these numbers (ours, at the mean distances)
+    import re
+    root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    with open(os.path.join(root, "docs", "atmosphere.md")) as fh:
+        doc = fh.read()
+    for name, r in rows.items():
+        m = re.search(r"^\| %s \([^)]*\) \| ([0-9.]+) \| ([0-9.]+) \|" % name, doc, re.M)
+        assert m, name
+        assert (float(m.group(1)), float(m.group(2))) == (round(r[4], 2), round(r[5], 2)), name
     # the local brightness falls monotonically from the umbra's edge to its centre
     assert all(a > b for a, b in zip(o["local_mag"], o["local_mag"][1:]))
+
+
+def test_eclipse_distances_against_published():
+    """The ephemeris behind the eclipse rows (ERFA's moon98) against
+    published lunar distances: the perigee of 2015-09-28 01:46 UT, 356,877
+    km, an hour before greatest eclipse; the perigee of 2019-01-21 ~19:59 UT,
+    357,342 km (the Moon within ~400 km of it at greatest eclipse, 15 h
+    before, when the distance still falls by at most ~30 km/h)."""
+    from bake.atmosphere import eclipse
+    d2015, _ = eclipse.distances((2015, 9, 28, 1 + 46 / 60))
+    assert abs(d2015 - 356877.0) < 30.0
+    d2019, _ = eclipse.distances((2019, 1, 21, 5 + 12 / 60))
+    assert 357342.0 < d2019 < 357342.0 + 500.0
 
 
 def test_moonlight_optical_depth_nodes():
