@@ -354,14 +354,11 @@ int oi_earthshine_batch(long n, const oi_real *theta, const oi_real *h_km,
 
 /* ---------------------------------------------------------------- illuminate */
 
-int oi_illuminate_batch(long n, const oi_scene *scenes, const oi_model *model, oi_illum *out,
-                        int *status)
+/* The array checks of both illuminate batches (n != 0): OI_OK, or the
+ * batch's error with the statuses set (nothing else written). */
+static int illuminate_arrays(long n, const oi_scene *scenes, const oi_illum *out, int *status)
 {
-    oi_model m;
     span in[1], o[2];
-    long i, bad = 0;
-    int st;
-    if (n == 0) return 0;
     if (check_n(n) != OI_OK) return OI_ERR_INPUT; /* nothing written: n is not the arrays' */
     if (scenes == NULL || out == NULL || status == NULL)
         return batch_fail(OI_ERR_NULL, n, status, NULL, 0, 0);
@@ -370,6 +367,18 @@ int oi_illuminate_batch(long n, const oi_scene *scenes, const oi_model *model, o
         !span_of(status, n, sizeof *status, ALIGN_OF(int), &o[1]) ||
         check_overlap(in, 1, o, 2) != OI_OK)
         return batch_fail(OI_ERR_INPUT, n, status, NULL, 0, 0);
+    return OI_OK;
+}
+
+int oi_illuminate_batch(long n, const oi_scene *scenes, const oi_model *model, oi_illum *out,
+                        int *status)
+{
+    oi_model m;
+    long i, bad = 0;
+    int st;
+    if (n == 0) return 0;
+    st = illuminate_arrays(n, scenes, out, status);
+    if (st < 0) return st;
     st = oi__model_resolve(model, &m);
     if (st == OI_OK) st = oi__albedo_resolve(model, &m);
     if (st < 0) return batch_fail(st, n, status, out, sizeof *out, 1);
@@ -384,18 +393,11 @@ int oi_illuminate_batch_outputs(long n, const oi_scene *scenes, const oi_model *
                                 unsigned outputs, oi_illum *out, int *status)
 {
     oi_model m;
-    span in[1], o[2];
     long i, bad = 0;
     int st;
     if (n == 0) return 0;
-    if (check_n(n) != OI_OK) return OI_ERR_INPUT; /* nothing written: n is not the arrays' */
-    if (scenes == NULL || out == NULL || status == NULL)
-        return batch_fail(OI_ERR_NULL, n, status, NULL, 0, 0);
-    if (!span_of(scenes, n, sizeof *scenes, ALIGN_OF(oi_scene), &in[0]) ||
-        !span_of(out, n, sizeof *out, ALIGN_OF(oi_illum), &o[0]) ||
-        !span_of(status, n, sizeof *status, ALIGN_OF(int), &o[1]) ||
-        check_overlap(in, 1, o, 2) != OI_OK)
-        return batch_fail(OI_ERR_INPUT, n, status, NULL, 0, 0);
+    st = illuminate_arrays(n, scenes, out, status);
+    if (st < 0) return st;
     st = (outputs & ~(unsigned)OI_BATCH_SCENE_ALL) != 0u ? OI_ERR_FLAGS
                                                         : oi__model_resolve(model, &m);
     if (st == OI_OK) st = oi__albedo_resolve(model, &m);

@@ -148,16 +148,18 @@ static void random_sun(uint64_t *rng, double s[3], double s_hat[3])
 /* Row i: a random Sun and a point; every third row anywhere (LEO to beyond
  * GEO), one in three across the penumbra (the lit/penumbra/umbra edges
  * and the certain tests' margins), the others behind the Earth within 1.3
- * times the penumbra's outer radius plus 400 km. */
-static void random_sun_rows(long n, uint64_t seed)
+ * times the penumbra's outer radius plus 400 km. all_edges: every row across
+ * the penumbra (the rows the batch cannot decide from cosines). */
+static void random_sun_rows_of(long n, uint64_t seed, int all_edges)
 {
     uint64_t rng = seed;
     long i;
     for (i = 0; i < n; i++) {
         double s[3], sh[3], p[3], u[3], w[3], nu;
+        const long kind = all_edges ? 1 : i % 3;
         int k;
         random_sun(&rng, s, sh);
-        if (i % 3 == 0) {
+        if (kind == 0) {
             double z = 2 * lcg01(&rng) - 1, a = 2 * OI_PI * lcg01(&rng), r = sqrt(1 - z * z);
             double d = RE * (1.0 + 0.001 + 10.0 * lcg01(&rng) * lcg01(&rng));
             p[0] = d * r * cos(a);
@@ -166,9 +168,11 @@ static void random_sun_rows(long n, uint64_t seed)
         } else {
             double zb = RE * (0.2 + 8.0 * lcg01(&rng)), outer, rho, ang;
             outer = RE + zb * (RE + 696000.0) / AU;
-            if (i % 3 == 1) /* across the penumbra, 250 km to spare on each side */
+            if (kind == 1) /* across the penumbra, 250 km to spare on each side (5 km
+                            * and a fifth of its width with all_edges) */
                 rho = RE + zb * RE / AU +
-                      (2 * lcg01(&rng) - 1) * (1.5 * zb * 696000.0 / AU + 250.0);
+                      (2 * lcg01(&rng) - 1) * (all_edges ? 1.2 * zb * 696000.0 / AU + 5.0
+                                                         : 1.5 * zb * 696000.0 / AU + 250.0);
             else
                 rho = (1.3 * outer + 400.0) * sqrt(lcg01(&rng));
             ang = 2 * OI_PI * lcg01(&rng);
@@ -192,6 +196,43 @@ static void random_sun_rows(long n, uint64_t seed)
             sun[3 * i + k] = (oi_real)s[k];
             pt[3 * i + k] = (oi_real)p[k];
         }
+    }
+}
+
+static void random_sun_rows(long n, uint64_t seed)
+{
+    random_sun_rows_of(n, seed, 0);
+}
+
+/* Rows nearly all in the penumbra, in blocks of every length the batch
+ * meets (whole blocks of rows, then a tail), in the precision of the build
+ * and for every disc and shape: the penumbra rows computed in the batch must
+ * be the single call's bits. */
+static void test_sun_penumbra_heavy(void **state)
+{
+    static const long lengths[] = {NRAND, NRAND - 7, 33, 31, 1};
+    oi_model geo;
+    size_t j;
+    (void)state;
+    for (j = 0; j < NELEM(lengths); j++) {
+        long pen;
+        random_sun_rows_of(lengths[j], 777 + (uint64_t)j, 1);
+        memset(&geo, 0, sizeof geo);
+        geo.no_atmosphere = 1;
+        pen = check_sun_rows(lengths[j], &geo);
+        /* most rows in the penumbra (else the case proves little) */
+        if (lengths[j] > 100) assert_true(pen > lengths[j] / 2);
+        (void)check_sun_rows(lengths[j], NULL);
+#ifndef OI_NO_LIMB_DARKENING
+        geo.limb_darkening = OI_LIMB_DARKENED;
+        (void)check_sun_rows(lengths[j], &geo);
+#endif
+#ifndef OI_NO_OBLATE
+        memset(&geo, 0, sizeof geo);
+        geo.no_atmosphere = 1;
+        geo.earth_shape = OI_EARTH_WGS84;
+        (void)check_sun_rows(lengths[j], &geo);
+#endif
     }
 }
 
@@ -701,6 +742,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_sun_stability_vectors),
         cmocka_unit_test(test_sun_random),
+        cmocka_unit_test(test_sun_penumbra_heavy),
         cmocka_unit_test(test_illuminate_stability_and_random),
         cmocka_unit_test(test_illuminate_outputs),
         cmocka_unit_test(test_earthshine),
