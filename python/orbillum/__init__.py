@@ -803,8 +803,9 @@ def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None
     _batch_status(st, n, "camera or model")
     # rows whose illumination failed are not exposed: their status, zero fields
     failed = status < 0
-    est[failed] = status[failed]
-    ex[failed] = np.zeros(1, dtype=EXPOSURE_DTYPE)
+    if failed.any():  # two masked passes spared on the common all-valid batch
+        est[failed] = status[failed]
+        ex[failed] = np.zeros(1, dtype=EXPOSURE_DTYPE)
     out = _flatten(res, status)
     out.update(_exposure_dict(ex, est))
     # the planner's row status: the illumination's (warnings included) unless
