@@ -495,33 +495,55 @@ def _scenes(sun, moon, target, observer, terms, earth_albedo, target_albedo,
                 None if row_shapes is None else np.empty((len(row_shapes), 0)))
     d = L.oi_scene()
     _lib.oi_scene_defaults(ctypes.addressof(d))
-    sc = np.zeros(n, dtype=SCENE_DTYPE)  # velocities not given stay 0: at rest
-    if tv is not None:
-        sc["target_vel_km_s"] = tv
-    if ov is not None:
-        sc["observer_vel_km_s"] = ov
-    sc["sun_km"] = sun
-    sc["target_km"] = target
-    sc["moon_km"] = 0.0 if moon is None else moon
-    sc["observer_km"] = 0.0 if observer is None else observer
-    sc["has_observer"] = 0 if observer is None else 1
-    sc["has_moon"] = 0 if moon is None else 1  # the Moon occults the Sun whatever the terms
+    # One template record (the defaults, the scalars, the masks), copied to
+    # every row in one pass; then only the per-row columns are written: each
+    # field write is a strided pass over the whole record array.
+    tpl = np.zeros(1, dtype=SCENE_DTYPE)  # velocities not given stay 0: at rest
+    tpl["has_observer"] = 0 if observer is None else 1
+    tpl["has_moon"] = 0 if moon is None else 1  # the Moon occults the Sun whatever the terms
+    per_row_terms = None
     if terms is None:
         mask = L.OI_TERM_SUN | L.OI_TERM_EARTH | (L.OI_TERM_MOON if moon is not None else 0)
-        sc["terms"] = mask & d.terms
+        tpl["terms"] = mask & d.terms
     elif isinstance(terms, (str, int, np.integer)):
-        sc["terms"] = terms_mask(terms)
+        tpl["terms"] = terms_mask(terms)
     else:
         t = list(terms)
         if len(t) != n:
             raise ValueError(f"terms: expected one per row ({n}), got {len(t)}")
-        sc["terms"] = [terms_mask(x) for x in t]
-    sc["earth_albedo"] = _scalar_rows(d.earth_albedo if earth_albedo is None else earth_albedo,
-                                      n, "earth_albedo")
-    sc["target_albedo"] = _scalar_rows(d.target_albedo if target_albedo is None
-                                       else target_albedo, n, "target_albedo")
-    sc["target_radius_m"] = _scalar_rows(d.target_radius_m if target_radius_m is None
-                                         else target_radius_m, n, "target_radius_m")
+        per_row_terms = [terms_mask(x) for x in t]
+    columns = {}
+    for name, given, default in (("earth_albedo", earth_albedo, d.earth_albedo),
+                                 ("target_albedo", target_albedo, d.target_albedo),
+                                 ("target_radius_m", target_radius_m, d.target_radius_m),
+                                 ("epoch_jd", epoch_jd, None),
+                                 ("earth_rotation_rad", earth_rotation_rad, None)):
+        if given is None:
+            if default is not None:
+                tpl[name] = default
+            continue
+        a = _floats(given, name)
+        if a.ndim == 0:
+            tpl[name] = float(a)
+        elif a.shape != (n,):
+            raise ValueError(f"{name}: expected a scalar or shape ({n},), got {a.shape}")
+        else:
+            columns[name] = a
+    for name, v in (("sun_km", sun), ("target_km", target), ("moon_km", moon),
+                    ("observer_km", observer), ("target_vel_km_s", tv),
+                    ("observer_vel_km_s", ov), ("attitude_q", q)):  # attitude all 0: identity
+        if v is not None and v.shape[0] == 1:
+            tpl[name] = v[0]
+        elif v is not None:
+            columns[name] = v
+    sc = np.empty(n, dtype=SCENE_DTYPE)
+    # the template's bytes to every row: a plain byte copy (assigning the
+    # record itself goes field by field, ~15x slower)
+    sc.view(np.uint8).reshape(n, SCENE_DTYPE.itemsize)[:] = tpl.view(np.uint8)
+    for name, v in columns.items():
+        sc[name] = v
+    if per_row_terms is not None:
+        sc["terms"] = per_row_terms
     cache = {}
     if per_row:
         if len(row_shapes) != n:
@@ -535,11 +557,6 @@ def _scenes(sun, moon, target, observer, terms, earth_albedo, target_albedo,
         keep.extend(held)
     elif any(k is not None for k in held):
         raise ValueError("target_shape: internal: a shape without a keep list")
-    sc["attitude_q"] = 0.0 if q is None else q  # all zero: the identity
-    if epoch_jd is not None:
-        sc["epoch_jd"] = _scalar_rows(epoch_jd, n, "epoch_jd")
-    if earth_rotation_rad is not None:
-        sc["earth_rotation_rad"] = _scalar_rows(earth_rotation_rad, n, "earth_rotation_rad")
     return sc
 
 
@@ -786,8 +803,9 @@ def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None
     _batch_status(st, n, "camera or model")
     # rows whose illumination failed are not exposed: their status, zero fields
     failed = status < 0
-    est[failed] = status[failed]
-    ex[failed] = np.zeros(1, dtype=EXPOSURE_DTYPE)
+    if failed.any():  # two masked passes spared on the common all-valid batch
+        est[failed] = status[failed]
+        ex[failed] = np.zeros(1, dtype=EXPOSURE_DTYPE)
     out = _flatten(res, status)
     out.update(_exposure_dict(ex, est))
     # the planner's row status: the illumination's (warnings included) unless
