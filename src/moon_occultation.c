@@ -79,13 +79,10 @@ static void both_occulters(const oi_real u_sun[3], const oi_real u_moon[3],
 #endif
 #ifndef OI_NO_OBLATE
     if (m->earth_shape == OI_EARTH_WGS84 && r[0] <= OI_R(0.5)) {
-        /* the ellipsoid's silhouette and the Moon's disc (src/oblate.c);
-         * the limb-darkened fraction moved by as much as the uniform one */
-        const oi_real exact = oi__oblate_visible(u_sun, r[0], target_km, m->earth_radius_km,
-                                                 u_moon, rm);
-        sh->fraction_ld = oi__clamp(sh->fraction_ld + (exact - sh->fraction), (oi_real)0,
-                                    (oi_real)1);
-        sh->fraction = exact;
+        /* the ellipsoid's silhouette and the Moon's disc (src/oblate.c),
+         * both discs exact */
+        sh->fraction = oi__oblate_visible(u_sun, r[0], target_km, m->earth_radius_km, u_moon, rm,
+                                          &sh->fraction_ld);
     }
 #else
     (void)m;
@@ -174,7 +171,7 @@ oi_real oi__moon_disc_visible(const oi_real point_km[3], const oi_real u_moon[3]
         else if (sep <= re - rm - margin)
             frac = (oi_real)0;
         else if (rm <= OI_R(0.5))
-            frac = oi__oblate_visible_earth(u_moon, rm, point_km, m->earth_radius_km);
+            frac = oi__oblate_visible_earth(u_moon, rm, point_km, m->earth_radius_km, NULL);
         else
             (void)oi__disc_fractions(rm, re, sep, &frac, NULL);
     } else
