@@ -83,17 +83,13 @@ static OI_NOINLINE void both_occulters(const oi_real u_sun[3], const oi_real u_m
 
 #ifndef OI_NO_OBLATE
 /* both_occulters on the ellipsoid: its silhouette and the Moon's disc
- * (src/oblate.c) replace the sphere's uniform fraction; the limb-darkened
- * fraction moved by as much as the uniform one. */
+ * (src/oblate.c) replace the sphere's fractions, both discs exact. */
 static OI_NOINLINE void oblate_both(const oi_real u_sun[3], const oi_real u_moon[3],
                                     const oi_real target_km[3], oi_real rm, const oi_model *m,
                                     oi_shadow *sh)
 {
-    const oi_real exact = oi__oblate_visible(u_sun, sh->sun_radius_rad, target_km,
-                                             m->earth_radius_km, u_moon, rm);
-    sh->fraction_ld = oi__clamp(sh->fraction_ld + (exact - sh->fraction), (oi_real)0,
-                                (oi_real)1);
-    sh->fraction = exact;
+    sh->fraction = oi__oblate_visible(u_sun, sh->sun_radius_rad, target_km, m->earth_radius_km,
+                                      u_moon, rm, &sh->fraction_ld);
 }
 #endif
 
@@ -183,7 +179,7 @@ oi_real oi__moon_disc_visible(const oi_real point_km[3], const oi_real u_moon[3]
         else if (sep <= re - rm - margin)
             frac = (oi_real)0;
         else if (rm <= OI_R(0.5))
-            frac = oi__oblate_visible_earth(u_moon, rm, point_km, m->earth_radius_km);
+            frac = oi__oblate_visible_earth(u_moon, rm, point_km, m->earth_radius_km, NULL);
         else
             (void)oi__disc_fractions(rm, re, sep, &frac, NULL);
     } else

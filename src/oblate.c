@@ -182,10 +182,60 @@ static oi_real chord_h(oi_real x, oi_real yy)
     return x / (yy * OI_SQRT(yy + x * x));
 }
 
+#ifndef OI_NO_LIMB_DARKENING
+/* Neckel & Labs (1994) at 559.95 nm, I(mu)/I(1) = sum A_k mu^k (as
+ * src/limb_darkening.c). */
+static const oi_real ld_a[6] = {OI_R(0.26892), OI_R(1.34319), OI_R(-1.58427),
+                                OI_R(1.91271), OI_R(-1.31350), OI_R(0.37295)};
+
+/*
+ * The limb-darkened chord in closed form. On the chord y = const of the
+ * gnomonic disc of radius t (half-width h, yy = 1 + y^2) the heliocentric
+ * cosine is mu = sqrt(h^2 - x^2) / (t sqrt(yy + x^2)) (mu^2 = 1 - sin^2 rho /
+ * sin^2 r exactly). With w = x / sqrt(yy + x^2) the element is dw / yy and
+ * mu = m0 cos(phi), w = W sin(phi), W = h / sqrt(yy + h^2), m0 = h / (t
+ * sqrt(yy)): the chord's flux from its centre to x is (W / yy) sum_k A_k
+ * m0^k C_(k+1)(phi), C_n(phi) = int_0^phi cos^n (the reduction formula
+ * C_n = cos^(n-1) sin / n + (n-1)/n C_(n-2)). This returns the sum; phi from
+ * its sine and cosine without cancellation at the chord's ends.
+ */
+static oi_real ld_chord_end(oi_real x, oi_real h, oi_real yy, oi_real m0)
+{
+    const oi_real q = OI_SQRT(yy + x * x);
+    const oi_real sn = x * OI_SQRT(yy + h * h) / (h * q);
+    const oi_real cs = OI_SQRT((h - x) * (h + x) * yy) / (h * q);
+    const oi_real phi = OI_ATAN2(sn, cs);
+    const oi_real c2 = cs * cs;
+    const oi_real c1n = sn;                                          /* C_1 */
+    const oi_real c2n = OI_R(0.5) * (cs * sn + phi);                 /* C_2 */
+    const oi_real c3n = c2 * sn / (oi_real)3 + c1n * OI_R(2.0) / (oi_real)3;
+    const oi_real c4n = c2 * cs * sn * OI_R(0.25) + c2n * OI_R(0.75);
+    const oi_real c5n = c2 * c2 * sn * OI_R(0.2) + c3n * OI_R(0.8);
+    const oi_real c6n = c2 * c2 * cs * sn / (oi_real)6 + c4n * OI_R(5.0) / (oi_real)6;
+    return ld_a[0] * c1n +
+           m0 * (ld_a[1] * c2n +
+                 m0 * (ld_a[2] * c3n + m0 * (ld_a[3] * c4n + m0 * (ld_a[4] * c5n +
+                                                                      m0 * ld_a[5] * c6n))));
+}
+
+/* ld_chord_end at the chord's end x = h, phi = pi/2: C_n(pi/2) are
+ * Wallis's 1, pi/4, 2/3, 3 pi/16, 8/15, 5 pi/32. */
+static oi_real ld_chord_half(oi_real m0)
+{
+    return ld_a[0] +
+           m0 * (ld_a[1] * OI_PI_R * OI_R(0.25) +
+                 m0 * (ld_a[2] * OI_R(2.0) / (oi_real)3 +
+                       m0 * (ld_a[3] * OI_PI_R * OI_R(0.1875) +
+                             m0 * (ld_a[4] * OI_R(8.0) / OI_R(15.0) +
+                                   m0 * ld_a[5] * OI_PI_R * OI_R(0.15625)))));
+}
+#endif
+
 /* What the occulters cover of the chord at height y (solid angle per unit
- * y); *full: the whole chord's. */
+ * y); *full: the whole chord's. ld not NULL (the disc of gnomonic radius t
+ * limb-darkened): ld[0] the covered flux, ld[1] the whole chord's. */
 static OI_NOINLINE oi_real chord_hidden(const cone *k, int n, oi_real y, oi_real h,
-                                         oi_real *full)
+                                         oi_real *full, oi_real t, oi_real *ld)
 {
     const oi_real yy = (oi_real)1 + y * y;
     /* zeros only for the analyser, which cannot see that nc == 2 means both
@@ -202,6 +252,24 @@ static OI_NOINLINE oi_real chord_hidden(const cone *k, int n, oi_real y, oi_real
         nc = 1;
     }
     for (i = 0; i < nc; ++i) hid += chord_h(b[i], yy) - chord_h(a[i], yy);
+#ifndef OI_NO_LIMB_DARKENING
+    if (ld != NULL) {
+        const oi_real m0 = h / (t * OI_SQRT(yy));
+        const oi_real scale = h / (OI_SQRT(yy + h * h) * yy);
+        const oi_real half = ld_chord_half(m0);
+        oi_real hl = (oi_real)0;
+        for (i = 0; i < nc; ++i)
+            hl += (a[i] == -h && b[i] == h)
+                      ? (oi_real)2 * half
+                      : ld_chord_end(b[i], h, yy, m0) - ld_chord_end(a[i], h, yy, m0);
+        ld[1] = (oi_real)2 * half * scale;
+        hl *= scale;
+        ld[0] = hl < ld[1] ? (hl > (oi_real)0 ? hl : (oi_real)0) : ld[1];
+    }
+#else
+    (void)t;
+    (void)ld;
+#endif
     return hid < *full ? hid : *full;
 }
 
@@ -341,36 +409,48 @@ static const oi_real edge_narrow[N_NARROW + 1] = {
     OI_R(0.875), OI_R(0.9375),     OI_R(0.984375), OI_R(0.99609375), OI_R(1.0)};
 
 /* The integrals over psi in [p0, p1] of the hidden part of the chord (the
- * return value) and of the visible part (added to *vis), times dy/dpsi. */
+ * return value) and of the visible part (added to *vis), times dy/dpsi;
+ * ld not NULL: the same of the limb-darkened flux added to ld[0] (hidden)
+ * and ld[1] (visible). */
 static OI_NOINLINE oi_real piece(const cone *k, int n, oi_real t, oi_real p0, oi_real p1,
-                                 int narrow, oi_real *vis)
+                                 int narrow, oi_real *vis, oi_real *ld)
 {
     const oi_real hw = OI_R(0.5) * (p1 - p0);
     const oi_real *edge = narrow ? edge_narrow : edge_wide;
     const int panels = narrow ? N_NARROW : N_WIDE;
-    oi_real sum = (oi_real)0, vsum = (oi_real)0;
+    oi_real sum = (oi_real)0, vsum = (oi_real)0, lsum[2] = {(oi_real)0, (oi_real)0};
     int pn, i, j;
     for (pn = 0; pn < panels; ++pn) {
         const oi_real u0 = edge[pn], du = edge[pn + 1] - edge[pn];
-        oi_real part = (oi_real)0, vpart = (oi_real)0;
+        oi_real part = (oi_real)0, vpart = (oi_real)0, lpart[2] = {(oi_real)0, (oi_real)0};
         for (i = 0; i < 4; ++i) {
             for (j = 0; j < 2; ++j) {
                 const oi_real x = j ? (oi_real)1 - gl8[i][0] : gl8[i][0];
                 const oi_real u = u0 + du * x;
-                oi_real su, cu, sp, cp, psi, full, hid, wgt;
+                oi_real su, cu, sp, cp, psi, full, hid, wgt, cl[2];
                 OI_SINCOS(OI_PI_R * u, &su, &cu);
                 psi = p0 + hw * ((oi_real)1 - cu);
                 OI_SINCOS(psi, &sp, &cp);
-                hid = chord_hidden(k, n, t * sp, t * cp, &full);
+                hid = chord_hidden(k, n, t * sp, t * cp, &full, t, ld != NULL ? cl : NULL);
                 wgt = gl8[i][1] * t * cp * su;
                 part += wgt * hid;
                 vpart += wgt * (full - hid);
+                if (ld != NULL) {
+                    lpart[0] += wgt * cl[0];
+                    lpart[1] += wgt * (cl[1] - cl[0]);
+                }
             }
         }
         sum += part * du;
         vsum += vpart * du;
+        lsum[0] += lpart[0] * du;
+        lsum[1] += lpart[1] * du;
     }
     *vis += vsum * hw * OI_PI_R;
+    if (ld != NULL) {
+        ld[0] += lsum[0] * hw * OI_PI_R;
+        ld[1] += lsum[1] * hw * OI_PI_R;
+    }
     return sum * hw * OI_PI_R;
 }
 
@@ -406,22 +486,36 @@ static OI_NOINLINE void all_breaks(const cone *k, int n, oi_real r, oi_real t, b
     }
 }
 
+/* Below this sine of the angle between s and toward the plane they span is
+ * taken as undefined: its normal, a cross product of nearly parallel
+ * vectors, has a direction known only to eps over that sine. */
+#ifdef OI_SINGLE_PRECISION
+#define FRAME_AXIS_SIN OI_R(1.0e-5)
+#else
+#define FRAME_AXIS_SIN OI_R(1.0e-10)
+#endif
+
 /* An orthonormal frame (s, eu, ev): eu towards toward's component normal to
- * s (any normal when there is none). */
+ * s, formed as (s x toward) x s so that it is normal to s to rounding
+ * however near toward lies to s; within FRAME_AXIS_SIN of it (or along it)
+ * any normal: s x (the axis farthest from s, normalised). */
 static void disc_frame(const oi_real s[3], const oi_real toward[3], oi_real f[3][3])
 {
-    oi_real d = oi__dot(toward, s), u[3];
+    oi_real n[3], u[3];
     int i;
-    for (i = 0; i < 3; ++i) {
-        f[0][i] = s[i];
-        u[i] = toward[i] - d * s[i];
-    }
-    if (!(oi__unit_bounded(u, u) > (oi_real)0)) {
+    for (i = 0; i < 3; ++i) f[0][i] = s[i];
+    oi__cross(s, toward, n);
+    if (oi__norm_bounded(n) > FRAME_AXIS_SIN * oi__norm_bounded(toward) &&
+        oi__unit_bounded(n, n) > (oi_real)0) {
+        oi__cross(n, s, u);
+    } else {
         const oi_real e[3] = {(oi_real)1, (oi_real)0, (oi_real)0};
         const oi_real g[3] = {(oi_real)0, (oi_real)1, (oi_real)0};
-        oi__cross(s, (s[0] * s[0] < OI_R(0.5)) ? e : g, u);
-        (void)oi__unit_bounded(u, u);
+        const oi_real h[3] = {(oi_real)0, (oi_real)0, (oi_real)1};
+        const oi_real ax = OI_FABS(s[0]), ay = OI_FABS(s[1]), az = OI_FABS(s[2]);
+        oi__cross(s, (ax <= ay && ax <= az) ? e : (ay <= az ? g : h), u);
     }
+    (void)oi__unit_bounded(u, u);
     for (i = 0; i < 3; ++i) f[1][i] = u[i];
     oi__cross(s, u, f[2]);
 }
@@ -450,12 +544,20 @@ static OI_NOINLINE int build_cones(const oi_real s[3], oi_real r, const oi_real 
 }
 
 /* The breaks sorted (insertion; at most MAX_BREAKS), the pieces between
- * them integrated, and the visible fraction formed (see oi__oblate_visible).
- * Out of line: the breaks' search is over before this frame is live. */
+ * them integrated, and the visible fraction formed (see oi__oblate_visible);
+ * frac_ld not NULL: the limb-darkened disc's there, the visible flux over
+ * the disc's (both from the same pieces). Out of line: the breaks' search
+ * is over before this frame is live. */
 static OI_NOINLINE oi_real fraction_from_breaks(const cone *k, int n, oi_real r, oi_real t,
-                                                int narrow, const breaks *b)
+                                                int narrow, const breaks *b, oi_real *frac_ld)
 {
     oi_real hid = (oi_real)0, vis = (oi_real)0, prev, disc, *brk = b->psi;
+    oi_real ld[2] = {(oi_real)0, (oi_real)0};
+#ifdef OI_NO_LIMB_DARKENING
+    oi_real *const want_ld = NULL;
+#else
+    oi_real *const want_ld = frac_ld != NULL ? ld : NULL;
+#endif
     const int nb = b->n;
     int i, j;
     for (i = 1; i < nb; ++i) {
@@ -466,13 +568,23 @@ static OI_NOINLINE oi_real fraction_from_breaks(const cone *k, int n, oi_real r,
     prev = -OI_HALF_PI_R;
     for (i = 0; i <= nb; ++i) {
         const oi_real next = i < nb ? brk[i] : OI_HALF_PI_R;
-        if (next > prev) hid += piece(k, n, t, prev, next, narrow, &vis);
+        if (next > prev) hid += piece(k, n, t, prev, next, narrow, &vis, want_ld);
         prev = next;
     }
     /* the smaller of the two parts keeps its relative accuracy (and is
      * exactly 0 when nothing, or everything, is covered) */
     disc = (oi_real)4 * OI_PI_R * oi__sin_half_sq(r);
-    return oi__clamp(vis < hid ? vis / disc : (oi_real)1 - hid / disc, (oi_real)0, (oi_real)1);
+    vis = oi__clamp(vis < hid ? vis / disc : (oi_real)1 - hid / disc, (oi_real)0, (oi_real)1);
+    if (frac_ld != NULL) {
+        /* in the same form, over the disc's flux as integrated: exactly 0
+         * or 1 with the uniform fraction (the same chords' covers) */
+        const oi_real tot = ld[0] + ld[1];
+        *frac_ld = want_ld == NULL ? vis
+                   : !(tot > (oi_real)0) ? vis
+                   : oi__clamp(ld[1] < ld[0] ? ld[1] / tot : (oi_real)1 - ld[0] / tot,
+                               (oi_real)0, (oi_real)1);
+    }
+    return vis;
 }
 
 /* tan r of the disc's apparent radius r: the gnomonic radius of its limb
@@ -494,7 +606,8 @@ static OI_NOINLINE oi_real gnomonic_radius(oi_real r)
  * Apart from oi__oblate_visible so that the Sun's shadow (one occulter)
  * does not carry the second occulter's breaks on its stack (make stack).
  */
-oi_real oi__oblate_visible_earth(const oi_real s[3], oi_real r, const oi_real p[3], oi_real a)
+oi_real oi__oblate_visible_earth(const oi_real s[3], oi_real r, const oi_real p[3], oi_real a,
+                                 oi_real *frac_ld)
 {
     oi_real t, psi[MAX_BREAKS_EARTH];
     breaks b;
@@ -505,7 +618,7 @@ oi_real oi__oblate_visible_earth(const oi_real s[3], oi_real r, const oi_real p[
     b.cap = MAX_BREAKS_EARTH;
     t = gnomonic_radius(r);
     all_breaks(k, 1, r, t, &b);
-    return fraction_from_breaks(k, 1, r, t, narrow, &b);
+    return fraction_from_breaks(k, 1, r, t, narrow, &b, frac_ld);
 }
 
 /*
@@ -515,7 +628,8 @@ oi_real oi__oblate_visible_earth(const oi_real s[3], oi_real r, const oi_real p[
  * (moon_limb_breaks).
  */
 static OI_NOINLINE oi_real visible_two(const oi_real s[3], oi_real r, const oi_real p[3],
-                                       oi_real a, const oi_real mo[3], oi_real rm)
+                                       oi_real a, const oi_real mo[3], oi_real rm,
+                                       oi_real *frac_ld)
 {
     oi_real t, psi[MAX_BREAKS], mf[3];
     breaks b;
@@ -527,13 +641,14 @@ static OI_NOINLINE oi_real visible_two(const oi_real s[3], oi_real r, const oi_r
     t = gnomonic_radius(r);
     all_breaks(k, 2, r, t, &b);
     moon_limb_breaks(&k[0], mf, rm, t, &b);
-    return fraction_from_breaks(k, 2, r, t, narrow, &b);
+    return fraction_from_breaks(k, 2, r, t, narrow, &b, frac_ld);
 }
 
 oi_real oi__oblate_visible(const oi_real s[3], oi_real r, const oi_real p[3], oi_real a,
-                           const oi_real mo[3], oi_real rm)
+                           const oi_real mo[3], oi_real rm, oi_real *frac_ld)
 {
-    return mo != NULL ? visible_two(s, r, p, a, mo, rm) : oi__oblate_visible_earth(s, r, p, a);
+    return mo != NULL ? visible_two(s, r, p, a, mo, rm, frac_ld)
+                      : oi__oblate_visible_earth(s, r, p, a, frac_ld);
 }
 
 /* Angular radius of the ellipsoid's silhouette seen from p, along the great

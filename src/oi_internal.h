@@ -321,14 +321,17 @@ oi_real oi__fraction_ld_two(oi_real rs, oi_real re, oi_real de, oi_real rm, oi_r
  * angular radius of its silhouette seen from p along the great circle from
  * the nadir towards the unit direction s; the visible fraction of the
  * uniform disc of unit direction s and apparent radius r seen from p behind
- * it and (mo not NULL) a sphere of unit direction mo and apparent radius rm. */
+ * it and (mo not NULL) a sphere of unit direction mo and apparent radius rm;
+ * frac_ld not NULL: the limb-darkened disc's fraction there (the uniform's
+ * with OI_NO_LIMB_DARKENING). */
 int oi__oblate_outside(const oi_real p[3], oi_real a);
 oi_real oi__oblate_geocentric_radius(const oi_real p[3], oi_real a);
 oi_real oi__oblate_radius_towards(const oi_real p[3], oi_real a, const oi_real s[3]);
 oi_real oi__oblate_visible(const oi_real s[3], oi_real r, const oi_real p[3], oi_real a,
-                           const oi_real mo[3], oi_real rm);
+                           const oi_real mo[3], oi_real rm, oi_real *frac_ld);
 /* oi__oblate_visible behind the ellipsoid alone (mo NULL), on less stack. */
-oi_real oi__oblate_visible_earth(const oi_real s[3], oi_real r, const oi_real p[3], oi_real a);
+oi_real oi__oblate_visible_earth(const oi_real s[3], oi_real r, const oi_real p[3], oi_real a,
+                                 oi_real *frac_ld);
 /* Distance from o (outside) along the unit direction u to the ellipsoid,
  * or -1 when the ray misses it. */
 oi_real oi__oblate_ray_hit(const oi_real o[3], const oi_real u[3], oi_real a);

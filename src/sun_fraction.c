@@ -339,10 +339,9 @@ static int sun_fractions(const sun_geom *g, int need_ld, oi_real *frac, oi_real 
  * sphere's region and fractions (the silhouette's radius along the great
  * circle towards the Sun), and where the Sun's disc comes within a hundredth
  * of its radius of that sphere's edges the exact visible fraction of the
- * uniform disc behind the elliptic silhouette (oblate_exact); the
- * limb-darkened fraction is the equivalent sphere's moved by the same
- * amount. The region follows the exact fraction. 1 when the exact fraction
- * is wanted. */
+ * uniform and the limb-darkened disc behind the elliptic silhouette
+ * (oblate_exact). The region follows the exact fraction. 1 when the exact
+ * fractions are wanted. */
 static int oblate_wants_exact(const sun_geom *g)
 {
     const oi_real margin = OI_R(0.01) * g->rs;
@@ -350,20 +349,19 @@ static int oblate_wants_exact(const sun_geom *g)
              g->sep <= g->re - g->rs - margin);
 }
 
-/* The exact fraction behind the ellipsoid (src/oblate.c) in place of the
+/* The exact fractions behind the ellipsoid (src/oblate.c) in place of the
  * equivalent sphere's in *out. Called once the geometry's frame is gone
  * (make stack): the unit vector to the Sun is formed again by the
  * operations of sun_geometry, from the distance it kept in *out. */
 static OI_NOINLINE void oblate_exact(const oi_real sun_km[3], const oi_real point_km[3],
                                      const oi_model *m, oi_shadow *out)
 {
-    oi_real s_hat[3], exact, moved;
+    oi_real s_hat[3], exact;
     oi__sub(sun_km, point_km, s_hat);
     (void)oi__divide3(s_hat, out->sun_distance_km, s_hat);
-    exact = oi__oblate_visible_earth(s_hat, out->sun_radius_rad, point_km, m->earth_radius_km);
-    moved = exact - out->fraction;
+    exact = oi__oblate_visible_earth(s_hat, out->sun_radius_rad, point_km, m->earth_radius_km,
+                                     &out->fraction_ld);
     out->fraction = exact;
-    out->fraction_ld = oi__clamp(out->fraction_ld + moved, (oi_real)0, (oi_real)1);
     if (exact == (oi_real)1) {
         out->fraction_ld = (oi_real)1;
         out->region = OI_SHADOW_LIT;

@@ -66,7 +66,8 @@ static oi_model wgs84_model(int atmosphere)
 static void test_vs_mpmath(void **state)
 {
     size_t i, n = sizeof ref_oblate / sizeof ref_oblate[0];
-    double worst = 0, worst_moon = 0, worst_vis = 0, moved = 0;
+    double worst = 0, worst_moon = 0, worst_vis = 0, moved = 0, worst_ld = 0, worst_moon_ld = 0;
+    double estimate = 0;
     const oi_model m = wgs84_model(0);
     (void)state;
     for (i = 0; i < n; ++i) {
@@ -83,6 +84,11 @@ static void test_vs_mpmath(void **state)
         if (fabs((double)sh.fraction - r->fraction) > worst)
             worst = fabs((double)sh.fraction - r->fraction);
         assert_true(sh.fraction_ld >= (oi_real)0 && sh.fraction_ld <= (oi_real)1);
+#ifndef OI_NO_LIMB_DARKENING
+        check_close(r->fraction_ld, (double)sh.fraction_ld, tol, 0, r->label);
+        if (fabs((double)sh.fraction_ld - r->fraction_ld) > worst_ld)
+            worst_ld = fabs((double)sh.fraction_ld - r->fraction_ld);
+#endif
         {
             /* the equivalent sphere (the silhouette's radius towards the
              * Sun): how far the ellipsoid moves the uniform fraction, the
@@ -94,9 +100,16 @@ static void test_vs_mpmath(void **state)
                                                 r->target[1] * r->target[1] +
                                                 r->target[2] * r->target[2]) *
                                            sin((double)sh.earth_radius_rad));
-            if (oi_sun_fraction(sun, p, &eq, &se) == OI_OK &&
-                fabs((double)se.fraction - (double)sh.fraction) > moved)
-                moved = fabs((double)se.fraction - (double)sh.fraction);
+            if (oi_sun_fraction(sun, p, &eq, &se) == OI_OK) {
+                /* and how far the limb-darkened fraction estimated by that
+                 * move (the sphere's plus the uniform disc's difference)
+                 * is from the reference */
+                double est = (double)se.fraction_ld + ((double)sh.fraction - (double)se.fraction);
+                est = est < 0 ? 0 : est > 1 ? 1 : est;
+                if (fabs((double)se.fraction - (double)sh.fraction) > moved)
+                    moved = fabs((double)se.fraction - (double)sh.fraction);
+                if (fabs(est - r->fraction_ld) > estimate) estimate = fabs(est - r->fraction_ld);
+            }
         }
         if (sh.fraction == (oi_real)1) assert_int_equal(sh.region, OI_SHADOW_LIT);
         if (sh.fraction == (oi_real)0) assert_int_equal(sh.region, OI_SHADOW_UMBRA);
@@ -115,6 +128,11 @@ static void test_vs_mpmath(void **state)
             st = oi_illuminate(&s, &m, &o);
             if (st < 0) check_int(OI_OK, st, r->label);
             check_close(r->fraction_moon, (double)o.shadow.fraction, BOTH_TOL, 0, r->label);
+#ifndef OI_NO_LIMB_DARKENING
+            check_close(r->fraction_moon_ld, (double)o.shadow.fraction_ld, BOTH_TOL, 0, r->label);
+            if (fabs((double)o.shadow.fraction_ld - r->fraction_moon_ld) > worst_moon_ld)
+                worst_moon_ld = fabs((double)o.shadow.fraction_ld - r->fraction_moon_ld);
+#endif
             check_close(r->moon_visible, (double)o.moon_disc_visible, FRACTION_TOL, 0, r->label);
             if (fabs((double)o.shadow.fraction - r->fraction_moon) > worst_moon)
                 worst_moon = fabs((double)o.shadow.fraction - r->fraction_moon);
@@ -127,6 +145,10 @@ static void test_vs_mpmath(void **state)
     print_message("oblate rows: %zu, worst |fraction - ref| = %.3g (Earth alone), %.3g (with the "
                   "Moon), |moon_disc_visible - ref| = %.3g; the ellipsoid moves the equivalent "
                   "sphere's fraction by up to %.3g\n", n, worst, worst_moon, worst_vis, moved);
+    print_message("oblate rows, limb-darkened: worst |fraction_ld - ref| = %.3g (Earth alone), "
+                  "%.3g (with the Moon); the equivalent sphere's fraction_ld moved by the uniform "
+                  "difference is off the reference by up to %.3g\n", worst_ld, worst_moon_ld,
+                  estimate);
 }
 
 /* A point on a circular polar orbit of radius r in the x-z plane (the Sun
