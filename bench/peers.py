@@ -11,9 +11,9 @@ A = a^2 acos(x / a) + b^2 acos((c - x) / b) - c y, x = (c^2 + a^2 - b^2) / (2 c)
 y = sqrt(a^2 - x^2), fraction 1 - A / (pi a^2). The annular case (c < a - b)
 does not occur at the benchmark's distances.
 
-Orekit and Basilisk are not installable from the package registries this
-repository's lock file draws on (Orekit needs a JVM and its Python wrapper
-from conda; Basilisk builds from source): not timed here.
+Orekit (Maven, org.orekit:orekit 12.2) and Basilisk (PyPI wheel bsk 2.12.1)
+install on the benchmark machine, but no harness for them is written yet: not
+timed here (docs/performance.md).
 """
 import numpy as np
 
