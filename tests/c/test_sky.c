@@ -30,12 +30,12 @@
 #if !defined(OI_NO_SKY) && !defined(OI_NO_EXPOSURE)
 #ifndef OI_NO_MOON
 #define SKY_MOON_BIT OI_SKY_MOON
+static const double TSI = 1361.0; /* W m^-2 (Kopp & Lean 2011): the Moon's sky */
 #else
 #define SKY_MOON_BIT 0u /* no Moon in this build: the bit is unknown */
 #endif
 static const double PI = 3.14159265358979323846;
 static const double AU = 149597870.7;
-static const double TSI = 1361.0;
 static const double DEG = 3.14159265358979323846 / 180.0;
 /* IAU 2006 mean obliquity of J2000, 84381.406 arcsec */
 static const double EPS = 84381.406 / 3600.0 * 3.14159265358979323846 / 180.0;
