@@ -370,6 +370,21 @@ static int illuminate_arrays(long n, const oi_scene *scenes, const oi_illum *out
     return OI_OK;
 }
 
+/* The set-up of both illuminate batches (n != 0): the arrays checked, the
+ * outputs mask checked, the model and its albedo resolved into *m. OI_OK,
+ * or the batch's error with the statuses set and the outputs zeroed. */
+static int illuminate_setup(long n, const oi_scene *scenes, const oi_model *model,
+                            unsigned outputs, oi_model *m, oi_illum *out, int *status)
+{
+    int st = illuminate_arrays(n, scenes, out, status);
+    if (st < 0) return st;
+    st = (outputs & ~(unsigned)OI_BATCH_SCENE_ALL) != 0u ? OI_ERR_FLAGS
+                                                        : oi__model_resolve(model, m);
+    if (st == OI_OK) st = oi__albedo_resolve(model, m);
+    if (st < 0) return batch_fail(st, n, status, out, sizeof *out, 1);
+    return OI_OK;
+}
+
 int oi_illuminate_batch(long n, const oi_scene *scenes, const oi_model *model, oi_illum *out,
                         int *status)
 {
@@ -377,11 +392,8 @@ int oi_illuminate_batch(long n, const oi_scene *scenes, const oi_model *model, o
     long i, bad = 0;
     int st;
     if (n == 0) return 0;
-    st = illuminate_arrays(n, scenes, out, status);
+    st = illuminate_setup(n, scenes, model, OI_BATCH_SCENE_ALL, &m, out, status);
     if (st < 0) return st;
-    st = oi__model_resolve(model, &m);
-    if (st == OI_OK) st = oi__albedo_resolve(model, &m);
-    if (st < 0) return batch_fail(st, n, status, out, sizeof *out, 1);
     for (i = 0; i < n; i++) {
         status[i] = oi__illuminate_resolved(&scenes[i], &m, &out[i]);
         bad += status[i] < 0;
@@ -396,12 +408,8 @@ int oi_illuminate_batch_outputs(long n, const oi_scene *scenes, const oi_model *
     long i, bad = 0;
     int st;
     if (n == 0) return 0;
-    st = illuminate_arrays(n, scenes, out, status);
+    st = illuminate_setup(n, scenes, model, outputs, &m, out, status);
     if (st < 0) return st;
-    st = (outputs & ~(unsigned)OI_BATCH_SCENE_ALL) != 0u ? OI_ERR_FLAGS
-                                                        : oi__model_resolve(model, &m);
-    if (st == OI_OK) st = oi__albedo_resolve(model, &m);
-    if (st < 0) return batch_fail(st, n, status, out, sizeof *out, 1);
     for (i = 0; i < n; i++) {
         status[i] = oi__illuminate_outputs(&scenes[i], &m, outputs, &out[i]);
         bad += status[i] < 0;
