@@ -49,6 +49,14 @@
  *   all_batch_irradiance  the same, mask 0 (the irradiances at the target)
  *   all_batch_full  the same, OI_BATCH_SCENE_ALL (every output of oi_illuminate)
  *   earthshine_batch  oi_earthshine_batch (as earthshine)
+ *   expose_batch   oi_expose_scene_batch over the mix (built-in camera 0, no goal; the
+ *                  illuminations computed once, outside the count)
+ *   expose_batch_all, expose_batch_setting, expose_batch_faint, expose_batch_flags
+ *                  oi_expose_scene_batch_outputs, masks OI_EXPOSE_ALL,
+ *                  OI_EXPOSE_SETTING, OI_EXPOSE_FAINT, 0 (the geometric flags alone)
+ *   expose_batch_moving_all, expose_batch_moving_faint  the same, masks OI_EXPOSE_ALL
+ *                  and OI_EXPOSE_FAINT, each target moving at its circular speed about the
+ *                  z axis (the trailed search)
  *   sun_earth_knocke, sun_earth_map  as sun_earth under the Knocke albedo
  *                  field and a 1-degree map (docs/earthshine-albedo.md);
  *                  sun_earth_map_9x18 and sun_earth_map_q the same with
@@ -90,7 +98,9 @@ enum { C_ALL, C_SUN, C_SUN_EARTH, C_ALL_EXPOSE, C_SUN_FRACTION, C_EARTHSHINE, C_
        C_SUN_FRACTION_BATCH, C_SUN_FRACTION_BATCH_ALL, C_ALL_BATCH, C_ALL_BATCH_OBSERVER,
        C_ALL_BATCH_IRRADIANCE, C_ALL_BATCH_FULL, C_EARTHSHINE_BATCH,
        C_SUN_EARTH_KNOCKE, C_SUN_EARTH_MAP, C_SUN_EARTH_TABLE, C_SUN_EARTH_MAP_9X18, C_SUN_EARTH_MAP_Q,
-       C_ALL_BATCH_OBSERVER_MEAN, C_N };
+       C_ALL_BATCH_OBSERVER_MEAN, C_EXPOSE_BATCH, C_EXPOSE_BATCH_ALL, C_EXPOSE_BATCH_SETTING,
+       C_EXPOSE_BATCH_FAINT, C_EXPOSE_BATCH_FLAGS, C_EXPOSE_BATCH_MOVING_ALL,
+       C_EXPOSE_BATCH_MOVING_FAINT, C_N };
 static const char *const config_name[C_N] = {"all",          "sun",        "sun_earth",
                                              "all_expose",   "sun_fraction", "earthshine",
                                              "earthshine_lambert", "sun_moon", "sun_earth_mean",
@@ -102,7 +112,11 @@ static const char *const config_name[C_N] = {"all",          "sun",        "sun_
                                              "all_batch_observer", "all_batch_irradiance",
                                              "all_batch_full", "earthshine_batch", "sun_earth_knocke",
                                              "sun_earth_map", "sun_earth_table", "sun_earth_map_9x18",
-                                             "sun_earth_map_q", "all_batch_observer_mean"};
+                                             "sun_earth_map_q", "all_batch_observer_mean",
+                                             "expose_batch", "expose_batch_all",
+                                             "expose_batch_setting", "expose_batch_faint",
+                                             "expose_batch_flags", "expose_batch_moving_all",
+                                             "expose_batch_moving_faint"};
 
 /* the albedo map of sun_earth_map: 1-degree cells (a CERES grid's size),
  * a smooth zonal and tesseral pattern (filled by setup) */
@@ -140,6 +154,13 @@ static oi_scene b_scenes[BENCH_NSCENES];
 static oi_shadow b_shadow[BENCH_NSCENES];
 static oi_illum b_illum[BENCH_NSCENES];
 static int b_status[BENCH_NSCENES];
+#ifndef OI_NO_EXPOSURE
+/* the exposure configurations' scenes (at rest, and moving), their
+ * illuminations and exposures */
+static oi_scene b_moving[BENCH_NSCENES];
+static oi_illum b_ex_illum[BENCH_NSCENES];
+static oi_exposure b_ex[BENCH_NSCENES];
+#endif
 
 static void setup(void)
 {
@@ -198,9 +219,44 @@ static void pack(void)
         b_h[nb] = es_h[i];
         b_scenes[nb] = scenes[i];
         b_scenes[nb].terms = OI_TERM_ALL;
+#ifndef OI_NO_EXPOSURE
+        {
+            /* circular speed about the z axis, sqrt(GM / r) (GM 398600.4418 km^3/s^2) */
+            const double x = (double)scenes[i].target_km[0], y = (double)scenes[i].target_km[1];
+            const double z = (double)scenes[i].target_km[2], r = sqrt(x * x + y * y + z * z);
+            const double rho = sqrt(x * x + y * y), v = sqrt(398600.4418 / r);
+            b_moving[nb] = b_scenes[nb];
+            b_moving[nb].target_vel_km_s[0] = (oi_real)(rho > 0 ? -v * y / rho : v);
+            b_moving[nb].target_vel_km_s[1] = (oi_real)(rho > 0 ? v * x / rho : 0.0);
+            (void)oi_illuminate(&b_scenes[nb], NULL, &b_ex_illum[nb]);
+        }
+#endif
         nb++;
     }
 }
+
+#ifndef OI_NO_EXPOSURE
+/* One call of an exposure batch configuration; returns a checksum. */
+static double run_expose_batch(int cfg)
+{
+    const oi_camera *cam = oi_camera_builtin(0);
+    const int moving = cfg == C_EXPOSE_BATCH_MOVING_ALL || cfg == C_EXPOSE_BATCH_MOVING_FAINT;
+    const unsigned mask = cfg == C_EXPOSE_BATCH_SETTING ? OI_EXPOSE_SETTING
+                          : cfg == C_EXPOSE_BATCH_FAINT || cfg == C_EXPOSE_BATCH_MOVING_FAINT
+                              ? OI_EXPOSE_FAINT
+                          : cfg == C_EXPOSE_BATCH_FLAGS ? 0u
+                                                        : OI_EXPOSE_ALL;
+    double acc = 0.0;
+    long i;
+    if (cfg == C_EXPOSE_BATCH)
+        (void)oi_expose_scene_batch(nb, cam, b_scenes, b_ex_illum, NULL, NULL, b_ex, b_status);
+    else
+        (void)oi_expose_scene_batch_outputs(nb, cam, moving ? b_moving : b_scenes, b_ex_illum,
+                                            NULL, NULL, mask, b_ex, b_status);
+    for (i = 0; i < nb; i++) acc += (double)b_ex[i].exposure_s + (double)b_ex[i].flags;
+    return acc;
+}
+#endif
 
 /* One call of a batch configuration; returns a checksum. */
 static double run_batch(int cfg)
@@ -249,17 +305,23 @@ static double run_batch(int cfg)
 static double run_config(int cfg)
 {
     static oi_illum il;
+#ifndef OI_NO_EXPOSURE
     static oi_exposure ex;
+    const oi_camera *cam = oi_camera_builtin(0);
+#endif
     oi_model lambert, mean, wgs84, knocke, map, table, map9, mapq;
     oi_real phi, psi;
     double acc = 0.0;
     int i;
-    const oi_camera *cam = NULL;
-#ifndef OI_NO_EXPOSURE
-    cam = oi_camera_builtin(0);
-#endif
     if ((cfg >= C_SUN_FRACTION_BATCH && cfg <= C_EARTHSHINE_BATCH) || cfg == C_ALL_BATCH_OBSERVER_MEAN)
         return run_batch(cfg);
+    if (cfg >= C_EXPOSE_BATCH) {
+#ifndef OI_NO_EXPOSURE
+        return run_expose_batch(cfg);
+#else
+        return 0.0;
+#endif
+    }
     memset(&lambert, 0, sizeof lambert);
     lambert.earth_model = OI_EARTH_LAMBERT;
     memset(&mean, 0, sizeof mean);
@@ -344,9 +406,6 @@ static double run_config(int cfg)
 #ifndef OI_NO_EXPOSURE
             (void)oi_expose_scene(cam, s, &il, NULL, NULL, &ex);
             acc += (double)ex.exposure_s;
-#else
-            (void)cam;
-            (void)ex;
 #endif
             break;
         case C_SUN_FRACTION:

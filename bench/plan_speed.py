@@ -7,7 +7,11 @@ For each golden case (tests/golden/CASE.in.csv) the input is repeated
 best child CPU time (user + system, getrusage) gives rows per CPU-second. Its
 output is checked to be the golden output repeated, byte for byte. With
 valgrind, callgrind counts the instructions per row on --cg-copies copies and
-the part inside the library (oi_illuminate and oi_expose_scene, inclusive).
+the part inside the library (oi_illuminate or oi_illuminate_batch_outputs,
+and oi_expose_scene, inclusive); with --baseline also the bound the library
+sets: the original's instructions per row over the library's alone, and,
+where perf runs, the same bound in CPU time (the share of perf's samples in
+the library's functions, named by nm from build/liborbillum.a, and libm).
 --plan points at another build (e.g. one of an earlier commit) to compare.
 --baseline names the original planner (make plan-bench builds it: the
 planner's sources from before its own number text, against today's
@@ -75,10 +79,43 @@ def callgrind(plan, path, tmp):
         if "PROGRAM TOTALS" in line:
             total = n
         else:
-            f = re.search(r":(oi_illuminate|oi_expose_scene) ", line)
+            f = re.search(r":(oi_illuminate|oi_illuminate_batch_outputs|oi_expose_scene) ", line)
             if f:
                 per_fn[f.group(1)] = max(per_fn.get(f.group(1), 0), n)
     return total, sum(per_fn.values())
+
+
+def library_symbols(archive):
+    """The function names of the library archive (nm: text symbols, static ones too)."""
+    if not shutil.which("nm") or not os.path.exists(archive):
+        return set()
+    out = subprocess.run(["nm", archive], capture_output=True, text=True, check=False).stdout
+    return {f[2] for f in (line.split() for line in out.splitlines())
+            if len(f) == 3 and f[1] in "tTwW"}
+
+
+def perf_library_share(plan, path, symbols, tmp):
+    """The share of the planner's CPU-time samples (perf record) inside the
+    library's functions and the libm they call, or None without perf."""
+    if not symbols or not shutil.which("perf"):
+        return None
+    data = os.path.join(tmp, "perf.data")
+    r = subprocess.run(["perf", "record", "-q", "-F", "10000", "-o", data, "--", plan, "--csv",
+                        path], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False)
+    if r.returncode != 0:
+        return None
+    rep = subprocess.run(["perf", "report", "-i", data, "--stdio", "--sort", "dso,sym"],
+                         capture_output=True, text=True, check=False).stdout
+    total = lib = 0.0
+    for line in rep.splitlines():
+        f = line.split()
+        if len(f) < 4 or line.startswith("#") or not f[0].endswith("%"):
+            continue
+        share, dso, sym = float(f[0][:-1]), f[1], f[-1]
+        total += share
+        if sym in symbols or sym.split(".")[0] in symbols or dso.startswith("libm"):
+            lib += share
+    return lib / total if total > 0 else None
 
 
 def main():
@@ -99,6 +136,7 @@ def main():
 
     ok = True
     speedups = []
+    symbols = library_symbols(os.path.join(ROOT, "build", "liborbillum.a"))
     with tempfile.TemporaryDirectory() as tmp:
         for case in CASES:
             path, rows, want = repeated(case, a.copies, tmp)
@@ -127,11 +165,19 @@ def main():
                 put(f"plan.{case}.speedup", f"{base_best / best:.2f}", "x",
                     "rows per CPU-second over the original's (goal 4)")
                 speedups.append(base_best / best)
+                share = perf_library_share(a.plan, path, symbols, tmp)
+                if share:
+                    put(f"plan.{case}.library_cpu_share", f"{100.0 * share:.0f}", "%",
+                        "perf record: the planner's CPU samples in the library (and libm)")
+                    put(f"plan.{case}.library_cpu_bound", f"{base_best / best / share:.2f}", "x",
+                        "the speed-up were the planner's own work free: the original's CPU time "
+                        "over the library's share of these")
             if shutil.which("valgrind") and shutil.which("callgrind_annotate"):
                 cpath, crows, _ = repeated(case, a.cg_copies, tmp)
                 total, lib = callgrind(a.plan, cpath, tmp)
                 put(f"plan.{case}.instructions_per_row", f"{total / crows:.0f}", "instructions",
-                    f"callgrind, {crows} rows; the library (oi_illuminate + oi_expose_scene) "
+                    f"callgrind, {crows} rows; the library (oi_illuminate or its batch, "
+                    f"oi_expose_scene) "
                     f"{lib / crows:.0f} ({100.0 * lib / total:.0f} %)")
                 if a.baseline:
                     btotal, blib = callgrind(a.baseline, cpath, tmp)
@@ -139,6 +185,10 @@ def main():
                         "instructions", f"the original planner; its library part {blib / crows:.0f}")
                     put(f"plan.{case}.instruction_ratio", f"{btotal / total:.2f}", "x",
                         "the original's instructions per row over these")
+                    if lib:
+                        put(f"plan.{case}.library_bound", f"{btotal / lib:.2f}", "x",
+                            "the instruction ratio were the planner's own work free: the "
+                            "original's instructions over the library's alone")
     if speedups:
         worst = min(speedups)
         put("goal.plan_4x_rows_per_cpu_s", "met" if worst >= 4.0 else "missed", "-",

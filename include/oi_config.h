@@ -63,6 +63,10 @@
  *                        fields and constants stay: they belong to the
  *                        model's ABI, as with OI_NO_LIMB_DARKENING).
  *                        docs/atmosphere.md.
+ *   OI_NO_TARGET_CLONES  no AVX2 copies of oi_sun_fraction_batch's two block
+ *                        loops (GCC on x86-64 Linux builds them by default,
+ *                        chosen at load time; src/batch.c): only the portable
+ *                        code. Results are the same bits either way.
  * An option that removes a feature removes its declarations too, so code that
  * still uses the feature fails to compile.
  */

@@ -1251,6 +1251,50 @@ int oi_expose_batch(long n, const oi_camera *camera, const oi_expose_in *in,
 int oi_expose_scene_batch(long n, const oi_camera *camera, const oi_scene *scenes,
                           const oi_illum *illum, const oi_model *model,
                           const oi_expose_goal *goal, oi_exposure *out, int *status);
+
+/* Outputs mask of oi_expose_batch_outputs and oi_expose_scene_batch_outputs
+ * (bits). Always formed: status and flags' geometric bits (every OI_FLAG_*
+ * but TOO_FAINT, SATURATED and TRAILED). */
+#define OI_EXPOSE_SETTING    (1u)  /* the choice: exposure_s, gain, time_index,
+                                      gain_index, signal_e, background_e, peak_e,
+                                      saturation_e, fill, snr, trail_px,
+                                      trail_factor; OI_FLAG_SATURATED */
+#define OI_EXPOSE_FAINT      (2u)  /* OI_FLAG_TOO_FAINT (at rest: one SNR; moving:
+                                      the highest gain's allowed times), without
+                                      the search */
+#define OI_EXPOSE_DETECT     (4u)  /* signal_min_e, detect_margin_mag (the setting is
+                                      searched for them) */
+#define OI_EXPOSE_SUN_ANGLE  (8u)  /* sun_angle_rad (without: OI_FLAG_SUN_EXCLUSION
+                                      decided from a cosine where it is certain) */
+#define OI_EXPOSE_BACKGROUND (16u) /* background_w_m2_sr */
+#define OI_EXPOSE_RATE       (32u) /* rate_rad_s */
+#define OI_EXPOSE_ALL (OI_EXPOSE_SETTING | OI_EXPOSE_FAINT | OI_EXPOSE_DETECT | OI_EXPOSE_SUN_ANGLE | OI_EXPOSE_BACKGROUND | OI_EXPOSE_RATE)
+
+/* oi_expose_batch and oi_expose_scene_batch with an outputs mask (OI_EXPOSE_*
+ * bits; others: OI_ERR_FLAGS for the batch, checked before the model and
+ * the camera). OI_FLAG_TRAILED comes with OI_EXPOSE_SETTING or
+ * OI_EXPOSE_FAINT. Every field asked for, and the status, is the single
+ * call's bits; the fields left out are 0, and what only they need is not
+ * computed: without OI_EXPOSE_SETTING and OI_EXPOSE_DETECT no search, without
+ * OI_EXPOSE_FAINT no detection test at the longest time (moving: no trail
+ * over the highest gain's times), without OI_EXPOSE_SUN_ANGLE no arctangent
+ * where the Sun is certainly inside or outside the exclusion angle, without
+ * the choice's bits (SETTING, FAINT, DETECT): no angular rate unless
+ * OI_EXPOSE_RATE, and no sky terms (zodiacal light, starlight, the limb's
+ * scattered sunlight) unless OI_EXPOSE_BACKGROUND (the background's checks,
+ * OI_ERR_NONFINITE and OI_ERR_INPUT, then not made). The goal's defaults, detection rule and
+ * sensor temperature, the camera and the model are formed once per batch.
+ * In oi_expose_batch_outputs background_w_m2_sr and rate_rad_s are the
+ * input's and OI_EXPOSE_SUN_ANGLE changes nothing (sun_angle_rad is 0).
+ * With OI_EXPOSE_ALL every row is the single call's. src/expose_batch.c,
+ * docs/camera.md "Batches and their outputs mask". */
+int oi_expose_batch_outputs(long n, const oi_camera *camera, const oi_expose_in *in,
+                            const oi_expose_goal *goal, unsigned outputs, oi_exposure *out,
+                            int *status);
+int oi_expose_scene_batch_outputs(long n, const oi_camera *camera, const oi_scene *scenes,
+                                  const oi_illum *illum, const oi_model *model,
+                                  const oi_expose_goal *goal, unsigned outputs,
+                                  oi_exposure *out, int *status);
 #endif /* OI_NO_EXPOSURE */
 
 #ifdef __cplusplus

@@ -22,7 +22,7 @@ FUZZ_SAN := -fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recov
 # (use with its own BUILDDIR, e.g. make fuzz-replay FUZZ_DEFS=-DFUZZ_STRICT BUILDDIR=build/strict)
 FUZZ_DEFS ?=
 FUZZ_CFLAGS := -std=c99 -g -O1 -fno-omit-frame-pointer -Iinclude -Isrc -Itables $(FUZZ_SAN) $(FUZZ_DEFS)
-FUZZ_TARGETS := api csv
+FUZZ_TARGETS := api csv batch
 FUZZ_BINS := $(foreach t,$(FUZZ_TARGETS),$(FUZZ_DIR)/double/fuzz_$(t) $(FUZZ_DIR)/float/fuzz_$(t))
 # The planner's modules except its main(): the CSV target links the reader.
 PLAN_LIB_SRC := $(filter-out examples/oi_plan/main.c,$(PLAN_SRC))
@@ -46,6 +46,14 @@ $(FUZZ_DIR)/double/fuzz_csv: fuzz/fuzz_csv.c $(PLAN_SRC) $(RT_SRC) | deps-fuzz
 $(FUZZ_DIR)/float/fuzz_csv: fuzz/fuzz_csv.c $(PLAN_SRC) $(RT_SRC) | deps-fuzz
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -DOI_SINGLE_PRECISION -Iexamples/oi_plan -fsanitize=fuzzer $< $(PLAN_LIB_SRC) $(RT_SRC) -lm -o $@
+
+$(FUZZ_DIR)/double/fuzz_batch: fuzz/fuzz_batch.c fuzz/fuzz_common.h $(RT_SRC) | deps-fuzz
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer $< $(RT_SRC) -lm -o $@
+
+$(FUZZ_DIR)/float/fuzz_batch: fuzz/fuzz_batch.c fuzz/fuzz_common.h $(RT_SRC) | deps-fuzz
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -DOI_SINGLE_PRECISION -fsanitize=fuzzer $< $(RT_SRC) -lm -o $@
 
 fuzz-build: $(FUZZ_BINS) ## build the libFuzzer targets (both precisions)
 

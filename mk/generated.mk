@@ -14,6 +14,23 @@
 # and PNG bytes of the plotting library), docs/stability.md (errors measured through the host's
 # libm, whose last bits differ between machines).
 
+# The generators' last bits must not depend on the processor: numpy dispatches its loops to the
+# widest SIMD extension the processor has (AVX-512 loops give other last bits than AVX2 ones),
+# OpenBLAS picks a kernel per processor (np.dot, np.linalg.norm), and glibc's libm picks its FMA
+# variants where the processor has FMA (Python's math). CI ran on a processor without AVX-512 and
+# four reference files came out different. So every generator runs on the same code on any
+# x86-64-v2 processor: numpy at its baseline (every dispatched extension this processor has is
+# disabled, as numpy lists them), OpenBLAS's Nehalem kernel, glibc's libm without FMA, FMA4
+# and AVX2.
+# Only the generators' recipes get these (target-specific), never the tests or the benchmarks.
+GEN_NPY_DISPATCHED := from numpy._core._multiarray_umath import __cpu_dispatch__ as d, \
+  __cpu_features__ as f; print(' '.join(x for x in d if f.get(x)))
+GEN_NPY_DISABLE = $(shell [ -x $(PY) ] && $(PY) -c "$(GEN_NPY_DISPATCHED)" 2>/dev/null)
+GEN_TARGETS := bake bake-earth bake-atm ref-all ref-earthshine ref-shadow stability-vectors
+$(GEN_TARGETS): export NPY_DISABLE_CPU_FEATURES = $(GEN_NPY_DISABLE)
+$(GEN_TARGETS): export OPENBLAS_CORETYPE := Nehalem
+$(GEN_TARGETS): export GLIBC_TUNABLES := glibc.cpu.hwcaps=-AVX2,-FMA,-FMA4,-AVX512F
+
 GEN_DIR := $(BUILDDIR)/generated
 GEN_ABS_PY := $(abspath $(PY))
 

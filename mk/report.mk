@@ -6,11 +6,12 @@
 #   make report-docs       the same run, written over the committed docs/report.md and docs/report/
 #   make perf-doc          cross, size, stack, target-test, target-bench, bench; docs/performance.md
 #   make bench             host benchmark: ns and instructions per scene, against quadrature
+#   make bench-peers       the Sun fraction's peers alone (numpy M&G, Orekit, Basilisk)
 #   make shadow-report     planar (Montenbruck & Gill) vs exact spherical Sun fraction
 #   make stability-report  the worst-error table of docs/stability.md
 #   make golden            re-record the planner's golden outputs (tests/golden/)
 
-.PHONY: report report-docs perf-doc bench shadow-report stability-report golden
+.PHONY: report report-docs perf-doc bench bench-peers peers shadow-report stability-report golden
 REPORT_ARGS ?=
 REPORT_OUT := $(BUILDDIR)/report/report.md
 
@@ -54,8 +55,38 @@ $(foreach p,double float,$(eval $(call BENCH_RULES,$(p))))
 
 bench: $(BENCH_DIR)/bench-double $(BENCH_DIR)/bench-float deps-py deps-bench ## ns and instructions per scene; table vs quadrature
 	-@$(MAKE) --no-print-directory $(ILLUM_BASELINE)
+	-@$(MAKE) --no-print-directory peers
 	@nice -n 5 $(PY) bench/run_bench.py --bindir $(BENCH_DIR) --out $(BENCH_DIR)/bench.txt \
-	  $$([ -x $(ILLUM_BASELINE) ] && echo --baseline $(ILLUM_BASELINE))
+	  --peers $(PEERS_DIR) $$([ -x $(ILLUM_BASELINE) ] && echo --baseline $(ILLUM_BASELINE))
+
+# ---- the Sun fraction's process peers (bench/peers.py runs them; docs/performance.md): the
+# Orekit harness (bench/peers/, Maven: Orekit 12.2 from Maven Central, java 17 + mvn) and
+# Basilisk in a venv of its own (bench/peers/requirements-basilisk.txt: bsk pins packages
+# below requirements.lock). Each is skipped with the reason when its tools are missing.
+PEERS_DIR := $(BUILDDIR)/peers
+PEERS_VENV := $(BUILDDIR)/peers-venv
+OREKIT_HARNESS := $(PEERS_DIR)/orekit/classpath.txt
+
+peers: ## build the Orekit harness (java, mvn) and the Basilisk venv (build/peers-venv); a missing tool is skipped with its reason
+	@if command -v java >/dev/null 2>&1 && command -v mvn >/dev/null 2>&1; then \
+	  $(MAKE) --no-print-directory $(OREKIT_HARNESS); \
+	else echo "peers: Orekit skipped: java or mvn not found"; fi
+	@if python3 -m venv --help >/dev/null 2>&1; then \
+	  $(MAKE) --no-print-directory $(PEERS_VENV)/.deps; \
+	else echo "peers: Basilisk skipped: python3 -m venv not available"; fi
+
+$(OREKIT_HARNESS): bench/peers/pom.xml $(wildcard bench/peers/src/main/java/org/orbillum/peers/*.java)
+	mvn -q -B -f bench/peers/pom.xml -Dpeers.builddir=$(abspath $(PEERS_DIR))/orekit package
+	@touch $@
+
+$(PEERS_VENV)/.deps: bench/peers/requirements-basilisk.txt
+	[ -x $(PEERS_VENV)/bin/python ] || python3 -m venv $(PEERS_VENV)
+	$(PEERS_VENV)/bin/python -m pip install -q --disable-pip-version-check -r $<
+	@touch $@
+
+bench-peers: $(BENCH_DIR)/bench-double binding peers ## the Sun fraction's peers and the binding's cost alone, then the goals (build/bench/peers.txt)
+	nice -n 5 $(PY) bench/run_bench.py --bindir $(BENCH_DIR) --out $(BENCH_DIR)/peers.txt --only-peers \
+	  --peers $(PEERS_DIR)
 
 # ---- the full illumination goal alone (instructions, double): today's scene configurations
 # and the baseline below, then the goal lines (build/bench/illum.txt)

@@ -29,7 +29,9 @@ WASM_EXPORTS := oi_status_name oi_lambert_phase oi_angle oi_cap_overlap oi_sun_f
   oi_earthshine oi_moon_phase_law oi_scene_defaults oi_illuminate oi_magnitude_v \
   oi_flux_from_magnitude oi_camera_builtin oi_camera_find oi_flag_name oi_expose oi_expose_scene \
   oi_shape_check oi_shape_builtin oi_shape_find oi_facet_brdf oi_earthshine_plate \
-  oi_skylight \
+  oi_skylight oi_sun_fraction_batch oi_earthshine_batch oi_illuminate_batch \
+  oi_illuminate_batch_outputs oi_expose_batch oi_expose_scene_batch oi_expose_batch_outputs \
+  oi_expose_scene_batch_outputs \
   oi_wasm_scratch oi_wasm_scratch_bytes oi_wasm_layout_count oi_wasm_layout_name oi_wasm_layout_value
 WASM_COMMA := ,
 WASM_LDFLAGS := $(WASM_TARGET) -nostartfiles -Wl,--no-entry -Wl,--gc-sections \

@@ -3,8 +3,8 @@
 
 The C sources live beside this directory in the repository, so install from a
 checkout: ``pip install ./python``. The flags are the repository's strict flags
-(Makefile WARN) plus -fPIC; the compiler is $CC or cc. Set ORBILLUM_LIB at run
-time to use another build instead (e.g. build/liborbillum.so from ``make shared``).
+(Makefile WARN) plus -fno-math-errno (Makefile RT_MATH) and -fPIC; the compiler
+is $CC or cc. Set ORBILLUM_LIB at run time to use another build instead (e.g. build/liborbillum.so from ``make shared``).
 """
 import glob
 import os
@@ -33,7 +33,9 @@ class BuildWithLibrary(build_py):
         os.makedirs(out_dir, exist_ok=True)
         out = os.path.join(out_dir, "liborbillum.so")
         cc = shlex.split(os.environ.get("CC", "cc"))
-        cmd = cc + WARN + ["-O2", "-fPIC", "-shared"] + [
+        # -fno-math-errno as the library's own build (Makefile RT_MATH): sqrt one
+        # instruction, so that the batch's loops vectorise
+        cmd = cc + WARN + ["-O2", "-fno-math-errno", "-fPIC", "-shared"] + [
             "-I" + os.path.join(ROOT, d) for d in ("include", "src", "tables")
         ] + src + ["-lm", "-o", out]
         print(" ".join(cmd))

@@ -296,6 +296,10 @@ static const oi_atm_table *table_of(const oi_model *m)
  *   m         oi_model*   resolved model (oi__model_resolve): earth_radius_km,
  *                         sun_radius_km, limb_darkening, band, atm_table
  *                         (band V) or atm_total_table (band total) are used
+ *                         (oi__atm_fraction_about: all but earth_radius_km)
+ *   earth_radius_km oi_real  oi__atm_fraction_about only: the radius of the
+ *                         sphere the table's coordinates are taken about (the
+ *                         ellipsoid's equivalent sphere, src/sun_fraction.c)
  *   frac      oi_real     geometric visible fraction of the uniform disc
  *   frac_ld   oi_real     geometric visible fraction of the limb-darkened disc
  *                         (both as oi_sun_fraction computes them)
@@ -363,6 +367,16 @@ static const oi_atm_table *table_of(const oi_model *m)
 int oi__atm_fraction(const oi_real sun_km[3], const oi_real point_km[3], const oi_model *m,
                      oi_real frac, oi_real frac_ld, oi_real *fraction_atm, oi_real dir[3])
 {
+    return oi__atm_fraction_about(sun_km, point_km, m, m->earth_radius_km, frac, frac_ld,
+                                  fraction_atm, dir);
+}
+
+/* The same about a sphere of another radius than the model's: no copy of
+ * the model on the caller's stack (make stack). */
+int oi__atm_fraction_about(const oi_real sun_km[3], const oi_real point_km[3], const oi_model *m,
+                           oi_real earth_radius_km, oi_real frac, oi_real frac_ld,
+                           oi_real *fraction_atm, oi_real dir[3])
+{
     const oi_atm_table *t;
     oi_real s_hat[3], cr[3];
     oi_real d, z, rho2, rho, rc, a, rho_hi, iu, it, fu, ft, f;
@@ -378,7 +392,7 @@ int oi__atm_fraction(const oi_real sun_km[3], const oi_real point_km[3], const o
     d = sun_unit(sun_km, s_hat);
     z = -oi__dot(point_km, s_hat);
     if (!(z > (oi_real)0 && d > (oi_real)0)) return OI_OK;
-    rc = m->earth_radius_km * ((oi_real)1 + z / d);
+    rc = earth_radius_km * ((oi_real)1 + z / d);
     a = z * m->sun_radius_km / d;
     rho_hi = rc + a + t->top_km;
     oi__cross(point_km, s_hat, cr);

@@ -18,7 +18,7 @@
 /* clear-sky V-band optical depth of the line of sight whose tangent height
  * is h = 0, 1, ..., 99 km (bake/atmosphere/moonlight.py; 0 at the 100 km top) */
 #define ML_N 100
-#define ML_TOP_KM OI_R(100.0)
+#define ML_TOP_KM OI_MOON_AIR_TOP_KM
 #define ML_CLOUD_TOP_KM OI_R(10.0)
 #define ML_CLOUD_PASS OI_R(0.32) /* 1 - the cloud fraction 0.68 */
 static const oi_real ml_tau[ML_N] = {

@@ -6,69 +6,18 @@
  * call uses, so its outputs are the single call's bits; the savings are the
  * model's validation per row and, in oi_sun_fraction_batch and
  * oi_illuminate_batch_outputs (src/illuminate_outputs.c), what the outputs
- * mask leaves out.
+ * mask leaves out. oi_sun_fraction_batch also runs the rows certainly in the
+ * sphere's penumbra through the crescent kernel the single call uses for
+ * them (src/sun_crescent.h), eight rows at a time in a vectorised loop.
  */
 #include "oi_internal.h"
-
-/* Alignment of a type in C99 (no _Alignof): the offset of a member after a
- * char. */
-#define ALIGN_OF(type) offsetof(struct { char c; type t; }, t)
-
-/* A caller's array: its address range, for the alignment and overlap checks. */
-typedef struct {
-    uintptr_t lo, hi; /* [lo, hi); lo == hi: absent (NULL, optional) */
-} span;
-
-/* The span of n elements of size bytes at p; 0 when p is not aligned to
- * align or the size overflows the address space. */
-static int span_of(const void *p, long n, size_t size, size_t align, span *s)
-{
-    const uintptr_t a = (uintptr_t)p;
-    s->lo = s->hi = a;
-    if (p == NULL) return 1;
-    if (a % align != 0) return 0;
-    if ((uintptr_t)n > (UINTPTR_MAX - a) / size) return 0;
-    s->hi = a + (uintptr_t)n * size;
-    return 1;
-}
-
-static int spans_overlap(const span *a, const span *b)
-{
-    return a->lo < a->hi && b->lo < b->hi && a->lo < b->hi && b->lo < a->hi;
-}
-
-/* OI_OK when no output span overlaps an input span or another output span;
- * else OI_ERR_INPUT. */
-static int check_overlap(const span *in, int n_in, const span *out, int n_out)
-{
-    int i, j;
-    for (i = 0; i < n_out; i++) {
-        for (j = 0; j < n_in; j++)
-            if (spans_overlap(&out[i], &in[j])) return OI_ERR_INPUT;
-        for (j = i + 1; j < n_out; j++)
-            if (spans_overlap(&out[i], &out[j])) return OI_ERR_INPUT;
-    }
-    return OI_OK;
-}
+#include "sun_crescent.h"
 
 /* The checks common to every batch: n, the required pointers. */
 static int check_n(long n)
 {
     if (n < 0 || n > OI_BATCH_MAX) return OI_ERR_INPUT;
     return OI_OK;
-}
-
-/* A batch error: every status set to it, every output row zeroed (when the
- * arrays could be used: not NULL, aligned; not on overlap, where zeroing
- * would write into the inputs). */
-static int batch_fail(int st, long n, int *status, void *out, size_t size, int zero_out)
-{
-    long i;
-    span s;
-    if (status != NULL && span_of(status, n, sizeof *status, ALIGN_OF(int), &s))
-        for (i = 0; i < n; i++) status[i] = st;
-    if (zero_out && out != NULL) memset(out, 0, (size_t)n * size);
-    return st;
 }
 
 /* ---------------------------------------------------------------- Sun */
@@ -89,6 +38,9 @@ static int batch_fail(int st, long n, int *status, void *out, size_t size, int z
 #define ROW_UNSURE OI__ROW_UNSURE
 #define ROW_LIT OI__ROW_LIT
 #define ROW_UMBRA OI__ROW_UMBRA
+/* certainly in the sphere's penumbra (classify_block only): the crescent
+ * kernel's row (src/sun_crescent.h) */
+#define ROW_PENUMBRA (OI__ROW_UMBRA + 1)
 
 /*
  * ROW_LIT or ROW_UMBRA when the row certainly is in that region, decided
@@ -157,33 +109,31 @@ int oi__sun_certain_region(const oi_real sun[3], const oi_real p[3], const oi_mo
 /* Rows classified at once by classify_block. */
 #define CLASSIFY_ROWS 32
 
-/* GCC if-converts the loop's comparisons (and so vectorises it) only when
- * they may not trap: the attribute says so for this one function, whose
- * results do not depend on it (no floating-point exception is read). */
-#if defined(__GNUC__) && !defined(__clang__)
-#define VECTORISE_COMPARES __attribute__((optimize("no-trapping-math")))
-#else
-#define VECTORISE_COMPARES
-#endif
 
 /*
  * oi__sun_certain_region over CLASSIFY_ROWS rows at once, written so that
  * the compiler vectorises the loop (a fixed count, no call, every value and
  * condition an oi_real, the divisors replaced where a row is not decided;
  * gcc -fopt-info-vec, docs/performance.md). The same tests with the same
- * margins, and stricter checks of the positions: every component within
- * OI_POSITION_MAX_KM (so the plain norms neither overflow nor underflow to a
- * wrong decision: |point| > 1.001 R), |sun| > 1.001 (R_sun + R), |sun -
- * point| > 1.001 R_sun; the plain norms differ from the full call's scaled
- * ones by a few ulp, far inside those margins and COS_MARGIN. code[i]:
- * ROW_* as oi_real.
+ * margins, and stricter checks of the positions: both plain norms within
+ * OI_POSITION_MAX_KM (so every component, and the norms neither overflow
+ * nor underflow to a wrong decision: |point| > 1.001 R), |sun| > 1.001
+ * (R_sun + R), |sun - point| > 1.001 R_sun; the plain norms differ from the full call's scaled
+ * ones by a few ulp, far inside those margins and COS_MARGIN. With
+ * penumbra_too (the sphere, the uniform disc's fraction alone asked) also
+ * ROW_PENUMBRA: the single call's region is then PENUMBRA too. LIT is
+ * tested against lit_radius, the Earth's radius enlarged by GRAZING_TOP_KM
+ * as in oi__sun_certain_region, or (the sphere, the atmosphere not asked: the
+ * fractions then the discs' alone) the sphere's own radius, as the umbra's
+ * test is. code[i]: ROW_* as oi_real.
  */
-static VECTORISE_COMPARES void classify_block(const oi_real *restrict sun,
-                                              const oi_real *restrict p, const oi_model *m,
-                                              oi_real umbra_too, oi_real *restrict code)
+static OI_VECTORISE_COMPARES OI_AVX2_CLONES void
+classify_block(const oi_real *restrict sun, const oi_real *restrict p, const oi_model *m,
+               oi_real lit_radius, oi_real umbra_too, oi_real penumbra_too,
+               oi_real *restrict code)
 {
     const oi_real re = m->earth_radius_km, rs = m->sun_radius_km, r_umbra = umbra_radius(m);
-    const oi_real re_top = re + GRAZING_TOP_KM, far = (oi_real)OI_POSITION_MAX_KM;
+    const oi_real far = (oi_real)OI_POSITION_MAX_KM;
     const oi_real one = (oi_real)1, zero = (oi_real)0;
     int i;
     for (i = 0; i < CLASSIFY_ROWS; i++) {
@@ -194,11 +144,12 @@ static VECTORISE_COMPARES void classify_block(const oi_real *restrict sun,
         const oi_real dp0 = OI_SQRT(px * px + py * py + pz * pz);
         const oi_real dsp0 = OI_SQRT(rx * rx + ry * ry + rz * rz);
         oi_real ok, dp, dsp, sin_s, cos_s2, cos_s, sin_e, cos_e2, cos_e, sin_r, cos_r2, cos_r;
-        oi_real cos_sep, sin_sep2, sin_sep, lit, umb;
-        /* every component bounded (NaN fails every comparison) */
+        oi_real cos_sep, sin_sep2, sin_sep, lit, umb, pen;
+        /* both norms bounded, so every component (squares to 3e24 do not
+         * overflow; a NaN, an infinity or an overflowed square fails every
+         * comparison) */
         /* (three short conditions each: a longer chain is not if-converted) */
-        ok = OI_FABS(sx) <= far && OI_FABS(sy) <= far && OI_FABS(sz) <= far ? one : zero;
-        ok *= OI_FABS(px) <= far && OI_FABS(py) <= far && OI_FABS(pz) <= far ? one : zero;
+        ok = ds <= far && dp0 <= far ? one : zero;
         ok *= dp0 > OI_R(1.001) * re && ds > OI_R(1.001) * (rs + re) &&
                       dsp0 > OI_R(1.001) * rs
                   ? one
@@ -210,7 +161,7 @@ static VECTORISE_COMPARES void classify_block(const oi_real *restrict sun,
         cos_s2 = (one - sin_s) * (one + sin_s);
         cos_s = OI_SQRT(cos_s2 > zero ? cos_s2 : zero);
         cos_sep = -(rx * px + ry * py + rz * pz) / dsp / dp;
-        sin_e = re_top / dp;
+        sin_e = lit_radius / dp;
         cos_e2 = (one - sin_e) * (one + sin_e);
         cos_e = OI_SQRT(cos_e2 > zero ? cos_e2 : zero);
         lit = sin_e < one && cos_sep < cos_e * cos_s - sin_e * sin_s - COS_MARGIN ? ok : zero;
@@ -223,22 +174,130 @@ static VECTORISE_COMPARES void classify_block(const oi_real *restrict sun,
         umb = cos_sep > zero && cos_sep * cos_s - sin_sep * sin_s > cos_r + COS_MARGIN
                   ? ok * umbra_too
                   : zero;
-        /* exclusive regions (lit: apart, umbra: inside) */
-        code[i] = lit * (oi_real)ROW_LIT + (umb - umb * lit) * (oi_real)ROW_UMBRA;
+        /* the penumbra (the sphere's): r_e - r_s < sep < r_e + r_s, cosines
+         * of both sides apart by the margin */
+        pen = cos_sep < cos_r * cos_s + sin_r * sin_s - COS_MARGIN &&
+                      cos_sep > cos_r * cos_s - sin_r * sin_s + COS_MARGIN
+                  ? ok * penumbra_too
+                  : zero;
+        /* exclusive regions (lit: apart, umbra: inside, penumbra: between) */
+        umb -= umb * lit;
+        pen *= (one - lit) * (one - umb);
+        code[i] = lit * (oi_real)ROW_LIT + umb * (oi_real)ROW_UMBRA + pen * (oi_real)ROW_PENUMBRA;
     }
 }
 
-/* A row classify_block decided: the full call's fractions (1 or 0) and
- * region, the fields the mask leaves out 0. */
-static void decided_row(int region, unsigned outputs, oi_shadow *out)
+#ifdef OI_CRESCENT_KERNEL
+/* Rows of the penumbra computed at once by crescent_block. */
+#define CRESCENT_ROWS 8
+
+/* oi__crescent_row over the CRESCENT_ROWS rows row[] of sun and p (3 per
+ * row), read where they are (no copy), in a loop of fixed count that the
+ * compiler vectorises (gcc -fopt-info-vec, docs/performance.md); of the
+ * first n rows, the fraction written into out[row[i]].fraction where it is
+ * the kernel's (in its domain). Returns the others, bit i for row[i]. */
+static OI_VECTORISE_COMPARES OI_AVX2_CLONES unsigned
+crescent_block(const oi_real *restrict sun, const oi_real *restrict p,
+               const long *restrict row, int n, oi_real re_km, oi_real rs_km,
+               oi_shadow *restrict out)
 {
-    const oi_real f = region == ROW_LIT ? (oi_real)1 : (oi_real)0;
-    memset(out, 0, sizeof *out);
-    out->fraction = f;
-    if (outputs & OI_BATCH_FRACTION_LD) out->fraction_ld = f;
-    if (outputs & OI_BATCH_ATMOSPHERE) out->fraction_atm = f;
-    out->region = region == ROW_LIT ? OI_SHADOW_LIT : OI_SHADOW_UMBRA;
+    oi_real frac[CRESCENT_ROWS], dom[CRESCENT_ROWS];
+    unsigned outside = 0u;
+    int i;
+    for (i = 0; i < CRESCENT_ROWS; i++) {
+        const long r = 3 * row[i];
+        frac[i] = oi__crescent_row(sun[r], sun[r + 1], sun[r + 2], p[r], p[r + 1], p[r + 2],
+                                   re_km, rs_km, &dom[i]);
+    }
+    for (i = 0; i < n; i++) {
+        if (dom[i] != (oi_real)0)
+            out[row[i]].fraction = frac[i];
+        else
+            outside |= 1u << i;
+    }
+    return outside;
 }
+
+/* The rows classify_block found in the penumbra, gathered for crescent_block. */
+typedef struct {
+    long row[CRESCENT_ROWS];
+    int n;
+} crescent_rows;
+#endif
+
+/* The outputs of the rows classify_block decides, by ROW_*: the full call's
+ * fractions (1 or 0) and region, the fields the mask leaves out 0 (padding
+ * too, set once here: each decided row is one copy of its template). */
+typedef struct {
+    oi_shadow row[ROW_PENUMBRA + 1];
+} decided_rows;
+
+static void decided_templates(unsigned outputs, decided_rows *d)
+{
+    int r;
+    memset(d, 0, sizeof *d);
+    for (r = ROW_LIT; r <= ROW_UMBRA; r++) {
+        const oi_real f = r == ROW_LIT ? (oi_real)1 : (oi_real)0;
+        d->row[r].fraction = f;
+        if (outputs & OI_BATCH_FRACTION_LD) d->row[r].fraction_ld = f;
+        if (outputs & OI_BATCH_ATMOSPHERE) d->row[r].fraction_atm = f;
+        d->row[r].region = r == ROW_LIT ? OI_SHADOW_LIT : OI_SHADOW_UMBRA;
+    }
+    /* the crescent's rows: their fraction written over it */
+    d->row[ROW_PENUMBRA].region = OI_SHADOW_PENUMBRA;
+}
+
+/* What is left of a row after decided_block: nothing, the crescent's
+ * fraction (crescent_flush), the full call (sun_row). */
+#define TODO_NONE 0
+#define TODO_CRESCENT 1
+#define TODO_FULL 2
+
+/*
+ * A classified block's outputs: every row's template by its code, status
+ * OI_OK (the rows decided complete; ROW_PENUMBRA's template, its fraction to
+ * be written; ROW_UNSURE's, all 0, written over by the full call), and
+ * todo[i], what the caller has left to do for the row (TODO_*).
+ * One pass of copies of whole records in place of a branch, a memset and
+ * stores a row.
+ */
+static OI_AVX2_CLONES void decided_block(const oi_real *restrict code,
+                                        const decided_rows *restrict d,
+                                        oi_shadow *restrict out, int *restrict status,
+                                        unsigned char *restrict todo)
+{
+    static const unsigned char todo_of[ROW_PENUMBRA + 1] = {
+        [ROW_UNSURE] = TODO_FULL, [ROW_LIT] = TODO_NONE, [ROW_UMBRA] = TODO_NONE,
+        [ROW_PENUMBRA] = TODO_CRESCENT};
+    int i;
+    for (i = 0; i < CLASSIFY_ROWS; i++) status[i] = OI_OK;
+    /* two rows a step: half the loop's own instructions */
+    for (i = 0; i < CLASSIFY_ROWS; i += 2) {
+        const int r0 = (int)code[i], r1 = (int)code[i + 1];
+        memcpy(&out[i], &d->row[r0], sizeof out[i]);
+        memcpy(&out[i + 1], &d->row[r1], sizeof out[i + 1]);
+        todo[i] = todo_of[r0];
+        todo[i + 1] = todo_of[r1];
+    }
+}
+
+/* No row of todo[0..7] left to the caller (one 8-byte load, not eight). */
+static int no_todo8(const unsigned char *todo)
+{
+    static const unsigned char none[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+    return memcmp(todo, none, sizeof none) == 0;
+}
+
+#ifdef OI_CRESCENT_KERNEL
+/* Every row of todo[0..7] a penumbra row for the crescent. */
+static int crescent_todo8(const unsigned char *todo)
+{
+    static const unsigned char all[8] = {TODO_CRESCENT, TODO_CRESCENT, TODO_CRESCENT,
+                                         TODO_CRESCENT, TODO_CRESCENT, TODO_CRESCENT,
+                                         TODO_CRESCENT, TODO_CRESCENT};
+    return memcmp(todo, all, sizeof all) == 0;
+}
+#endif
 
 /* A row classify_block left undecided: the full call's steps under the
  * mask. */
@@ -258,54 +317,138 @@ static int sun_row(const oi_real sun[3], const oi_real p[3], const oi_model *m,
     return st;
 }
 
+#ifdef OI_CRESCENT_KERNEL
+/* The gathered penumbra rows through crescent_block (the unused rows the
+ * first again), their outputs written: the crescent's fraction where it
+ * holds (into the penumbra's template decided_block wrote, status OI_OK),
+ * the full call elsewhere. Returns the rows with an error. */
+static long crescent_flush(crescent_rows *c, const oi_real *sun_km, const oi_real *point_km,
+                           const oi_model *m, unsigned outputs, oi_shadow *out, int *status)
+{
+    unsigned outside;
+    long bad = 0;
+    int j;
+    for (j = c->n; j < CRESCENT_ROWS; j++) c->row[j] = c->row[0];
+    outside = crescent_block(sun_km, point_km, c->row, c->n, m->earth_radius_km,
+                             m->sun_radius_km, out);
+    if (outside != 0u) {
+        for (j = 0; j < c->n; j++) {
+            const long i = c->row[j];
+            if (!(outside & (1u << j))) continue;
+            status[i] = sun_row(sun_km + 3 * i, point_km + 3 * i, m, outputs, &out[i]);
+            bad += status[i] < 0;
+        }
+    }
+    c->n = 0;
+    return bad;
+}
+
+/* Row i appended to the gathered penumbra rows, which go through
+ * crescent_flush when there are CRESCENT_ROWS. Returns the rows with an
+ * error. */
+static long crescent_push(crescent_rows *c, long i, const oi_real *sun_km,
+                          const oi_real *point_km, const oi_model *m, unsigned outputs,
+                          oi_shadow *out, int *status)
+{
+    c->row[c->n++] = i;
+    return c->n == CRESCENT_ROWS ? crescent_flush(c, sun_km, point_km, m, outputs, out, status)
+                                 : 0;
+}
+#endif
+
 int oi_sun_fraction_batch(long n, const oi_real *sun_km, const oi_real *point_km,
                           const oi_model *model, unsigned outputs, oi_shadow *out,
                           int *status)
 {
     oi_model m;
-    span in[2], o[2];
-    unsigned char region[CLASSIFY_ROWS];
+    oi__span in[2], o[2];
+    decided_rows decided;
+    unsigned char todo[CLASSIFY_ROWS];
     oi_real code[CLASSIFY_ROWS];
     long b, bad = 0;
     int st, atm_on = 0;
+    oi_real pen_on = (oi_real)0, lit_radius;
+#ifdef OI_CRESCENT_KERNEL
+    crescent_rows pending;
+    pending.n = 0;
+#endif
     if (n == 0) return 0;
     if (check_n(n) != OI_OK) return OI_ERR_INPUT; /* nothing written: n is not the arrays' */
     if (sun_km == NULL || point_km == NULL || out == NULL || status == NULL)
-        return batch_fail(OI_ERR_NULL, n, status, NULL, 0, 0);
-    if (!span_of(sun_km, n, 3 * sizeof *sun_km, ALIGN_OF(oi_real), &in[0]) ||
-        !span_of(point_km, n, 3 * sizeof *point_km, ALIGN_OF(oi_real), &in[1]) ||
-        !span_of(out, n, sizeof *out, ALIGN_OF(oi_shadow), &o[0]) ||
-        !span_of(status, n, sizeof *status, ALIGN_OF(int), &o[1]) ||
-        check_overlap(in, 2, o, 2) != OI_OK)
-        return batch_fail(OI_ERR_INPUT, n, status, NULL, 0, 0);
+        return oi__batch_fail(OI_ERR_NULL, n, status, NULL, 0, 0);
+    if (!oi__span_of(sun_km, n, 3 * sizeof *sun_km, OI_ALIGN_OF(oi_real), &in[0]) ||
+        !oi__span_of(point_km, n, 3 * sizeof *point_km, OI_ALIGN_OF(oi_real), &in[1]) ||
+        !oi__span_of(out, n, sizeof *out, OI_ALIGN_OF(oi_shadow), &o[0]) ||
+        !oi__span_of(status, n, sizeof *status, OI_ALIGN_OF(int), &o[1]) ||
+        oi__check_overlap(in, 2, o, 2) != OI_OK)
+        return oi__batch_fail(OI_ERR_INPUT, n, status, NULL, 0, 0);
     st = (outputs & ~(unsigned)OI_BATCH_ALL) != 0u ? OI_ERR_FLAGS : oi__model_resolve(model, &m);
-    if (st < 0) return batch_fail(st, n, status, out, sizeof *out, 1);
+    if (st < 0) return oi__batch_fail(st, n, status, out, sizeof *out, 1);
 #ifndef OI_NO_ATMOSPHERE
     atm_on = (outputs & OI_BATCH_ATMOSPHERE) && !m.no_atmosphere;
 #endif
-    memset(region, ROW_UNSURE, sizeof region);
+#ifdef OI_CRESCENT_KERNEL
+    /* the penumbra's rows through the crescent kernel: the uniform disc's
+     * fraction alone asked, behind the sphere (src/sun_crescent.h) */
+    if ((outputs & OI_BATCH_ALL) == 0u && m.earth_shape == OI_EARTH_SPHERE) pen_on = (oi_real)1;
+#endif
+    /* the rays grazing the atmosphere's window are lit by the discs alone
+     * where the atmosphere is not asked (the sphere: the ellipsoid's exact
+     * silhouette keeps the window) */
+    lit_radius = m.earth_radius_km;
+    if (atm_on || m.earth_shape != OI_EARTH_SPHERE) lit_radius += GRAZING_TOP_KM;
+    decided_templates(outputs, &decided);
+    /* written by classify_block and decided_block (through the clones'
+     * resolver, which a static analyser cannot follow: set once here) */
+    memset(code, 0, sizeof code);
+    memset(todo, 0, sizeof todo);
     for (b = 0; b < n; b += CLASSIFY_ROWS) {
         const int k = n - b < CLASSIFY_ROWS ? (int)(n - b) : CLASSIFY_ROWS;
         int j;
         /* without the geometry asked, the rows certainly lit (or in the
-         * umbra) first, from cosines; the others in full */
-        if (!(outputs & OI_BATCH_GEOMETRY)) {
-            if (k == CLASSIFY_ROWS) {
-                classify_block(sun_km + 3 * b, point_km + 3 * b, &m,
-                               atm_on ? (oi_real)0 : (oi_real)1, code);
-                for (j = 0; j < k; j++) region[j] = (unsigned char)code[j];
-            } else {
-                /* the last rows: one by one (the block's loop has a fixed count,
-                 * which lets -O2 vectorise it) */
-                for (j = 0; j < k; j++)
-                    region[j] = (unsigned char)oi__sun_certain_region(
-                        sun_km + 3 * (b + j), point_km + 3 * (b + j), &m, !atm_on);
+         * umbra, or in the penumbra) first, from cosines; the others in full */
+        if (!(outputs & OI_BATCH_GEOMETRY) && k == CLASSIFY_ROWS) {
+            classify_block(sun_km + 3 * b, point_km + 3 * b, &m, lit_radius,
+                           atm_on ? (oi_real)0 : (oi_real)1, pen_on, code);
+            decided_block(code, &decided, out + b, status + b, todo);
+            /* eight rows at a time: all decided, all the crescent's, or one by one */
+            for (j = 0; j < k; j += 8) {
+                int t;
+                if (no_todo8(&todo[j])) continue;
+#ifdef OI_CRESCENT_KERNEL
+                if (crescent_todo8(&todo[j])) {
+                    for (t = 0; t < 8; t++)
+                        bad += crescent_push(&pending, b + j + t, sun_km, point_km, &m,
+                                             outputs, out, status);
+                    continue;
+                }
+#endif
+                for (t = 0; t < 8; t++) {
+                    const long i = b + j + t;
+#ifdef OI_CRESCENT_KERNEL
+                    if (todo[j + t] == TODO_CRESCENT) {
+                        bad += crescent_push(&pending, i, sun_km, point_km, &m, outputs, out,
+                                             status);
+                        continue;
+                    }
+#endif
+                    if (todo[j + t] == TODO_NONE) continue;
+                    status[i] = sun_row(sun_km + 3 * i, point_km + 3 * i, &m, outputs, &out[i]);
+                    bad += status[i] < 0;
+                }
             }
+            continue;
         }
+        /* the geometry asked, or the last rows: one by one (the block's loop
+         * has a fixed count, which lets -O2 vectorise it) */
         for (j = 0; j < k; j++) {
             const long i = b + j;
-            if (region[j] != ROW_UNSURE) {
-                decided_row(region[j], outputs, &out[i]);
+            const int r = outputs & OI_BATCH_GEOMETRY
+                              ? ROW_UNSURE
+                              : oi__sun_certain_region(sun_km + 3 * i, point_km + 3 * i, &m,
+                                                       !atm_on);
+            if (r != ROW_UNSURE) {
+                memcpy(&out[i], &decided.row[r], sizeof out[i]);
                 status[i] = OI_OK;
             } else {
                 status[i] = sun_row(sun_km + 3 * i, point_km + 3 * i, &m, outputs, &out[i]);
@@ -313,34 +456,47 @@ int oi_sun_fraction_batch(long n, const oi_real *sun_km, const oi_real *point_km
             }
         }
     }
+#ifdef OI_CRESCENT_KERNEL
+    if (pending.n > 0) bad += crescent_flush(&pending, sun_km, point_km, &m, outputs, out, status);
+#endif
     return (int)bad;
 }
 
 /* ---------------------------------------------------------------- earthshine */
 
+/* oi_earthshine_batch's arrays' alignment and overlap (the spans in this
+ * frame only, not under the rows' calls): OI_OK or OI_ERR_INPUT. */
+static OI_NOINLINE int earthshine_arrays(long n, const oi_real *theta, const oi_real *h_km,
+                                         const oi_real *phi, const oi_real *psi,
+                                         const int *status)
+{
+    oi__span in[2], o[3];
+    if (!oi__span_of(theta, n, sizeof *theta, OI_ALIGN_OF(oi_real), &in[0]) ||
+        !oi__span_of(h_km, n, sizeof *h_km, OI_ALIGN_OF(oi_real), &in[1]) ||
+        !oi__span_of(phi, n, sizeof *phi, OI_ALIGN_OF(oi_real), &o[0]) ||
+        !oi__span_of(psi, n, sizeof *psi, OI_ALIGN_OF(oi_real), &o[1]) ||
+        !oi__span_of(status, n, sizeof *status, OI_ALIGN_OF(int), &o[2]))
+        return OI_ERR_INPUT;
+    return oi__check_overlap(in, 2, o, 3);
+}
+
 int oi_earthshine_batch(long n, const oi_real *theta, const oi_real *h_km,
                         const oi_model *model, oi_real *phi, oi_real *psi, int *status)
 {
     oi_model m;
-    span in[2], o[3];
     oi_real psi_row;
     long i, bad = 0;
     int st;
     if (n == 0) return 0;
     if (check_n(n) != OI_OK) return OI_ERR_INPUT; /* nothing written: n is not the arrays' */
     if (theta == NULL || h_km == NULL || phi == NULL || status == NULL)
-        return batch_fail(OI_ERR_NULL, n, status, NULL, 0, 0);
-    if (!span_of(theta, n, sizeof *theta, ALIGN_OF(oi_real), &in[0]) ||
-        !span_of(h_km, n, sizeof *h_km, ALIGN_OF(oi_real), &in[1]) ||
-        !span_of(phi, n, sizeof *phi, ALIGN_OF(oi_real), &o[0]) ||
-        !span_of(psi, n, sizeof *psi, ALIGN_OF(oi_real), &o[1]) ||
-        !span_of(status, n, sizeof *status, ALIGN_OF(int), &o[2]) ||
-        check_overlap(in, 2, o, 3) != OI_OK)
-        return batch_fail(OI_ERR_INPUT, n, status, NULL, 0, 0);
+        return oi__batch_fail(OI_ERR_NULL, n, status, NULL, 0, 0);
+    if (earthshine_arrays(n, theta, h_km, phi, psi, status) != OI_OK)
+        return oi__batch_fail(OI_ERR_INPUT, n, status, NULL, 0, 0);
     st = oi__model_resolve(model, &m);
     if (st < 0) {
         if (psi != NULL) memset(psi, 0, (size_t)n * sizeof *psi);
-        return batch_fail(st, n, status, phi, sizeof *phi, 1);
+        return oi__batch_fail(st, n, status, phi, sizeof *phi, 1);
     }
     for (i = 0; i < n; i++) {
         /* oi_earthshine's own checks: NULL outputs are excluded above */
@@ -358,15 +514,15 @@ int oi_earthshine_batch(long n, const oi_real *theta, const oi_real *h_km,
  * batch's error with the statuses set (nothing else written). */
 static int illuminate_arrays(long n, const oi_scene *scenes, const oi_illum *out, int *status)
 {
-    span in[1], o[2];
+    oi__span in[1], o[2];
     if (check_n(n) != OI_OK) return OI_ERR_INPUT; /* nothing written: n is not the arrays' */
     if (scenes == NULL || out == NULL || status == NULL)
-        return batch_fail(OI_ERR_NULL, n, status, NULL, 0, 0);
-    if (!span_of(scenes, n, sizeof *scenes, ALIGN_OF(oi_scene), &in[0]) ||
-        !span_of(out, n, sizeof *out, ALIGN_OF(oi_illum), &o[0]) ||
-        !span_of(status, n, sizeof *status, ALIGN_OF(int), &o[1]) ||
-        check_overlap(in, 1, o, 2) != OI_OK)
-        return batch_fail(OI_ERR_INPUT, n, status, NULL, 0, 0);
+        return oi__batch_fail(OI_ERR_NULL, n, status, NULL, 0, 0);
+    if (!oi__span_of(scenes, n, sizeof *scenes, OI_ALIGN_OF(oi_scene), &in[0]) ||
+        !oi__span_of(out, n, sizeof *out, OI_ALIGN_OF(oi_illum), &o[0]) ||
+        !oi__span_of(status, n, sizeof *status, OI_ALIGN_OF(int), &o[1]) ||
+        oi__check_overlap(in, 1, o, 2) != OI_OK)
+        return oi__batch_fail(OI_ERR_INPUT, n, status, NULL, 0, 0);
     return OI_OK;
 }
 
@@ -381,7 +537,7 @@ static int illuminate_setup(long n, const oi_scene *scenes, const oi_model *mode
     st = (outputs & ~(unsigned)OI_BATCH_SCENE_ALL) != 0u ? OI_ERR_FLAGS
                                                         : oi__model_resolve(model, m);
     if (st == OI_OK) st = oi__albedo_resolve(model, m);
-    if (st < 0) return batch_fail(st, n, status, out, sizeof *out, 1);
+    if (st < 0) return oi__batch_fail(st, n, status, out, sizeof *out, 1);
     return OI_OK;
 }
 
@@ -420,59 +576,19 @@ int oi_illuminate_batch_outputs(long n, const oi_scene *scenes, const oi_model *
 /* ---------------------------------------------------------------- exposure */
 #ifndef OI_NO_EXPOSURE
 
+/* The exposure batches without a mask: every output (src/expose_batch.c). */
 int oi_expose_batch(long n, const oi_camera *camera, const oi_expose_in *in,
                     const oi_expose_goal *goal, oi_exposure *out, int *status)
 {
-    span si[1], o[2];
-    long i, bad = 0;
-    if (n == 0) return 0;
-    if (check_n(n) != OI_OK) return OI_ERR_INPUT; /* nothing written: n is not the arrays' */
-    if (camera == NULL || in == NULL || out == NULL || status == NULL)
-        return batch_fail(OI_ERR_NULL, n, status, NULL, 0, 0);
-    if (!span_of(in, n, sizeof *in, ALIGN_OF(oi_expose_in), &si[0]) ||
-        !span_of(out, n, sizeof *out, ALIGN_OF(oi_exposure), &o[0]) ||
-        !span_of(status, n, sizeof *status, ALIGN_OF(int), &o[1]) ||
-        check_overlap(si, 1, o, 2) != OI_OK)
-        return batch_fail(OI_ERR_INPUT, n, status, NULL, 0, 0);
-    if (!oi__camera_valid(camera)) return batch_fail(OI_ERR_CAMERA, n, status, out, sizeof *out, 1);
-    for (i = 0; i < n; i++) {
-        memset(&out[i], 0, sizeof out[i]);
-        status[i] = oi__expose_valid(camera, &in[i], goal, &out[i]);
-        if (status[i] < 0) memset(&out[i], 0, sizeof out[i]);
-        bad += status[i] < 0;
-    }
-    return (int)bad;
+    return oi_expose_batch_outputs(n, camera, in, goal, OI_EXPOSE_ALL, out, status);
 }
 
 int oi_expose_scene_batch(long n, const oi_camera *camera, const oi_scene *scenes,
                           const oi_illum *illum, const oi_model *model,
                           const oi_expose_goal *goal, oi_exposure *out, int *status)
 {
-    span in[2], o[2];
-    oi_model m;
-    long i, bad = 0;
-    int st;
-    if (n == 0) return 0;
-    if (check_n(n) != OI_OK) return OI_ERR_INPUT; /* nothing written: n is not the arrays' */
-    if (camera == NULL || scenes == NULL || illum == NULL || out == NULL || status == NULL)
-        return batch_fail(OI_ERR_NULL, n, status, NULL, 0, 0);
-    if (!span_of(scenes, n, sizeof *scenes, ALIGN_OF(oi_scene), &in[0]) ||
-        !span_of(illum, n, sizeof *illum, ALIGN_OF(oi_illum), &in[1]) ||
-        !span_of(out, n, sizeof *out, ALIGN_OF(oi_exposure), &o[0]) ||
-        !span_of(status, n, sizeof *status, ALIGN_OF(int), &o[1]) ||
-        check_overlap(in, 2, o, 2) != OI_OK)
-        return batch_fail(OI_ERR_INPUT, n, status, NULL, 0, 0);
-    /* the batch's errors: the model, then the camera (a row's own checks
-     * come before the camera's in the single call, so a valid model and
-     * camera are the batch's condition, the rows' statuses the single call's) */
-    st = oi__model_resolve(model, &m);
-    if (st == OI_OK && !oi__camera_valid(camera)) st = OI_ERR_CAMERA;
-    if (st < 0) return batch_fail(st, n, status, out, sizeof *out, 1);
-    for (i = 0; i < n; i++) {
-        status[i] = oi_expose_scene(camera, &scenes[i], &illum[i], model, goal, &out[i]);
-        bad += status[i] < 0;
-    }
-    return (int)bad;
+    return oi_expose_scene_batch_outputs(n, camera, scenes, illum, model, goal, OI_EXPOSE_ALL, out,
+                                         status);
 }
 
 #endif /* OI_NO_EXPOSURE */

@@ -15,14 +15,19 @@ int oi__cap_break_add(oi_real *bp, int cap, int n, oi_real x, oi_real a_max)
     return n + 1;
 }
 
-int oi__cap_breaks_start(oi_real *bp, int cap, oi_real hp, oi_real rp, oi_real cos_theta,
-                         oi_real sin_theta, oi_real *a_max)
+int oi__cap_breaks_at(oi_real *bp, int cap, oi_real hp, oi_real rp, oi_real theta,
+                      oi_real *a_max)
 {
     *a_max = OI_ATAN2(OI_SQRT(hp * ((oi_real)1 + rp)), rp);
     bp[0] = (oi_real)0;
     bp[1] = *a_max;
-    return oi__cap_break_add(bp, cap, 2, OI_FABS(OI_HALF_PI_R - OI_ATAN2(sin_theta, cos_theta)),
-                             *a_max);
+    return oi__cap_break_add(bp, cap, 2, OI_FABS(OI_HALF_PI_R - theta), *a_max);
+}
+
+int oi__cap_breaks_start(oi_real *bp, int cap, oi_real hp, oi_real rp, oi_real cos_theta,
+                         oi_real sin_theta, oi_real *a_max)
+{
+    return oi__cap_breaks_at(bp, cap, hp, rp, OI_ATAN2(sin_theta, cos_theta), a_max);
 }
 
 int oi__cap_breaks_altitude(oi_real *bp, int cap, int n, int n_geo, oi_real hp, oi_real rp,

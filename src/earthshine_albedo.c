@@ -192,22 +192,23 @@ static void local_frame(const oi_real r_hat[3], const oi_real s_hat[3], frame *g
     if (g->sin_t < (oi_real)0) g->sin_t = (oi_real)0;
 }
 
-/* The zonal field's sums by the cubature, added to *acc; a frame of its
+/* The zonal field's sums by the cubature, added to job->acc; a frame of its
  * own, so that a map's deeper chain does not carry it (make stack). */
-static OI_NOINLINE int cubature(const oi__albedo_field *f, const oi_real r_hat[3],
-                                const oi_real s_hat[3], oi_real x, const oi_real *obs_hat,
-                                oi_real a_ref, sums *acc)
+static OI_NOINLINE int cubature(oi__albedo_job *job)
 {
+    const oi__albedo_field *f = &job->f;
+    const oi_real x = job->x;
+    sums *acc = &job->acc;
     frame g;
     oi_real sin_w;
     int st = OI_OK;
-    local_frame(r_hat, s_hat, &g);
+    local_frame(job->r_hat, job->s_hat, &g);
     g.x = x;
     sin_w = OI_SQRT(((oi_real)1 - x) * ((oi_real)1 + x));
     g.w = OI_ATAN2(sin_w, x);
-    g.obs = obs_hat;
+    g.obs = job->has_obs ? job->obs_hat : NULL;
     g.q = &rule_smooth;
-    g.a_ref = a_ref;
+    g.a_ref = job->a_ref;
     if (g.cos_t >= sin_w) {
         /* the whole cap is lit: a smooth periodic integrand in beta */
         const oi_real step = OI_R(2.0) * OI_PI_R / (oi_real)g.q->ring;
@@ -234,51 +235,59 @@ static OI_NOINLINE int cubature(const oi__albedo_field *f, const oi_real r_hat[3
     return st;
 }
 
-int oi__earthshine_albedo(const oi__albedo_field *f, const oi_real r_hat[3],
-                          const oi_real s_hat[3], oi_real x, const oi_real *obs_hat,
-                          oi_real *albedo, oi_real dir[3], oi_real *shape_add)
+/* The field's change of the mean direction and of the sphere's shape from
+ * the sums (d the mean albedo less the reference, den the mean albedo times
+ * the sum of weights). */
+static OI_NOINLINE void moments(const oi__albedo_job *job, oi_real d, oi_real den, oi_real dir[3],
+                                oi_real *shape_add)
 {
-    sums acc;
-    oi_real a_ref, d, m[3], len, den;
-    int st, i;
+    const oi__albedo_sums *acc = &job->acc;
+    oi_real m[3], len;
+    int i;
+    /* mean direction: the uniform one at the cubature's length, plus the
+     * field's first moment sum((a - mean) K omega) / (mean sum K) */
+    len = oi__norm_bounded(acc->w) / acc->s0;
+    for (i = 0; i < 3; i++) m[i] = len * dir[i] + (acc->v[i] - d * acc->w[i]) / den;
+    if (oi__unit_bounded(m, m) > (oi_real)0)
+        for (i = 0; i < 3; i++) dir[i] = m[i];
+    if (job->has_obs) {
+        const oi_real add = (acc->p - d * acc->q) / den;
+        if (OI_ISFINITE(add)) *shape_add = add;
+    }
+}
 
-    *albedo = (oi_real)0;
-    *shape_add = (oi_real)0;
-    st = oi__albedo_at(f, r_hat, &a_ref);
+int oi__albedo_integrate(oi__albedo_job *job)
+{
+    const int st = oi__albedo_at(&job->f, job->r_hat, &job->a_ref);
     if (st < 0) return st;
-    memset(&acc, 0, sizeof acc);
+    memset(&job->acc, 0, sizeof job->acc);
     /* a map: its bilinear patches one by one (src/earthshine_albedo_map.c) */
-    if (f->model == OI_ALBEDO_MAP)
-        st = oi__earthshine_map_cells(f, r_hat, s_hat, x, obs_hat, a_ref, &acc);
-    else
-        st = cubature(f, r_hat, s_hat, x, obs_hat, a_ref, &acc);
-    if (st < 0) return st;
+    return job->f.model == OI_ALBEDO_MAP ? oi__earthshine_map_cells(job) : cubature(job);
+}
+
+void oi__albedo_mean(const oi__albedo_job *job, oi_real *albedo, oi_real dir[3],
+                     oi_real *shape_add)
+{
+    const oi__albedo_sums *acc = &job->acc;
+    oi_real d, den;
+
+    *shape_add = (oi_real)0;
     /* nothing lit, or a uniform field where the cubature looked: the uniform
      * sphere's answer with the reference albedo, bit for bit */
-    if (!(acc.s0 > (oi_real)0) || !acc.varies) {
-        *albedo = a_ref;
-        return OI_OK;
+    if (!(acc->s0 > (oi_real)0) || !acc->varies) {
+        *albedo = job->a_ref;
+        return;
     }
-    d = acc.s1 / acc.s0; /* mean albedo less the reference */
-    *albedo = a_ref + d;
+    d = acc->s1 / acc->s0; /* mean albedo less the reference */
+    *albedo = job->a_ref + d;
     if (*albedo < (oi_real)0) *albedo = (oi_real)0;
     if (*albedo > (oi_real)1) *albedo = (oi_real)1;
     /* a mean albedo this small lights nothing measurable (e_earth below
      * 1e-12 of the uniform sphere's): the corrections, over mean sum K, would
      * only overflow (single precision: the product underflows to 0) */
-    den = *albedo * acc.s0;
-    if (!(*albedo > OI_R(1e-12)) || !(den > (oi_real)0)) return OI_OK;
-    /* mean direction: the uniform one at the cubature's length, plus the
-     * field's first moment sum((a - mean) K omega) / (mean sum K) */
-    len = oi__norm_bounded(acc.w) / acc.s0;
-    for (i = 0; i < 3; i++) m[i] = len * dir[i] + (acc.v[i] - d * acc.w[i]) / den;
-    if (oi__unit_bounded(m, m) > (oi_real)0)
-        for (i = 0; i < 3; i++) dir[i] = m[i];
-    if (obs_hat != NULL) {
-        const oi_real add = (acc.p - d * acc.q) / den;
-        if (OI_ISFINITE(add)) *shape_add = add;
-    }
-    return OI_OK;
+    den = *albedo * acc->s0;
+    if (!(*albedo > OI_R(1e-12)) || !(den > (oi_real)0)) return;
+    moments(job, d, den, dir, shape_add);
 }
 
 #else

@@ -59,24 +59,24 @@ static int rule_of(oi_real len, oi_real smin, int *n)
 }
 
 /* The geometry in the Earth-fixed frame (x towards Greenwich, z the
- * rotation axis): target, Sun and observer directions, 1 / x the target's
- * distance in Earth radii and h its altitude, the nadir's colatitude and
- * longitude. */
+ * rotation axis): target, Sun and observer directions (the job's own
+ * arrays, turned into that frame), 1 / x the target's distance in Earth
+ * radii and h its altitude, the nadir's colatitude and longitude. */
 typedef struct cells {
     const oi__albedo_field *f;
-    oi_real r[3], s[3], o[3];
+    const oi_real *r, *s, *o;
     oi_real rt, x, h;
     oi_real c_r, lam_r;
     oi_real a_ref;
     int has_obs;
 } cells;
 
-/* Earth-fixed from the scene's frame, and back. */
-static void to_fixed(const oi__albedo_field *f, const oi_real v[3], oi_real out[3])
+/* Earth-fixed from the scene's frame (in place), and back. */
+static void to_fixed(const oi__albedo_field *f, oi_real v[3])
 {
-    out[0] = f->cos_rot * v[0] + f->sin_rot * v[1];
-    out[1] = f->cos_rot * v[1] - f->sin_rot * v[0];
-    out[2] = v[2];
+    const oi_real x = f->cos_rot * v[0] + f->sin_rot * v[1];
+    v[1] = f->cos_rot * v[1] - f->sin_rot * v[0];
+    v[0] = x;
 }
 static void from_fixed(const oi__albedo_field *f, oi_real v[3])
 {
@@ -263,23 +263,26 @@ static OI_NOINLINE int row(const cells *q, oi_real c, oi_real wc, oi__albedo_sum
     return OI_OK;
 }
 
-int oi__earthshine_map_cells(const oi__albedo_field *f, const oi_real r_hat[3],
-                             const oi_real s_hat[3], oi_real x, const oi_real *obs_hat,
-                             oi_real a_ref, oi__albedo_sums *acc)
+int oi__earthshine_map_cells(oi__albedo_job *job)
 {
+    const oi__albedo_field *f = &job->f;
+    const oi_real x = job->x;
+    oi__albedo_sums *acc = &job->acc;
     cells q;
     oi_real w, c, c_lo, c_hi, c_s, t1, t2, row_h;
     int n, st;
     q.f = f;
-    to_fixed(f, r_hat, q.r);
-    to_fixed(f, s_hat, q.s);
-    q.has_obs = obs_hat != NULL;
-    q.o[0] = q.o[1] = q.o[2] = (oi_real)0;
-    if (q.has_obs) to_fixed(f, obs_hat, q.o);
+    to_fixed(f, job->r_hat);
+    to_fixed(f, job->s_hat);
+    q.r = job->r_hat;
+    q.s = job->s_hat;
+    q.has_obs = job->has_obs;
+    if (q.has_obs) to_fixed(f, job->obs_hat);
+    q.o = job->obs_hat; /* read only with has_obs */
     q.x = x;
     q.rt = (oi_real)1 / x;
     q.h = ((oi_real)1 - x) / x;
-    q.a_ref = a_ref;
+    q.a_ref = job->a_ref;
     q.c_r = OI_ATAN2(OI_SQRT(q.r[0] * q.r[0] + q.r[1] * q.r[1]), q.r[2]);
     q.lam_r = OI_ATAN2(q.r[1], q.r[0]);
     w = OI_ATAN2(OI_SQRT(((oi_real)1 - x) * ((oi_real)1 + x)), x);

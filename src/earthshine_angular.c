@@ -172,6 +172,11 @@ static const oi_real b_rule[NB_SPHERE / 2][2] = {
     { OI_R(0.06943184420297371238803), OI_R(0.1739274225687269286865) },
     { OI_R(0.3300094782075718675987), OI_R(0.3260725774312730713135) },
 };
+/* The azimuth rule's weights in the cubature's node order: the lower
+ * half's, then their mirror images'. */
+static const oi_real b_weight[NB_SPHERE] = {
+    OI_R(0.1739274225687269286865), OI_R(0.3260725774312730713135),
+    OI_R(0.1739274225687269286865), OI_R(0.3260725774312730713135)};
 
 /* Break points of the a range: 0, the horizon, the terminator's tangency
  * and up to N_GEO_SPHERE multiples of the altitude (the 1/d^3 peak). */
@@ -187,25 +192,204 @@ static const oi_real acos_poly[8] = {
     OI_R(1.5707963050), OI_R(-0.2145988016), OI_R(0.0889789874), OI_R(-0.0501743046),
     OI_R(0.0308918810), OI_R(-0.0170881256), OI_R(0.0066700901), OI_R(-0.0012624911)};
 
-/* p(acos c), the Lambert phase function 2 / (3 pi) ((pi - xi) cos xi +
- * sin xi) at the angle xi of cosine c, within 1e-8 absolute (p(0) = 2/3). */
-static oi_real phase_of_cos(oi_real c)
+
+/* acos_poly's polynomial at x (acos x = sqrt(1 - x) times it on [0, 1]). */
+static inline OI_VECTORISE_COMPARES oi_real acos_poly_of(oi_real x)
 {
-    oi_real ac = OI_FABS(c), q, poly, acos_abs, f;
-    if (ac > (oi_real)1) ac = (oi_real)1;
-    q = OI_SQRT((oi_real)1 - ac);
     /* Horner's rule written out: the compiler keeps the loop rolled, at
      * twice the instructions of the kernel's arithmetic */
-    poly = ((((((acos_poly[7] * ac + acos_poly[6]) * ac + acos_poly[5]) * ac + acos_poly[4]) * ac +
-              acos_poly[3]) * ac + acos_poly[2]) * ac + acos_poly[1]) * ac + acos_poly[0];
-    acos_abs = q * poly; /* acos |c| */
+    return ((((((acos_poly[7] * x + acos_poly[6]) * x + acos_poly[5]) * x + acos_poly[4]) * x +
+              acos_poly[3]) * x + acos_poly[2]) * x + acos_poly[1]) * x + acos_poly[0];
+}
+
+/* p(acos c), the Lambert phase function 2 / (3 pi) ((pi - xi) cos xi +
+ * sin xi) at the angle xi of cosine c, within 1e-8 absolute (p(0) = 2/3).
+ * Selects, no branch: node_block vectorises it. */
+static inline OI_VECTORISE_COMPARES oi_real phase_of_cos(oi_real c)
+{
+    oi_real ac = OI_FABS(c), q, acos_abs, f;
+    ac = ac < (oi_real)1 ? ac : (oi_real)1;
+    q = OI_SQRT((oi_real)1 - ac);
+    acos_abs = q * acos_poly_of(ac); /* acos |c| */
     /* pi - xi is acos |c| for c < 0, pi - acos |c| otherwise; sin xi = q sqrt(1 + |c|) */
     f = (c < (oi_real)0 ? acos_abs : OI_PI_R - acos_abs) * c + q * OI_SQRT((oi_real)1 + ac);
     return f > (oi_real)0 ? OI_R(2.0) / (OI_R(3.0) * OI_PI_R) * f : (oi_real)0;
 }
 
+/* Kernel evaluations per ring: the azimuth nodes, each at omega and at its
+ * mirror image in y. */
+#define RING_KERNELS (2 * NB_SPHERE)
+
+/* Reciprocal factorials 1 / n!, n = 2 .. 14, exact rationals rounded once:
+ * the Taylor coefficients of sin and cos. */
+#define INV_FACT2 (OI_R(1.0) / OI_R(2.0))
+#define INV_FACT3 (OI_R(1.0) / OI_R(6.0))
+#define INV_FACT4 (OI_R(1.0) / OI_R(24.0))
+#define INV_FACT5 (OI_R(1.0) / OI_R(120.0))
+#define INV_FACT6 (OI_R(1.0) / OI_R(720.0))
+#define INV_FACT7 (OI_R(1.0) / OI_R(5040.0))
+#define INV_FACT8 (OI_R(1.0) / OI_R(40320.0))
+#define INV_FACT9 (OI_R(1.0) / OI_R(362880.0))
+#define INV_FACT10 (OI_R(1.0) / OI_R(3628800.0))
+#define INV_FACT11 (OI_R(1.0) / OI_R(39916800.0))
+#define INV_FACT12 (OI_R(1.0) / OI_R(479001600.0))
+#define INV_FACT13 (OI_R(1.0) / OI_R(6227020800.0))
+#define INV_FACT14 (OI_R(1.0) / OI_R(87178291200.0))
+
+/* sin x and cos x for |x| <= 1.05 by their Taylor polynomials to x^13 and
+ * x^14: the remainders are below 1.05^15 / 15! = 1.6e-12 and 1.05^16 / 16!
+ * = 1.1e-13, four orders below the kernel's 2.2e-8 (acos_poly). The
+ * cubature's angles are within that range (a / 2 < pi / 4 below the
+ * horizon, b_m t <= 0.33 pi), where the general sine's range reduction is
+ * not needed: no call, so that the nodes' pair vectorises. */
+static inline OI_VECTORISE_COMPARES void sincos_small(oi_real x, oi_real *s, oi_real *c)
+{
+    const oi_real x2 = x * x;
+    *s = x * ((oi_real)1 -
+              x2 * (INV_FACT3 -
+                    x2 * (INV_FACT5 -
+                          x2 * (INV_FACT7 -
+                                x2 * (INV_FACT9 - x2 * (INV_FACT11 - x2 * INV_FACT13))))));
+    *c = (oi_real)1 -
+         x2 * (INV_FACT2 -
+               x2 * (INV_FACT4 -
+                     x2 * (INV_FACT6 -
+                           x2 * (INV_FACT8 -
+                                 x2 * (INV_FACT10 - x2 * (INV_FACT12 - x2 * INV_FACT14))))));
+}
+
+/* acos x for x in [-1, 1] from acos_poly: the lit arc's half-width. For
+ * x < 0 it is reflected about acos_poly's own value at 0 (2 acos_poly[0]
+ * - acos |x|, not pi - acos |x|), so that it is continuous at x = 0, where
+ * the terminator runs through the sub-target point (theta = pi/2): pi -
+ * acos |x| would step by pi - 2 acos_poly[0] = 4.4e-8 there, and the flux
+ * with it, as a rounding of cos(theta) across 0 decides. Within 2.2e-8
+ * absolute for x >= 0 and 6.6e-8 for x < 0. An error there moves the ring's
+ * integral by its square only (the lit factor vanishes at b_m), and the
+ * symmetric nodes by that part of the arc: far below the cubature's error. */
+static inline OI_VECTORISE_COMPARES oi_real acos_approx(oi_real x)
+{
+    const oi_real ax = OI_FABS(x) < (oi_real)1 ? OI_FABS(x) : (oi_real)1;
+    const oi_real a = OI_SQRT((oi_real)1 - ax) * acos_poly_of(ax);
+    return x < (oi_real)0 ? OI_R(2.0) * acos_poly[0] - a : a;
+}
+
+/* The cubature's rings evaluated at once by node_block: a fixed count, so
+ * that the compiler vectorises its loops whole (no scalar remainder, gcc
+ * -O2's cost model), 8 where the processor has vectors of doubles, else one
+ * (OI_DOUBLE_VECTORS). */
+#if OI_DOUBLE_VECTORS
+#define NODE_BLOCK 8
+#else
+#define NODE_BLOCK 1
+#endif
+
+/* What every node of one cubature shares: the sub-target angle's cosine and
+ * sine, R' and h' (cubature_flux's Note 1), h'^2, 2 R' and 4 R', and the
+ * local direction o to the observer. */
+typedef struct {
+    oi_real cos_theta, sin_theta, rp, hp, hp2, rp2, rp4, o[3];
+} cap_geometry;
+
 /*
- * cubature_flux: F, the sphere's flux at theta (cos_theta, sin_theta) and
+ * rings: term[i], ring i's part of cubature_flux's sum (before its
+ * factor R'^2 / pi), for nb <= NODE_BLOCK rings (nb a constant where it is
+ * inlined) at polar angles a[i] with weights
+ * aw[i] (the a rule's weight times its piece's width); 0 for a ring with
+ * nothing lit. Each value goes through the same operations in the same
+ * order as it would one ring at a time; the rings with nothing lit are
+ * computed too (finite or not) and their terms selected away, so that every
+ * loop is a fixed count with selects, no branch and no call (gcc -O2
+ * -fopt-info-vec; docs/earthshine-angular.md).
+ */
+static OI_ALWAYS_INLINE OI_VECTORISE_COMPARES void rings(const cap_geometry *g, const oi_real *a,
+                                                     const oi_real *aw, oi_real *term,
+                                                     const int nb)
+{
+    /* sn, cs: the sines and cosines of the azimuth nodes, b_m t_k of the
+     * rule's lower half (k < NB_SPHERE / 2), then their mirror images b_m (1
+     * - t_k) from them by the angle difference */
+    oi_real lit0[NODE_BLOCK], lit1[NODE_BLOCK], bm[NODE_BLOCK], cbm[NODE_BLOCK], sbm[NODE_BLOCK];
+    oi_real rho[NODE_BLOCK], zc[NODE_BLOCK], wgt[NODE_BLOCK], dark[NODE_BLOCK], ring[NODE_BLOCK];
+    oi_real sn[NB_SPHERE][NODE_BLOCK], cs[NB_SPHERE][NODE_BLOCK];
+    const oi_real cos_theta = g->cos_theta, sin_theta = g->sin_theta, rp = g->rp, hp = g->hp;
+    const oi_real hp2 = g->hp2, rp2 = g->rp2, rp4 = g->rp4;
+    const oi_real o0 = g->o[0], o1 = g->o[1], o2 = g->o[2];
+    int i, k;
+
+    for (i = 0; i < nb; i++) {
+        oi_real sh, ch, sa, sh2, cb, d2, dd;
+        sincos_small(OI_R(0.5) * a[i], &sh, &ch);
+        sa = OI_R(2.0) * sh * ch;
+        sh2 = sh * sh;
+        lit0[i] = ((oi_real)1 - OI_R(2.0) * sh2) * cos_theta;
+        lit1[i] = sa * sin_theta;
+        /* the lit arc's half-width b_m, its cosine and sine: cos b_m =
+         * -lit0 / lit1, all of the ring lit (b_m = pi) where that is <= -1 or
+         * lit1 <= 0 < lit0, nothing where it is >= 1 or lit1, lit0 <= 0 */
+        cb = lit1[i] > (oi_real)0 ? -lit0[i] / (lit1[i] > (oi_real)0 ? lit1[i] : (oi_real)1)
+                                  : OI_R(-1.0);
+        dark[i] = cb >= (oi_real)1 ? (oi_real)1
+                  : lit1[i] > (oi_real)0 ? (oi_real)0
+                  : lit0[i] > (oi_real)0 ? (oi_real)0 : (oi_real)1;
+        bm[i] = cb <= OI_R(-1.0) ? OI_PI_R : acos_approx(cb);
+        cb = cb <= OI_R(-1.0) ? OI_R(-1.0) : cb;
+        cbm[i] = cb;
+        sbm[i] = OI_SQRT(((oi_real)1 - cb) * ((oi_real)1 + cb)); /* 0 at cb = -1 */
+        d2 = hp2 + rp4 * sh2;
+        dd = OI_SQRT(d2);
+        rho[i] = rp * sa / dd;           /* omega's horizontal part */
+        zc[i] = -(hp + rp2 * sh2) / dd;  /* omega_z = R' cos a - 1 */
+        wgt[i] = aw[i] * sa * (hp - OI_R(2.0) * sh2) / (d2 * dd);
+        ring[i] = (oi_real)0;
+    }
+    for (k = 0; k < NB_SPHERE / 2; k++)
+        for (i = 0; i < nb; i++) {
+            oi_real s0, c0;
+            sincos_small(bm[i] * b_rule[k][0], &s0, &c0);
+            sn[k][i] = s0;
+            cs[k][i] = c0;
+            sn[NB_SPHERE / 2 + k][i] = sbm[i] * c0 - cbm[i] * s0;
+            cs[NB_SPHERE / 2 + k][i] = cbm[i] * c0 + sbm[i] * s0;
+        }
+    /* the ring's sum over its nodes in their order, k < NB_SPHERE / 2 the
+     * lower half's, then their mirror images; each node at omega and at its
+     * mirror image in y; an unlit node weighs 0 (its kernels are finite) */
+    for (k = 0; k < NB_SPHERE; k++)
+        for (i = 0; i < nb; i++) {
+            const oi_real snk = sn[k][i], csk = cs[k][i];
+            const oi_real lit = lit0[i] + lit1[i] * csk;
+            const oi_real u = rho[i] * csk * o0 + zc[i] * o2;
+            const oi_real v = rho[i] * snk * o1, weighted = b_weight[k] * lit;
+            const oi_real wl = lit > (oi_real)0 ? weighted : (oi_real)0;
+            ring[i] += wl * (phase_of_cos(u + v) + phase_of_cos(u - v));
+        }
+    for (i = 0; i < nb; i++)
+        term[i] = dark[i] > (oi_real)0 ? (oi_real)0 : wgt[i] * bm[i] * ring[i];
+}
+
+
+/* rings over NODE_BLOCK rings, and over half as many for a cubature's last
+ * few (a fixed count each, so that each vectorises whole). */
+static OI_NOINLINE OI_VECTORISE_COMPARES OI_AVX2_CLONES void
+node_block(const cap_geometry *g, const oi_real a[NODE_BLOCK], const oi_real aw[NODE_BLOCK],
+           oi_real term[NODE_BLOCK])
+{
+    rings(g, a, aw, term, NODE_BLOCK);
+}
+
+#if NODE_BLOCK >= 4
+static OI_NOINLINE OI_VECTORISE_COMPARES OI_AVX2_CLONES void
+half_block(const cap_geometry *g, const oi_real a[NODE_BLOCK / 2],
+           const oi_real aw[NODE_BLOCK / 2], oi_real term[NODE_BLOCK / 2])
+{
+    rings(g, a, aw, term, NODE_BLOCK / 2);
+}
+#endif
+
+/*
+ * cubature_flux: F, the sphere's flux at theta (cos_theta, sin_theta;
+ * theta_cs = OI_ATAN2(sin_theta, cos_theta), the terminator's break) and
  * h_km above an Earth of radius R towards the unit local direction o (per
  * unit albedo, solar irradiance and (a / d)^2, oi_earthshine_sphere's).
  * Notes:
@@ -220,69 +404,66 @@ static oi_real phase_of_cos(oi_real c)
  *     lit factor vanishes at b_m and the kernel p is smooth (its first
  *     non-analytic term is |xi|^3), so nothing is clipped.
  *  3. The a range is split at the horizon, the terminator's tangency and
- *     multiples of the altitude; each piece gets the mapped 9-point rule.
+ *     multiples of the altitude; each piece gets the mapped 9-point rule
+ *     (one rule at every altitude: a rule switched at a threshold steps the
+ *     flux there by the two rules' difference).
  *     docs/earthshine-angular.md measures it against the quadrature of
  *     bake/earthshine/angular.py.
+ *  4. The rings go to node_block NODE_BLOCK at a time, in order, the last
+ *     few to half_block where they fit in half as many, the last block
+ *     padded with copies of its last ring whose terms are not added;
+ *     their terms are summed in the rings' order.
  */
-static OI_NOINLINE oi_real cubature_flux(oi_real cos_theta, oi_real sin_theta, oi_real h_km,
-                                         oi_real R, const oi_real o[3])
+static OI_NOINLINE oi_real cubature_flux(oi_real theta_cs, oi_real cos_theta, oi_real sin_theta,
+                                         oi_real h_km, oi_real R, const oi_real o[3])
 {
-    oi_real bp[N_BREAK_SPHERE], r, rp, hp, a_max, flux = (oi_real)0;
-    int n, p, q, k;
+    cap_geometry g;
+    oi_real bp[N_BREAK_SPHERE], a[NODE_BLOCK], aw[NODE_BLOCK], r, a_max, flux = (oi_real)0;
+    /* zeroed though node_block writes every term: gcc -fanalyzer does not
+     * follow its vectorised loops and would report them uninitialised */
+    oi_real term[NODE_BLOCK] = {(oi_real)0};
+    int n, p, q, i, count = 0;
 
     r = R + h_km;
-    rp = R / r;
-    hp = h_km / r;
-    n = oi__cap_breaks_start(bp, N_BREAK_SPHERE, hp, rp, cos_theta, sin_theta, &a_max);
-    n = oi__cap_breaks_altitude(bp, N_BREAK_SPHERE, n, N_GEO_SPHERE, hp, rp, a_max);
+    g.rp = R / r;
+    g.hp = h_km / r;
+    g.cos_theta = cos_theta;
+    g.sin_theta = sin_theta;
+    g.hp2 = g.hp * g.hp;
+    g.rp2 = OI_R(2.0) * g.rp;
+    g.rp4 = OI_R(4.0) * g.rp;
+    g.o[0] = o[0];
+    g.o[1] = o[1];
+    g.o[2] = o[2];
+    n = oi__cap_breaks_at(bp, N_BREAK_SPHERE, g.hp, g.rp, theta_cs, &a_max);
+    n = oi__cap_breaks_altitude(bp, N_BREAK_SPHERE, n, N_GEO_SPHERE, g.hp, g.rp, a_max);
     for (p = 0; p + 1 < n; p++) {
         const oi_real a0 = bp[p], width = bp[p + 1] - bp[p];
         if (!(width > (oi_real)0)) continue;
         for (q = 0; q < NA_SPHERE; q++) {
-            const oi_real a = a0 + width * a_rule[q][0];
-            oi_real sh, ch, sa, sh2, lit0, lit1, bm, cbm, sbm, d2, dd, rho, zc, wgt, ring = (oi_real)0;
-            OI_SINCOS(OI_R(0.5) * a, &sh, &ch);
-            sa = OI_R(2.0) * sh * ch;
-            sh2 = sh * sh;
-            lit0 = ((oi_real)1 - OI_R(2.0) * sh2) * cos_theta;
-            lit1 = sa * sin_theta;
-            /* the lit arc's half-width b_m, its cosine and sine */
-            cbm = OI_R(-1.0);
-            if (lit1 > (oi_real)0) cbm = -lit0 / lit1;
-            else if (!(lit0 > (oi_real)0)) continue;
-            if (cbm >= (oi_real)1) continue;
-            if (cbm <= OI_R(-1.0)) {
-                bm = OI_PI_R;
-                cbm = OI_R(-1.0);
-                sbm = (oi_real)0;
-            } else {
-                bm = OI_ACOS(cbm);
-                sbm = OI_SQRT(((oi_real)1 - cbm) * ((oi_real)1 + cbm));
+            a[count] = a0 + width * a_rule[q][0];
+            aw[count] = width * a_rule[q][1];
+            if (++count == NODE_BLOCK) {
+                node_block(&g, a, aw, term);
+                for (i = 0; i < NODE_BLOCK; i++) flux += term[i];
+                count = 0;
             }
-            d2 = hp * hp + OI_R(4.0) * rp * sh2;
-            dd = OI_SQRT(d2);
-            rho = rp * sa / dd;                        /* omega's horizontal part */
-            zc = -(hp + OI_R(2.0) * rp * sh2) / dd;    /* omega_z = R' cos a - 1 */
-            for (k = 0; k < NB_SPHERE / 2; k++) {
-                oi_real sc[2][2]; /* (sin, cos) of the node b and its mirror b_m - b */
-                int side;
-                OI_SINCOS(bm * b_rule[k][0], &sc[0][0], &sc[0][1]);
-                sc[1][0] = sbm * sc[0][1] - cbm * sc[0][0];
-                sc[1][1] = cbm * sc[0][1] + sbm * sc[0][0];
-                for (side = 0; side < 2; side++) {
-                    const oi_real lit = lit0 + lit1 * sc[side][1];
-                    oi_real u, v;
-                    if (!(lit > (oi_real)0)) continue;
-                    u = rho * sc[side][1] * o[0] + zc * o[2];
-                    v = rho * sc[side][0] * o[1];
-                    ring += b_rule[k][1] * lit * (phase_of_cos(u + v) + phase_of_cos(u - v));
-                }
-            }
-            wgt = width * a_rule[q][1] * sa * (hp - OI_R(2.0) * sh2) / (d2 * dd);
-            flux += wgt * bm * ring;
         }
     }
-    flux *= rp * rp / OI_PI_R;
+    if (count > 0) {
+        for (i = count; i < NODE_BLOCK; i++) {
+            a[i] = a[count - 1];
+            aw[i] = aw[count - 1];
+        }
+#if NODE_BLOCK >= 4
+        if (count <= NODE_BLOCK / 2)
+            half_block(&g, a, aw, term);
+        else
+#endif
+            node_block(&g, a, aw, term);
+        for (i = 0; i < count; i++) flux += term[i];
+    }
+    flux *= g.rp * g.rp / OI_PI_R;
     return flux > (oi_real)0 ? flux : (oi_real)0;
 }
 
@@ -293,9 +474,12 @@ static OI_NOINLINE oi_real cubature_flux(oi_real cos_theta, oi_real sin_theta, o
  * the table's first row (100 km; then the caller reflects from the mean
  * direction). The cubature's F does not go through phi: on the far night
  * side phi is a small fraction of phi(0), and the earthshine table's error
- * there, within its goal of phi(0), can be a large part of phi. */
+ * there, within its goal of phi(0), can be a large part of phi. theta_cs:
+ * OI_ATAN2(sin_theta, cos_theta), which oi_illuminate's theta is (its
+ * earth_term forms the cosine and sine by the same operations). */
 static int sphere_flux(const oi_model *m, oi_real theta, oi_real cos_theta, oi_real sin_theta,
-                       oi_real h_km, oi_real R, const oi_real o[3], oi_real phi, oi_real *flux)
+                       oi_real theta_cs, oi_real h_km, oi_real R, const oi_real o[3], oi_real phi,
+                       oi_real *flux)
 {
     const oi_earth_angular_table *t = oi_earth_angular_default();
     oi_real w, s;
@@ -307,7 +491,7 @@ static int sphere_flux(const oi_model *m, oi_real theta, oi_real cos_theta, oi_r
     if (m->earth_reflection == OI_EARTH_REFLECT_TABLE)
         *flux = phi * table_shape(t, theta, cos_theta, sin_theta, w, s, R, o);
     else
-        *flux = cubature_flux(cos_theta, sin_theta, h_km, R, o);
+        *flux = cubature_flux(theta_cs, cos_theta, sin_theta, h_km, R, o);
     return 1;
 }
 
@@ -320,7 +504,8 @@ int oi__earth_sphere_shape(const oi_model *m, oi_real theta, oi_real cos_theta, 
                            oi_real *shape)
 {
     oi_real f;
-    const int served = sphere_flux(m, theta, cos_theta, sin_theta, h_km, R, o, phi, &f);
+    const int served =
+        sphere_flux(m, theta, cos_theta, sin_theta, theta, h_km, R, o, phi, &f);
     *shape = phi > OI_R(1e-20) * f && phi > (oi_real)0 ? f / phi : (oi_real)0;
     return served;
 }
@@ -367,7 +552,9 @@ int oi_earthshine_sphere(oi_real theta, oi_real h_km, const oi_real obs[3],
     t = oi__earth_angular_of(&m);
 #if !defined(OI_NO_EARTH_ANGULAR) && !defined(OI_NO_EARTH_TABLE)
     if (t != NULL) {
-        if (sphere_flux(&m, theta, cs, sn, h_km, m.earth_radius_km, o, phi, flux)) return st;
+        if (sphere_flux(&m, theta, cs, sn, OI_ATAN2(sn, cs), h_km, m.earth_radius_km, o, phi,
+                        flux))
+            return st;
     }
 #else
     (void)t;

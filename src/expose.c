@@ -160,14 +160,21 @@ static int goal_resolve(const oi_expose_goal *goal, oi_real *fill, oi_real *snr_
     return 1;
 }
 
-/* The goal and the photometric input checked, in this order: goal
- * (OI_ERR_INPUT), unknown sky bits (OI_ERR_FLAGS), non-finite values (OI_ERR_NONFINITE), a negative flux
- * (OI_ERR_INPUT), a flux brighter than OI_MAG_MIN (OI_ERR_MAGNITUDE), the
- * background (OI_ERR_INPUT), unknown flag bits (OI_ERR_FLAGS). */
-static int check_input(const oi_expose_in *in, const oi_expose_goal *goal, expose_rates *r)
+/* The goal checked: its fields (OI_ERR_INPUT), then unknown sky bits
+ * (OI_ERR_FLAGS); the defaults filled into r. */
+static int check_goal(const oi_expose_goal *goal, expose_rates *r)
 {
     if (!goal_resolve(goal, &r->goal_fill, &r->snr_min)) return OI_ERR_INPUT;
     if (goal != NULL && (goal->sky & ~(unsigned)SKY_ALL) != 0u) return OI_ERR_FLAGS;
+    return OI_OK;
+}
+
+/* The photometric input checked, in this order: non-finite values
+ * (OI_ERR_NONFINITE), a negative flux (OI_ERR_INPUT), a flux brighter than
+ * OI_MAG_MIN (OI_ERR_MAGNITUDE), the background (OI_ERR_INPUT), unknown flag
+ * bits (OI_ERR_FLAGS), the rate (OI_ERR_NONFINITE, OI_ERR_INPUT). */
+static int check_input(const oi_expose_in *in)
+{
     if (!OI_ISFINITE(in->flux_w_m2) || !OI_ISFINITE(in->background_w_m2_sr)) {
         return OI_ERR_NONFINITE;
     }
@@ -388,12 +395,13 @@ static oi_real moving_setting(const oi_camera *c, const expose_rates *r, const t
 }
 
 static OI_NOINLINE unsigned expose_moving(const oi_camera *camera, const oi_expose_in *in,
-                                          const expose_rates *r, oi_exposure *out)
+                                          const expose_rates *r, unsigned need,
+                                          oi_exposure *out)
 {
     trail_model tm;
     oi_real fill, sig, bkg, snr;
     oi_real best_snr = 0, low_fill = 0;
-    int n, ti, gi, found = 0, best_t = 0, best_g = 0, low_t = 0, low_g = 0, any_detected = 0;
+    int n, ti, gi, g0, found = 0, best_t = 0, best_g = 0, low_t = 0, low_g = 0, any_detected = 0;
     unsigned flags = 0;
     tm.px_s = in->rate_rad_s / (camera->pixel_pitch_m / camera->focal_length_m);
     tm.sigma = oi__psf_sigma_px(camera->psf_peak_fraction);
@@ -407,7 +415,9 @@ static OI_NOINLINE unsigned expose_moving(const oi_camera *camera, const oi_expo
             flags |= OI_FLAG_TRAILED;
         }
     }
-    for (gi = 0; gi < camera->n_gains; gi++) {
+    /* without the setting, only the highest gain's times (OI_FLAG_TOO_FAINT) */
+    g0 = (need & OI__EXPOSE_SEARCH) != 0u ? 0 : camera->n_gains - 1;
+    for (gi = g0; gi < camera->n_gains; gi++) {
         for (ti = 0; ti < n; ti++) {
             fill = moving_setting(camera, r, &tm, ti, gi, &sig, &bkg, &snr);
             if (fill < OI_R(1.0) && fill <= r->goal_fill && (!found || snr > best_snr)) {
@@ -426,22 +436,44 @@ static OI_NOINLINE unsigned expose_moving(const oi_camera *camera, const oi_expo
             }
         }
     }
+    if (!any_detected) flags |= OI_FLAG_TOO_FAINT;
+    if ((need & OI__EXPOSE_SEARCH) == 0u) return flags;
     if (!found) {
         best_t = low_t;
         best_g = low_g;
         if (!(low_fill < OI_R(1.0))) flags |= OI_FLAG_SATURATED;
     }
     evaluate_moving(camera, r, &tm, best_t, best_g, out);
-    if (!any_detected) flags |= OI_FLAG_TOO_FAINT;
     return flags;
 }
 
 static void expose_at_rest(const oi_camera *camera, const oi_expose_in *in,
-                           const expose_rates *r, unsigned flags, oi_exposure *out);
+                           const expose_rates *r, unsigned flags, unsigned need,
+                           oi_exposure *out);
+
+/* The per-call part of the choice: the goal with its defaults and its
+ * status (checked before the input's), the detection rule, and the dark
+ * current at the goal's temperature with its status (checked after the
+ * input's). */
+void oi__expose_plan_make(const oi_camera *camera, const oi_expose_goal *goal,
+                          oi__expose_plan *p)
+{
+    expose_rates r;
+    memset(&r, 0, sizeof r);
+    p->goal_st = check_goal(goal, &r);
+    p->dark_st = sensor_dark(camera, goal, &p->dark);
+    detect_rule(camera, &r);
+    p->goal_fill = r.goal_fill;
+    p->snr_min = r.snr_min;
+    p->det_k = r.det_k;
+    p->det_z = r.det_z;
+}
 
 /*
- * oi__expose_valid: the choice of oi_expose for a valid camera; out already
- * zeroed, and left so on error.
+ * oi__expose_planned: the choice of oi_expose for a valid camera and its
+ * plan (oi__expose_plan_make; NULL: formed from goal, the single call);
+ * out already zeroed, and left so on error.
+ * need: OI__EXPOSE_* bits, what is computed (the single call: all).
  *
  * The rule (include/orbillum.h, oi_expose Note 2) is a search over every
  * (time, gain) pair, gains ascending outside and times ascending inside,
@@ -464,65 +496,99 @@ static void expose_at_rest(const oi_camera *camera, const oi_expose_in *in,
  *   5. The best of gain g is time k_g - 1 when that time is spaced from the
  *      one before (TIME_SPACING); otherwise times [0, k_g) are scanned.
  */
-int oi__expose_valid(const oi_camera *camera, const oi_expose_in *in,
-                     const oi_expose_goal *goal, oi_exposure *out)
+int oi__expose_planned(const oi_camera *camera, const oi__expose_plan *p,
+                       const oi_expose_goal *goal, const oi_expose_in *in, unsigned need,
+                       oi_exposure *out)
 {
     expose_rates r;
     oi_real dark;
     int st;
     unsigned flags;
 
-    st = check_input(in, goal, &r);
-    if (st != OI_OK) return st;
-    st = sensor_dark(camera, goal, &dark);
-    if (st != OI_OK) return st;
+    if (p == NULL) {
+        /* the single call: the goal's part formed here (no plan in the
+         * frame: make stack) */
+        st = check_goal(goal, &r);
+        if (st != OI_OK) return st;
+        st = check_input(in);
+        if (st != OI_OK) return st;
+        st = sensor_dark(camera, goal, &dark);
+        if (st != OI_OK) return st;
+        detect_rule(camera, &r);
+    } else {
+        if (p->goal_st != OI_OK) return p->goal_st;
+        st = check_input(in);
+        if (st != OI_OK) return st;
+        if (p->dark_st != OI_OK) return p->dark_st;
+        r.goal_fill = p->goal_fill;
+        r.snr_min = p->snr_min;
+        r.det_k = p->det_k;
+        r.det_z = p->det_z;
+        dark = p->dark;
+    }
     pixel_rates(camera, in, dark, &r);
-    detect_rule(camera, &r);
     flags = in->flags & (unsigned)FLAGS_GEOMETRIC;
     if (in->rate_rad_s > 0) {
-        out->flags = flags | expose_moving(camera, in, &r, out);
-        detect_margin(camera, &r, out);
+        if ((need & (OI__EXPOSE_SEARCH | OI__EXPOSE_FAINT)) != 0u)
+            flags |= expose_moving(camera, in, &r, need, out);
+        out->flags = flags;
+        if ((need & OI__EXPOSE_SEARCH) != 0u) detect_margin(camera, &r, out);
         out->sun_angle_rad = 0;
         out->background_w_m2_sr = in->background_w_m2_sr;
         out->rate_rad_s = in->rate_rad_s;
         return OI_OK;
     }
-    expose_at_rest(camera, in, &r, flags, out);
+    expose_at_rest(camera, in, &r, flags, need, out);
     return OI_OK;
 }
 
-/* The target at rest: steps 1-5 above; out->flags gets flags and the
- * search's. A frame of its own: the search's locals are not live while the
- * moving target's trail is integrated (make stack). */
+int oi__expose_valid(const oi_camera *camera, const oi_expose_in *in,
+                     const oi_expose_goal *goal, oi_exposure *out)
+{
+    return oi__expose_planned(camera, NULL, goal, in, OI__EXPOSE_SEARCH | OI__EXPOSE_FAINT, out);
+}
+
+/* The target at rest: steps 1-5 above (with OI__EXPOSE_SEARCH in need);
+ * out->flags gets flags and the search's. A frame of its own: the search's
+ * locals are not live while the moving target's trail is integrated (make
+ * stack). */
 static OI_NOINLINE void expose_at_rest(const oi_camera *camera, const oi_expose_in *in,
-                                       const expose_rates *r, unsigned flags, oi_exposure *out)
+                                       const expose_rates *r, unsigned flags, unsigned need,
+                                       oi_exposure *out)
 {
     int kk, best_t, best_g;
-    kk = first_time_over_goal(camera, r); /* 1 */
-    if (kk == 0) {
-        /* 2. */
-        evaluate(camera, r, 0, 0, out);
-        if (!(out->fill < OI_R(1.0))) flags |= OI_FLAG_SATURATED;
-    } else {
-        best_setting(camera, r, kk, &best_t, &best_g);
-        evaluate(camera, r, best_t, best_g, out);
-    }
-    if (r->det_k < 0) {
-        if (snr_at(r, camera->times_s[camera->n_times - 1],
-                   camera->read_noise_e[camera->n_gains - 1]) < r->snr_min) {
-            flags |= OI_FLAG_TOO_FAINT;
-        }
-    } else {
-        oi_real t = camera->times_s[camera->n_times - 1];
-        if (!detected(r, r->rate_s * t, r->rate_b * t, camera->read_noise_e[camera->n_gains - 1])) {
-            flags |= OI_FLAG_TOO_FAINT;
+    if ((need & OI__EXPOSE_SEARCH) != 0u) {
+        kk = first_time_over_goal(camera, r); /* 1 */
+        if (kk == 0) {
+            /* 2. */
+            evaluate(camera, r, 0, 0, out);
+            if (!(out->fill < OI_R(1.0))) flags |= OI_FLAG_SATURATED;
+        } else {
+            best_setting(camera, r, kk, &best_t, &best_g);
+            evaluate(camera, r, best_t, best_g, out);
         }
     }
-    detect_margin(camera, r, out);
+    if ((need & OI__EXPOSE_FAINT) != 0u) {
+        if (r->det_k < 0) {
+            if (snr_at(r, camera->times_s[camera->n_times - 1],
+                       camera->read_noise_e[camera->n_gains - 1]) < r->snr_min) {
+                flags |= OI_FLAG_TOO_FAINT;
+            }
+        } else {
+            oi_real t = camera->times_s[camera->n_times - 1];
+            if (!detected(r, r->rate_s * t, r->rate_b * t,
+                          camera->read_noise_e[camera->n_gains - 1])) {
+                flags |= OI_FLAG_TOO_FAINT;
+            }
+        }
+    }
+    if ((need & OI__EXPOSE_SEARCH) != 0u) {
+        detect_margin(camera, r, out);
+        out->trail_factor = 1; /* at rest: no trail */
+    }
     out->flags = flags;
     out->sun_angle_rad = 0;
     out->background_w_m2_sr = in->background_w_m2_sr;
-    out->trail_factor = 1; /* at rest: no trail */
 }
 
 /* oi_expose: the contract is in include/orbillum.h; the method above

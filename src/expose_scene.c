@@ -68,14 +68,24 @@ static OI_NOINLINE oi_real angular_rate(const oi_scene *scene, const scene_geom 
 }
 
 /* The inputs checked in the order of the statuses of the contract, and the
- * boresight formed. */
+ * boresight formed. b: the batch's set-up (the model's constants, the model
+ * and the camera already valid), or NULL (the single call: both checked
+ * here). */
 static OI_NOINLINE int check_scene(const oi_camera *camera, const oi_scene *scene, const oi_illum *illum,
-                       const oi_model *model, int use_moon, scene_geom *g)
+                       const oi_model *model, int use_moon, const oi__expose_scene_batch *b,
+                       scene_geom *g)
 {
     oi_real r_tgt, re, au, tsi, moon[2]; /* locals: g's address does not leave this file */
     int st, shape = OI_EARTH_SPHERE;
     if (!scene->has_observer) return OI_ERR_NULL;
-    if (model == NULL) { /* the default model (src/model.c), without a copy */
+    if (b != NULL) { /* the batch's, resolved once */
+        re = b->re;
+        au = b->au;
+        tsi = b->tsi;
+        moon[0] = b->rm;
+        moon[1] = b->moon_albedo;
+        shape = b->shape;
+    } else if (model == NULL) { /* the default model (src/model.c), without a copy */
         re = (oi_real)OI_EARTH_RADIUS_KM;
         au = (oi_real)OI_AU_KM;
         tsi = (oi_real)OI_TSI_W_M2;
@@ -119,7 +129,7 @@ static OI_NOINLINE int check_scene(const oi_camera *camera, const oi_scene *scen
         if (illum->flux_specular < 0) return OI_ERR_INPUT;
 #endif
     }
-    if (!oi__camera_valid(camera)) return OI_ERR_CAMERA;
+    if (b == NULL && !oi__camera_valid(camera)) return OI_ERR_CAMERA;
     g->r_obs = oi__norm(scene->observer_km);
     r_tgt = oi__norm(scene->target_km);
     if (g->r_obs == 0 ||
@@ -161,6 +171,37 @@ static OI_NOINLINE oi_real sun_angle_of(const oi_scene *scene, const scene_geom 
         return OI_ATAN2(oi__norm(u), d);
     }
     return 0;
+}
+
+/* Margin, in cosine, of the certain Sun-exclusion test: far beyond the
+ * rounding of the cosine below and of the angle sun_angle_of forms (a few
+ * epsilon). */
+#ifdef OI_SINGLE_PRECISION
+#define EXCL_COS_MARGIN OI_R(1e-5)
+#else
+#define EXCL_COS_MARGIN OI_R(1e-6)
+#endif
+
+/* OI_FLAG_SUN_EXCLUSION without the angle (the batch without
+ * OI_EXPOSE_SUN_ANGLE): decided from the cosine d of sun_angle_of when it is
+ * farther than EXCL_COS_MARGIN from cos_excl = cos(sun_exclusion_rad) (the
+ * cosine decreases on [0, pi]), else from the angle itself. d is the cosine
+ * only when both vectors are unit (the angle's atan2 form is not affected by
+ * their lengths, the cosine is): a vector whose unit form lost digits
+ * (subnormal differences) goes to the angle. */
+static OI_NOINLINE int sun_excluded(const oi_scene *scene, const scene_geom *g, oi_real cos_excl,
+                                    oi_real excl_rad)
+{
+    oi_real u[3], d;
+    oi__sub(scene->sun_km, scene->observer_km, u);
+    if (oi__finite3(g->b) && oi__finite3(u) && oi__unit(u, u) > 0 &&
+        OI_FABS(oi__dot(u, u) - OI_R(1.0)) < EXCL_COS_MARGIN &&
+        OI_FABS(oi__dot(g->bh, g->bh) - OI_R(1.0)) < EXCL_COS_MARGIN) {
+        d = oi__dot(u, g->bh);
+        if (d > cos_excl + EXCL_COS_MARGIN) return 1;
+        if (d < cos_excl - EXCL_COS_MARGIN) return 0;
+    }
+    return sun_angle_of(scene, g) < excl_rad;
 }
 
 /* Earth's disc against the field (Note 2): the flag is the decision
@@ -400,51 +441,82 @@ static unsigned region_flags(int region)
     return 0u;
 }
 
-/* oi_expose_scene: the contract is in include/orbillum.h. */
-int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
-                    const oi_illum *illum, const oi_model *model,
-                    const oi_expose_goal *goal, oi_exposure *out)
+/* The batch's set-up of oi_expose_scene_batch_outputs (src/expose_batch.c):
+ * the model's constants (its status), the camera's check (OI_ERR_CAMERA),
+ * the plan of the choice, the cosine of the Sun exclusion. */
+int oi__expose_scene_setup(const oi_camera *camera, const oi_model *model,
+                           const oi_expose_goal *goal, unsigned outputs,
+                           oi__expose_scene_batch *b)
+{
+    oi_real moon[2];
+    int st = scene_model(model, &b->re, &b->au, &b->tsi, moon, &b->shape); /* NULL: defaults */
+    if (st != OI_OK) return st;
+    b->rm = moon[0];
+    b->moon_albedo = moon[1];
+    if (!oi__camera_valid(camera)) return OI_ERR_CAMERA;
+    oi__expose_plan_make(camera, goal, &b->plan);
+    b->cos_excl = OI_COS(camera->sun_exclusion_rad);
+    b->outputs = outputs;
+    return OI_OK;
+}
+
+/* What the row's OI_EXPOSE_* outputs need computed. */
+#define NEED_CHOICE (OI_EXPOSE_SETTING | OI_EXPOSE_FAINT | OI_EXPOSE_DETECT)
+
+/* One row of oi_expose_scene: b NULL for the single call (every output,
+ * the model, the camera and the goal checked here), else the batch's
+ * set-up. out is zeroed. */
+int oi__expose_scene_row(const oi_camera *camera, const oi_scene *scene, const oi_illum *illum,
+                         const oi_model *model, const oi_expose_goal *goal,
+                         const oi__expose_scene_batch *b, oi_exposure *out)
 {
     oi_expose_in in;
     scene_geom g;
-    oi_real sun_angle, s_earth;
-    int st, use_moon, moon_hit = 0, lit_ground;
+    oi_real sun_angle = 0, s_earth;
+    int st, use_moon, moon_hit = 0, lit_ground, excluded;
     const unsigned sky = goal != NULL ? goal->sky : 0u;
+    const unsigned outputs = b != NULL ? b->outputs : (unsigned)OI_EXPOSE_ALL;
+    unsigned need;
 
-    if (out == NULL) return OI_ERR_NULL;
-    memset(out, 0, sizeof *out);
-    if (camera == NULL || scene == NULL || illum == NULL) return OI_ERR_NULL;
     /* the Moon's position is read only with OI_TERM_MOON (as oi_illuminate) */
 #ifndef OI_NO_MOON
     use_moon = (sky & OI_SKY_MOON) != 0u && (scene->terms & OI_TERM_MOON) != 0u;
 #else
     use_moon = 0; /* no Moon in this build: goal->sky cannot ask for it (OI_ERR_FLAGS) */
 #endif
-    st = check_scene(camera, scene, illum, model, use_moon, &g);
+    st = check_scene(camera, scene, illum, model, use_moon, b, &g);
     if (st != OI_OK) return st;
 
     in.flux_w_m2 = illum->flux_obs;
     in.background_w_m2_sr = 0;
     in.flags = 0;
-    in.rate_rad_s = angular_rate(scene, &g);
-    sun_angle = sun_angle_of(scene, &g);
-    if (sun_angle < camera->sun_exclusion_rad) in.flags |= OI_FLAG_SUN_EXCLUSION;
+    in.rate_rad_s = (outputs & (NEED_CHOICE | OI_EXPOSE_RATE)) != 0u ? angular_rate(scene, &g) : 0;
+    if ((outputs & OI_EXPOSE_SUN_ANGLE) != 0u) {
+        sun_angle = sun_angle_of(scene, &g);
+        excluded = sun_angle < camera->sun_exclusion_rad;
+    } else {
+        excluded = sun_excluded(scene, &g, b->cos_excl, camera->sun_exclusion_rad);
+    }
+    if (excluded) in.flags |= OI_FLAG_SUN_EXCLUSION;
     if (earth_in_fov(scene, &g, camera->fov_rad)) in.flags |= OI_FLAG_EARTH_IN_FOV;
     s_earth = ground_background(scene, &g, &in);
     lit_ground = s_earth >= 0 && in.background_w_m2_sr > 0;
     if (use_moon) moon_hit = moon_view(scene, illum, &g, camera->fov_rad, s_earth, &in);
+    /* the sky's terms only where the background is an output or the choice's */
+    if ((outputs & (NEED_CHOICE | OI_EXPOSE_BACKGROUND)) != 0u) {
 #ifndef OI_NO_SKY
-    if ((sky & OI_SKY_ZODIACAL) != 0u && s_earth < 0 && !moon_hit) {
-        in.background_w_m2_sr = zodiacal_background(scene, &g);
-    }
-    if ((sky & OI_SKY_STARLIGHT) != 0u && s_earth < 0 && !moon_hit) {
-        in.background_w_m2_sr += starlight_background(&g);
-    }
+        if ((sky & OI_SKY_ZODIACAL) != 0u && s_earth < 0 && !moon_hit) {
+            in.background_w_m2_sr = zodiacal_background(scene, &g);
+        }
+        if ((sky & OI_SKY_STARLIGHT) != 0u && s_earth < 0 && !moon_hit) {
+            in.background_w_m2_sr += starlight_background(&g);
+        }
 #endif
 #ifndef OI_NO_SKYLIGHT
-    if ((scene->terms & OI_TERM_SKY) != 0u && !lit_ground && !moon_hit)
-        in.background_w_m2_sr += sky_background(scene, model, &g);
+        if ((scene->terms & OI_TERM_SKY) != 0u && !lit_ground && !moon_hit)
+            in.background_w_m2_sr += sky_background(scene, model, &g);
 #endif
+    }
     (void)moon_hit;
     (void)lit_ground;
     if (in.flags & OI_FLAG_OCCULTED) in.flux_w_m2 = 0;
@@ -456,10 +528,23 @@ int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
     in.flags |= region_flags(illum->shadow.region);
     if (illum->sun_moon_hidden > (oi_real)0) in.flags |= OI_FLAG_MOON_SHADOW;
 
-    st = oi__expose_valid(camera, &in, goal, out);
+    need = ((outputs & (OI_EXPOSE_SETTING | OI_EXPOSE_DETECT)) != 0u ? OI__EXPOSE_SEARCH : 0u) |
+           ((outputs & OI_EXPOSE_FAINT) != 0u ? OI__EXPOSE_FAINT : 0u);
+    st = oi__expose_planned(camera, b != NULL ? &b->plan : NULL, goal, &in, need, out);
     if (st < 0) return st;
     out->sun_angle_rad = sun_angle;
     return st;
+}
+
+/* oi_expose_scene: the contract is in include/orbillum.h. */
+int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
+                    const oi_illum *illum, const oi_model *model,
+                    const oi_expose_goal *goal, oi_exposure *out)
+{
+    if (out == NULL) return OI_ERR_NULL;
+    memset(out, 0, sizeof *out);
+    if (camera == NULL || scene == NULL || illum == NULL) return OI_ERR_NULL;
+    return oi__expose_scene_row(camera, scene, illum, model, goal, NULL, out);
 }
 
 #endif /* OI_NO_EXPOSURE */

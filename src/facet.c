@@ -72,43 +72,80 @@ static oi_real earth_specular(const facet_scene *fs, const oi_model *m, const oi
     }
 }
 
+/* The unit facet normal in the positions' frame (its own frame: the body
+ * vector is not on the stack under the Earth's cubature). */
+static OI_NOINLINE void facet_normal(const oi_real q[4], const oi_facet *f, oi_real nrm[3])
+{
+    oi_real body[3];
+    (void)oi__unit(f->normal, body);
+    oi__quat_rotate(q, body, nrm);
+}
+
+/* The local frame of the Earth's light and the solar irradiance at the
+ * Earth times its albedo, for the cubature (its own frame). */
+static OI_NOINLINE void earth_frame(const oi_scene *s, const oi_model *m, facet_scene *fs)
+{
+    oi_real s_hat[3], c[3], q;
+    const oi_real d_sun = oi__norm_bounded(s->sun_km);
+    oi__local_frame(s->target_km, s->sun_km, fs->r_hat, s_hat, fs->x, fs->y);
+    oi__cross(s_hat, fs->r_hat, c);
+    fs->sin_theta = oi__norm_bounded(c);
+    fs->cos_theta = oi__dot(s_hat, fs->r_hat);
+    q = m->au_km / d_sun;
+    fs->e0_earth = s->earth_albedo * m->tsi_w_m2 * q * q;
+}
+
+/* One face's sums: the Sun's and the Moon's light reflected (diffuse and
+ * specular), with the Earth's diffuse de and specular se, added to out's
+ * fluxes at geom (area / range^2 times cos(o)). Its own frame, after the
+ * Earth's cubature: the point sources' sums are not on the stack under it. */
+static OI_NOINLINE void add_face(const oi_real nrm[3], const oi_real obs_hat[3], oi_real rho_d,
+                                 const oi_facet *f, oi_real geom, oi_real de, oi_real se,
+                                 oi_illum *out)
+{
+    oi_real ds = 0, ss = 0, dm = 0, sm = 0;
+    point_source(out->e_sun, out->dir_sun, nrm, obs_hat, rho_d, f, &ds, &ss);
+    point_source(out->e_moon, out->dir_moon, nrm, obs_hat, rho_d, f, &dm, &sm);
+    out->flux_sun += geom * (ds + ss);
+    out->flux_earth += geom * (de + se);
+    out->flux_moon += geom * (dm + sm);
+    out->flux_specular += geom * (ss + se + sm);
+}
+
 /*
  * oi__shape_flux: flux_sun, flux_earth, flux_moon and flux_specular of the
- * scene's shape towards the unit direction obs_hat at range_km, given the
- * sources' irradiances and directions in out (oi_illuminate's terms). The
- * shape and attitude passed oi__shape_scene_check.
+ * scene's shape towards its observer at out->range_km, given the sources'
+ * irradiances and directions in out (oi_illuminate's terms), in place of the
+ * sphere's fluxes (flux_sky, the scattered sunlight, is not modelled for a
+ * shape: 0). The shape and attitude passed oi__shape_scene_check. Each
+ * face's Earth light comes first (the deep cubature, with only the loop's
+ * state live), then its point sources and sums (add_face).
  */
-void oi__shape_flux(const oi_scene *s, const oi_model *m, const oi_real obs_hat[3],
-                    oi_illum *out)
+void oi__shape_flux(const oi_scene *s, const oi_model *m, oi_illum *out)
 {
     facet_scene fs;
+    oi_real obs_hat[3];
     const oi_shape *shape = s->shape;
     const oi_real range_m = out->range_km * OI_R(1000.0);
     const oi_real d2 = range_m * range_m; /* above the shape's area (oi_illuminate) */
     unsigned i, n = shape->n_facets;
     int side;
 
+    /* the unit vector to the observer, formed as oi_illuminate's observer term does */
+    oi__sub(s->observer_km, s->target_km, obs_hat);
+    (void)oi__unit(obs_hat, obs_hat);
+    out->flux_sun = out->flux_earth = out->flux_moon = out->flux_sky = (oi_real)0;
     (void)oi__quat_unit(s->attitude_q, fs.q);
     fs.cubature = oi__plate_cubature(m) && out->e_earth > (oi_real)0;
-    if (fs.cubature) {
-        oi_real s_hat[3], c[3], q;
-        const oi_real d_sun = oi__norm_bounded(s->sun_km);
-        oi__local_frame(s->target_km, s->sun_km, fs.r_hat, s_hat, fs.x, fs.y);
-        oi__cross(s_hat, fs.r_hat, c);
-        fs.sin_theta = oi__norm_bounded(c);
-        fs.cos_theta = oi__dot(s_hat, fs.r_hat);
-        q = m->au_km / d_sun;
-        fs.e0_earth = s->earth_albedo * m->tsi_w_m2 * q * q;
-    }
+    if (fs.cubature) earth_frame(s, m, &fs);
     if (n > (unsigned)OI_FACETS_MAX) n = (unsigned)OI_FACETS_MAX;
     for (i = 0; i < n; i++) {
         const oi_facet *f = &shape->facets[i];
         const oi_real rho_d = shape->diffuse_from_scene ? s->target_albedo : f->albedo_diffuse;
-        oi_real body[3], nrm[3];
-        (void)oi__unit(f->normal, body);
-        oi__quat_rotate(fs.q, body, nrm);
+        oi_real nrm[3];
+        facet_normal(fs.q, f, nrm);
         for (side = 0; side <= (f->two_sided ? 1 : 0); side++) {
-            oi_real geom, co, e_face, ds = 0, ss = 0, de = 0, se = 0, dm = 0, sm = 0;
+            oi_real geom, co, e_face, de = 0, se = 0;
             if (side) {
                 nrm[0] = -nrm[0];
                 nrm[1] = -nrm[1];
@@ -117,18 +154,13 @@ void oi__shape_flux(const oi_scene *s, const oi_model *m, const oi_real obs_hat[
             co = oi__dot(nrm, obs_hat);
             if (!(co > (oi_real)0)) continue;
             geom = f->area_m2 / d2 * co; /* area / d2 < 1: 1 / d2 alone may overflow */
-            point_source(out->e_sun, out->dir_sun, nrm, obs_hat, rho_d, f, &ds, &ss);
-            point_source(out->e_moon, out->dir_moon, nrm, obs_hat, rho_d, f, &dm, &sm);
             e_face = earth_irradiance(&fs, s, m, out, nrm);
             if (e_face > (oi_real)0) {
                 de = e_face * rho_d / OI_PI_R;
                 if (f->albedo_specular > (oi_real)0)
                     se = f->albedo_specular * earth_specular(&fs, m, out, nrm, obs_hat, f);
             }
-            out->flux_sun += geom * (ds + ss);
-            out->flux_earth += geom * (de + se);
-            out->flux_moon += geom * (dm + sm);
-            out->flux_specular += geom * (ss + se + sm);
+            add_face(nrm, obs_hat, rho_d, f, geom, de, se, out);
         }
     }
 }

@@ -139,14 +139,20 @@ static oi_real ring(const oi_real k[5], oi_real w1, oi_real beta, oi_real w2, co
     return lr != NULL ? arc_specular(k, lo, hi, lr) : arc_integral(k, lo, hi);
 }
 
-/* The two points where the terminator (the great circle of pole s) crosses
- * the facet circle (pole nrm, cosine c_n): their polar angles from the
- * zenith (the sub-target point) added as break points. */
-static int add_crossings(oi_real bp[N_BREAK], int n, const oi_real s[3], const oi_real nrm[3],
-                         oi_real c_n, oi_real a_max)
+/* The two points where the terminator (the great circle of pole s, the
+ * Sun's direction (sin theta, 0, cos theta)) crosses the facet circle (pole
+ * nrm, cosine c_n): their polar angles from the zenith (the sub-target
+ * point) added as break points (its own frame). */
+static OI_NOINLINE int add_crossings(oi_real bp[N_BREAK], int n, oi_real cos_theta,
+                                     oi_real sin_theta, const oi_real nrm[3], oi_real c_n,
+                                     oi_real a_max)
 {
-    oi_real k = oi__dot(s, nrm), det, al, be, p0[3], u[3], rest, z;
+    oi_real s[3], k, det, al, be, p0[3], u[3], rest, z;
     int i;
+    s[0] = sin_theta;
+    s[1] = (oi_real)0;
+    s[2] = cos_theta;
+    k = oi__dot(s, nrm);
     det = ((oi_real)1 - k) * ((oi_real)1 + k);
     if (!(det > OI_R(1e-12))) return n;
     al = -c_n * k / det;
@@ -161,6 +167,23 @@ static int add_crossings(oi_real bp[N_BREAK], int n, const oi_real s[3], const o
     n = oi__cap_break_add(bp, N_BREAK, n, OI_ACOS(oi__clamp(z, OI_R(-1.0), OI_R(1.0))), a_max);
     z = p0[2] - rest * u[2];
     return oi__cap_break_add(bp, N_BREAK, n, OI_ACOS(oi__clamp(z, OI_R(-1.0), OI_R(1.0))), a_max);
+}
+
+/* cap_cubature's first break points (Note 2) in bp, their count returned:
+ * the start (0, the horizon, the terminator's tangency) and the facet
+ * circle's tangencies; *a_max the cap's edge. Its own frame, beside the
+ * rings' integration. */
+static OI_NOINLINE int cap_breaks(oi_real cos_theta, oi_real sin_theta, oi_real hp, oi_real rp,
+                                  const oi_real nrm[3], oi_real nh, oi_real c_n,
+                                  oi_real bp[N_BREAK], oi_real *a_max)
+{
+    int n = oi__cap_breaks_start(bp, N_BREAK, hp, rp, cos_theta, sin_theta, a_max);
+    if (c_n > OI_R(-1.0)) {
+        const oi_real gam = OI_ATAN2(nh, nrm[2]), rho = OI_ACOS(c_n);
+        n = oi__cap_break_add(bp, N_BREAK, n, OI_FABS(gam - rho), *a_max);
+        n = oi__cap_break_add(bp, N_BREAK, n, gam + rho, *a_max);
+    }
+    return n;
 }
 
 /*
@@ -189,7 +212,7 @@ static int add_crossings(oi_real bp[N_BREAK], int n, const oi_real s[3], const o
 static OI_NOINLINE oi_real cap_cubature(oi_real cos_theta, oi_real sin_theta, oi_real h_km,
                                         oi_real R, const oi_real nrm[3], lobe_ring *lr)
 {
-    oi_real bp[N_BREAK], s[3], r, rp, hp, nh, c_n, a_max;
+    oi_real bp[N_BREAK], r, rp, hp, nh, c_n, a_max;
     oi_real beta = (oi_real)0, total = (oi_real)0;
     int n, p, q;
 
@@ -201,17 +224,9 @@ static OI_NOINLINE oi_real cap_cubature(oi_real cos_theta, oi_real sin_theta, oi
     nh = OI_SQRT(nrm[0] * nrm[0] + nrm[1] * nrm[1]);
     c_n = nrm[2] / rp;
     if (!(c_n < (oi_real)1)) return (oi_real)0; /* the whole Earth behind the face */
-    n = oi__cap_breaks_start(bp, N_BREAK, hp, rp, cos_theta, sin_theta, &a_max);
     if (nh > (oi_real)0) beta = OI_ATAN2(nrm[1], nrm[0]);
-    if (c_n > OI_R(-1.0)) {
-        const oi_real gam = OI_ATAN2(nh, nrm[2]), rho = OI_ACOS(c_n);
-        n = oi__cap_break_add(bp, N_BREAK, n, OI_FABS(gam - rho), a_max);
-        n = oi__cap_break_add(bp, N_BREAK, n, gam + rho, a_max);
-        s[0] = sin_theta;
-        s[1] = (oi_real)0;
-        s[2] = cos_theta;
-        n = add_crossings(bp, n, s, nrm, c_n, a_max);
-    }
+    n = cap_breaks(cos_theta, sin_theta, hp, rp, nrm, nh, c_n, bp, &a_max);
+    if (c_n > OI_R(-1.0)) n = add_crossings(bp, n, cos_theta, sin_theta, nrm, c_n, a_max);
     n = oi__cap_breaks_altitude(bp, N_BREAK, n, N_GEO, hp, rp, a_max);
 
     for (p = 0; p + 1 < n; p++) {
@@ -346,34 +361,60 @@ oi_real oi__plate_earth_specular(oi_real cos_theta, oi_real sin_theta, oi_real h
     return cap_cubature(cos_theta, sin_theta, h_km, R, nrm, &lr);
 }
 
+/* What oi_earthshine_plate needs of its model and inputs once they are
+ * checked: the Sun's angle (cosine, sine), the altitude, the unit normal,
+ * the Earth's radius, phi and psi, and the irradiance from the mean
+ * direction where the cubature does not serve (cubature 0). */
+typedef struct plate_in {
+    oi_real cs, sn, h_km, nrm[3], radius_km, phi, psi, mean;
+    int cubature;
+} plate_in;
+
+/* The irradiance from the mean direction, (sin psi, 0, -cos psi) in the
+ * local frame (its own frame: not on the stack during oi__earthshine). */
+static OI_NOINLINE void plate_mean(plate_in *p)
+{
+    oi_real c, s, dot;
+    OI_SINCOS(p->psi, &s, &c);
+    dot = p->nrm[0] * s - p->nrm[2] * c;
+    p->mean = dot > (oi_real)0 ? p->phi * dot : (oi_real)0;
+}
+
+/* oi_earthshine_plate's checks and oi__earthshine, in a frame of its own:
+ * the resolved model is not on the stack while the cubature runs (make
+ * stack). */
+static OI_NOINLINE int plate_setup(oi_real theta, oi_real h_km, const oi_real normal[3],
+                                   const oi_model *model, plate_in *p)
+{
+    oi_model m;
+    int st = oi__model_resolve(model, &m);
+    if (st < 0) return st;
+    if (!oi__finite3(normal)) return OI_ERR_NONFINITE;
+    if (!OI_ISFINITE(theta) || !OI_ISFINITE(h_km)) return OI_ERR_NONFINITE;
+    p->h_km = h_km;
+    theta = oi__clamp(theta, (oi_real)0, OI_PI_R);
+    OI_SINCOS(theta, &p->sn, &p->cs);
+    st = oi__earthshine(theta, p->cs, p->sn, p->h_km, &m, &p->phi, &p->psi);
+    if (st < 0) return st;
+    if (oi__unit(normal, p->nrm) == (oi_real)0) return OI_ERR_ZERO_VECTOR;
+    p->radius_km = m.earth_radius_km;
+    p->cubature = oi__plate_cubature(&m);
+    if (!p->cubature) plate_mean(p);
+    return st;
+}
+
 /* oi_earthshine_plate: contract in include/orbillum.h. */
 int oi_earthshine_plate(oi_real theta, oi_real h_km, const oi_real normal[3],
                         const oi_model *model, oi_real *irradiance)
 {
-    oi_model m;
-    oi_real nrm[3], phi, psi, cs, sn;
+    plate_in p;
     int st;
 
     if (irradiance != NULL) *irradiance = (oi_real)0;
     if (irradiance == NULL || normal == NULL) return OI_ERR_NULL;
-    st = oi__model_resolve(model, &m);
+    st = plate_setup(theta, h_km, normal, model, &p);
     if (st < 0) return st;
-    if (!oi__finite3(normal)) return OI_ERR_NONFINITE;
-    if (!OI_ISFINITE(theta) || !OI_ISFINITE(h_km)) return OI_ERR_NONFINITE;
-    theta = oi__clamp(theta, (oi_real)0, OI_PI_R);
-    OI_SINCOS(theta, &sn, &cs);
-    st = oi__earthshine(theta, cs, sn, h_km, &m, &phi, &psi);
-    if (st < 0) return st;
-    if (oi__unit(normal, nrm) == (oi_real)0) return OI_ERR_ZERO_VECTOR;
-    if (oi__plate_cubature(&m)) {
-        *irradiance = oi__plate_earth(cs, sn, h_km, m.earth_radius_km, nrm);
-    } else {
-        /* the mean direction: (sin psi, 0, -cos psi) in the local frame */
-        oi_real c, s, dot;
-        OI_SINCOS(psi, &s, &c);
-        dot = nrm[0] * s - nrm[2] * c;
-        *irradiance = dot > (oi_real)0 ? phi * dot : (oi_real)0;
-    }
+    *irradiance = p.cubature ? oi__plate_earth(p.cs, p.sn, p.h_km, p.radius_km, p.nrm) : p.mean;
     return st;
 }
 

@@ -29,8 +29,9 @@ static int moon_given(const oi_scene *s)
 }
 
 /* Validation of everything in the scene that does not need geometry. Each
- * position's norm is formed once (scaled: any finite input). */
-static int check_scene(const oi_scene *s, const oi_model *m)
+ * position's norm is formed once (scaled: any finite input). Its own frame:
+ * its registers are not saved under the terms' calls (make stack). */
+static OI_NOINLINE int check_scene(const oi_scene *s, const oi_model *m)
 {
     int st;
     const int moon = moon_given(s), obs = s->has_observer != 0;
@@ -175,8 +176,8 @@ static OI_NOINLINE int moon_sun_fraction(const oi_scene *s, const oi_model *m,
     return OI_OK;
 }
 
-/* Scalar irradiance of moonlight at the target and its direction, given
- * out->moon_sun_fraction. */
+/* Scalar irradiance of moonlight at the target before the Earth's shadow
+ * and hiding (moon_visible_term), and its direction. */
 static OI_NOINLINE int moon_term(const oi_scene *s, const oi_model *m, oi_illum *out)
 {
     oi_real u_sun[3], to_target[3], d_sun, d_target, alpha, ratio, e_moon;
@@ -202,11 +203,53 @@ static OI_NOINLINE int moon_term(const oi_scene *s, const oi_model *m, oi_illum 
         e_moon = solar_irradiance(m, d_sun) * MOON_FULL_OVER_SUN * ratio * ratio *
                  oi_moon_phase_law(alpha);
     }
-    /* the part of the Moon's disc the Earth's solid body hides from the
-     * target (the Earth's shadow on the Moon is in moon_sun_fraction) */
-    out->moon_disc_visible = oi__moon_disc_visible(s->target_km, dir, d_target, m);
-    out->e_moon = e_moon * out->moon_sun_fraction * out->moon_disc_visible;
+    out->e_moon = e_moon; /* times the fractions in moon_visible_term */
     return OI_OK;
+}
+
+/* 1 when the Moon's disc seen from the target is certainly clear of the
+ * sphere of the Earth and its air (radius R + OI_MOON_AIR_TOP_KM), where
+ * oi__moon_disc_visible is exactly 1 (its apparent radii, angle and tests
+ * would all say so): the angle sep between the Moon's centre and the
+ * Earth's exceeds the sum of their apparent radii rm + rt (each below
+ * pi/2) by more than 1e-4 rad, tested on the cosines, cos sep < cos(rm +
+ * rt) - 1e-4:
+ *   a.b + Rm Rt < sqrt(a^2 - Rm^2) sqrt(b^2 - Rt^2) - 1e-4 |a| |b|
+ * (a, b the vectors to the Moon's centre and the Earth's; one dot product
+ * and four square roots instead of four arctangents). The margin is far
+ * beyond the rounding of either side in both precisions. Not decided for
+ * the ellipsoid (its silhouette's margin is its own). */
+static int moon_certainly_clear(const oi_scene *s, const oi_model *m)
+{
+    oi_real a[3], b[3], a2, b2;
+    const oi_real rm = m->moon_radius_km, rt = m->earth_radius_km + OI_MOON_AIR_TOP_KM;
+    if (m->earth_shape != OI_EARTH_SPHERE) return 0;
+    oi__sub(s->moon_km, s->target_km, a);
+    b[0] = -s->target_km[0];
+    b[1] = -s->target_km[1];
+    b[2] = -s->target_km[2];
+    a2 = oi__dot(a, a);
+    b2 = oi__dot(b, b);
+    if (!(a2 > rm * rm) || !(b2 > rt * rt)) return 0;
+    return oi__dot(a, b) + rm * rt <
+           OI_SQRT(a2 - rm * rm) * OI_SQRT(b2 - rt * rt) - OI_R(1e-4) * OI_SQRT(a2) * OI_SQRT(b2);
+}
+
+/* The part of the Moon's disc the Earth's solid body hides from the target
+ * (the Earth's shadow on the Moon is in moon_sun_fraction), and e_moon with
+ * both fractions: after moon_term, in a frame of its own (the occultation's
+ * chain does not carry moon_term's). */
+static OI_NOINLINE void moon_visible_term(const oi_scene *s, const oi_model *m, oi_illum *out)
+{
+    oi_real to_target[3];
+    if (moon_certainly_clear(s, m)) {
+        out->moon_disc_visible = (oi_real)1;
+    } else {
+        oi__sub(s->target_km, s->moon_km, to_target);
+        out->moon_disc_visible = oi__moon_disc_visible(s->target_km, out->dir_moon,
+                                                       oi__norm(to_target), m);
+    }
+    out->e_moon = out->e_moon * out->moon_sun_fraction * out->moon_disc_visible;
 }
 
 /* The Moon's shadow on the target: the shadow's fractions with the Moon as a
@@ -249,48 +292,73 @@ static oi_real reflected_flux(oi_real e, const oi_real dir[3], const oi_real obs
            oi__lambert_phase_cs(*phase, cos_xi, sin_xi);
 }
 
+/* The unit vector from the target to the Sun. */
+static OI_NOINLINE void sun_direction(const oi_scene *scene, oi_real dir[3])
+{
+    oi__sub(scene->sun_km, scene->target_km, dir);
+    (void)oi__unit_bounded(dir, dir);
+}
+
+/* e_sun from the shadow's fraction and |sun - target| formed as in
+ * sun_direction; dir_sun zeroed when the Sun's term is off. */
+static OI_NOINLINE void sun_irradiance(const oi_scene *scene, const oi_model *m, oi_illum *out)
+{
+    oi_real to_sun[3];
+    if (!(scene->terms & OI_TERM_SUN)) {
+        memset(out->dir_sun, 0, sizeof out->dir_sun);
+        return;
+    }
+    oi__sub(scene->sun_km, scene->target_km, to_sun);
+    out->e_sun = solar_irradiance(m, oi__norm_bounded(to_sun)) * out->shadow.fraction_atm;
+}
+
 /* The Sun's term and the shadow: e_sun, dir_sun, shadow (its own frame: the
- * shadow call's chain is the deepest of oi_illuminate). */
+ * shadow call's chain is the deepest of oi_illuminate). The direction is
+ * formed in dir_sun itself and the distance again after the shadow, so that
+ * nothing of this frame but pointers is live during that call. */
 static OI_NOINLINE int sun_term(const oi_scene *scene, const oi_model *m, oi_illum *out)
 {
-    oi_real to_sun[3], sun_distance;
     int st;
     /* the Sun's direction, replaced by the refracted light's mean direction
      * where the atmosphere bends sunlight into the shadow */
-    oi__sub(scene->sun_km, scene->target_km, to_sun);
-    sun_distance = oi__unit_bounded(to_sun, to_sun);
-    st = oi__sun_shadow(scene->sun_km, scene->target_km, m, &out->shadow, to_sun);
-    if (st < 0) return st;
-    if (scene->terms & OI_TERM_SUN) {
-        out->e_sun = solar_irradiance(m, sun_distance) * out->shadow.fraction_atm;
-        memcpy(out->dir_sun, to_sun, sizeof to_sun);
-    }
+    sun_direction(scene, out->dir_sun);
+    st = oi__sun_shadow(scene->sun_km, scene->target_km, m, &out->shadow, out->dir_sun);
+    if (st >= 0) sun_irradiance(scene, m, out);
     return st;
 }
 
 #ifndef OI_NO_ALBEDO_MODELS
+/* The albedo job's geometry and field (its own frame). */
+static OI_NOINLINE void albedo_job_init(const oi_scene *scene, const oi_model *m,
+                                        oi__albedo_job *job)
+{
+    const oi_real r_target = oi__unit_bounded(scene->target_km, job->r_hat);
+    (void)oi__unit_bounded(scene->sun_km, job->s_hat);
+    job->x = m->earth_radius_km / r_target;
+    oi__albedo_field_init(m, scene, &job->f);
+    job->has_obs = 0;
+    if (scene->has_observer) {
+        oi__sub(scene->observer_km, scene->target_km, job->obs_hat);
+        job->has_obs = oi__unit(job->obs_hat, job->obs_hat) > (oi_real)0;
+    }
+}
+
 /* The albedo field's mean (earth_albedo_eff, then e_earth with it) and its
  * change of dir_earth and of the sphere's shape (*shape_add),
  * src/earthshine_albedo.c. Called after earth_term, in a frame of its own
- * (make stack: the cubature's chain is the deepest of oi_illuminate). */
+ * (make stack: the cubature's chain is the deepest of oi_illuminate) that
+ * holds the job, the only copy of its inputs and sums under the integrators. */
 static OI_NOINLINE int albedo_field_term(const oi_scene *scene, const oi_model *m,
                                          oi_illum *out, oi_real *shape_add)
 {
-    oi__albedo_field f;
-    oi_real r_hat[3], s_hat[3], obs_hat[3], d_sun, r_target;
-    const oi_real *obs = NULL;
+    oi__albedo_job job;
     int st;
-    d_sun = oi__unit_bounded(scene->sun_km, s_hat);
-    r_target = oi__unit_bounded(scene->target_km, r_hat);
-    oi__albedo_field_init(m, scene, &f);
-    if (scene->has_observer) {
-        oi__sub(scene->observer_km, scene->target_km, obs_hat);
-        if (oi__unit(obs_hat, obs_hat) > (oi_real)0) obs = obs_hat;
-    }
-    st = oi__earthshine_albedo(&f, r_hat, s_hat, m->earth_radius_km / r_target, obs,
-                               &out->earth_albedo_eff, out->dir_earth, shape_add);
+    albedo_job_init(scene, m, &job);
+    st = oi__albedo_integrate(&job);
     if (st < 0) return st;
-    out->e_earth = out->earth_albedo_eff * solar_irradiance(m, d_sun) * out->earth_phi;
+    oi__albedo_mean(&job, &out->earth_albedo_eff, out->dir_earth, shape_add);
+    out->e_earth = out->earth_albedo_eff * solar_irradiance(m, oi__norm_bounded(scene->sun_km)) *
+                   out->earth_phi;
     return OI_OK;
 }
 #endif
@@ -348,11 +416,20 @@ static OI_NOINLINE int sky_term(const oi_scene *scene, const oi_model *m, oi_ill
 }
 #endif
 
+/* The unit vector from the target to the observer; returns the range (km). */
+static oi_real observer_direction(const oi_scene *scene, oi_real obs_hat[3])
+{
+    oi__sub(scene->observer_km, scene->target_km, obs_hat);
+    return oi__unit(obs_hat, obs_hat);
+}
+
+/* The target's radius over its range from the observer (both in metres). */
+static oi_real radius_over_range(const oi_scene *scene, const oi_illum *out)
+{
+    return scene->target_radius_m / (out->range_km * OI_R(1000.0));
+}
+
 #if !defined(OI_NO_EARTH_ANGULAR) && !defined(OI_NO_EARTH_TABLE)
-/* The earthshine a Lambertian sphere sends towards obs_hat from its angular
- * distribution (the cubature, or the table's moments with
- * OI_EARTH_REFLECT_TABLE: src/earthshine_angular.c); 0 below 100 km (then
- * the caller keeps the mean direction's flux). */
 /* The observer's direction in the target's local frame (o) and the Sun's
  * angle theta from the zenith (cs: cosine, sine): in a frame of its own, so
  * that the frame's vectors are not on the stack while the cubature runs. */
@@ -369,34 +446,40 @@ static OI_NOINLINE void sphere_local(const oi_scene *scene, const oi_real obs_ha
     o[2] = oi__dot(obs_hat, r_hat);
 }
 
-static OI_NOINLINE int earth_flux_moments(const oi_scene *scene, const oi_model *m,
-                                          const oi_earth_angular_table *t,
-                                          const oi_real obs_hat[3], oi_real ratio,
-                                          oi_real shape_add, oi_illum *out)
+/* The earthshine a Lambertian sphere sends towards the observer from its
+ * angular distribution (the cubature, or the table's moments with
+ * OI_EARTH_REFLECT_TABLE: src/earthshine_angular.c), in place of
+ * observer_term's flux from the mean direction where the table serves (not
+ * below 100 km, nor for a shape, whose facets replace it; phase_earth stays
+ * the mean direction's). Called from scene_terms after observer_term, in a
+ * frame of its own. */
+static OI_NOINLINE void earth_flux_moments(const oi_scene *scene, const oi_model *m,
+                                           oi_real shape_add, oi_illum *out)
 {
-    oi_real o[3], cs[2], shape;
+    oi_real obs_hat[3], o[3], cs[2], shape, ratio;
+    if (oi__earth_angular_of(m) == NULL || !(out->e_earth > (oi_real)0) || scene->shape != NULL)
+        return;
+    (void)observer_direction(scene, obs_hat);
     sphere_local(scene, obs_hat, o, cs);
-    (void)t;
     if (!oi__earth_sphere_shape(m, out->earth_theta, cs[0], cs[1], out->earth_h_km,
                                 m->earth_radius_km, o, out->earth_phi, &shape))
-        return 0;
+        return;
     /* the albedo field's change (0 when uniform), the sum kept non-negative */
     shape += shape_add;
     if (shape < (oi_real)0) shape = (oi_real)0;
+    ratio = radius_over_range(scene, out);
     out->flux_earth = out->e_earth * scene->target_albedo * ratio * ratio * shape;
-    return 1;
 }
 #endif
 
-/* What the observer receives: range, phase angles, fluxes, magnitude. */
-static OI_NOINLINE int observer_term(const oi_scene *scene, const oi_model *m,
-                                     oi_real shape_add, oi_illum *out)
+/* What the observer receives from the sphere: range, phase angles, fluxes
+ * from each source's direction. */
+static OI_NOINLINE int observer_term(const oi_scene *scene, oi_illum *out)
 {
     oi_real obs_hat[3], ratio;
-    oi__sub(scene->observer_km, scene->target_km, obs_hat);
-    out->range_km = oi__unit(obs_hat, obs_hat);
+    out->range_km = observer_direction(scene, obs_hat);
     /* radius and range in the same unit */
-    ratio = scene->target_radius_m / (out->range_km * OI_R(1000.0));
+    ratio = radius_over_range(scene, out);
     if (!(ratio < (oi_real)1)) return OI_ERR_OBSERVER_AT_TARGET;
 #ifndef OI_NO_FACETS
     /* a shape's facets send area / range^2: the observer farther than the
@@ -414,17 +497,6 @@ static OI_NOINLINE int observer_term(const oi_scene *scene, const oi_model *m,
                                    scene->target_albedo, &out->phase_sun);
     out->flux_earth = reflected_flux(out->e_earth, out->dir_earth, obs_hat, ratio,
                                      scene->target_albedo, &out->phase_earth);
-#if !defined(OI_NO_EARTH_ANGULAR) && !defined(OI_NO_EARTH_TABLE)
-    {
-        /* the angular distribution where the table serves (phase_earth stays
-         * the mean direction's); not for a shape, whose facets replace it */
-        const oi_earth_angular_table *t = oi__earth_angular_of(m);
-        if (t != NULL && out->e_earth > (oi_real)0 && scene->shape == NULL)
-            (void)earth_flux_moments(scene, m, t, obs_hat, ratio, shape_add, out);
-    }
-#else
-    (void)shape_add;
-#endif
     out->flux_moon = reflected_flux(out->e_moon, out->dir_moon, obs_hat, ratio,
                                     scene->target_albedo, &out->phase_moon);
 #ifndef OI_NO_SKYLIGHT
@@ -434,18 +506,9 @@ static OI_NOINLINE int observer_term(const oi_scene *scene, const oi_model *m,
         out->flux_sky = reflected_flux(out->e_sky, out->dir_sky, obs_hat, ratio,
                                        scene->target_albedo, &out->phase_sky);
 #endif
-#ifndef OI_NO_FACETS
-    if (scene->shape != NULL) {
-        /* the facets replace the sphere (the phase angles stay); their
-         * scattered sunlight is not modelled */
-        out->flux_sun = out->flux_earth = out->flux_moon = out->flux_sky = (oi_real)0;
-        oi__shape_flux(scene, m, obs_hat, out);
-    }
-#endif
-    out->flux_obs = out->flux_sun + out->flux_earth + out->flux_moon + out->flux_sky;
-    out->mag_v = oi__magnitude_v(out->flux_obs, m->tsi_w_m2);
     return OI_OK;
 }
+
 
 /* The scene's terms in their order, once for both callers: oi_illuminate's
  * (oi__illuminate_resolved, every output) and the batch's under an outputs
@@ -499,11 +562,23 @@ static int scene_terms(const oi_scene *scene, const oi_model *m, unsigned output
         if (st < 0) goto fail;
         st = moon_term(scene, m, out);
         if (st < 0) goto fail;
+        moon_visible_term(scene, m, out);
     }
 #endif
     if (scene->has_observer && (outputs & OI_BATCH_OBSERVER)) {
-        st = observer_term(scene, m, shape_add, out);
+        st = observer_term(scene, out);
         if (st < 0) goto fail;
+#if !defined(OI_NO_EARTH_ANGULAR) && !defined(OI_NO_EARTH_TABLE)
+        earth_flux_moments(scene, m, shape_add, out);
+#else
+        (void)shape_add;
+#endif
+#ifndef OI_NO_FACETS
+        /* a shape's facets replace the sphere's fluxes (the phase angles stay) */
+        if (scene->shape != NULL) oi__shape_flux(scene, m, out);
+#endif
+        out->flux_obs = out->flux_sun + out->flux_earth + out->flux_moon + out->flux_sky;
+        out->mag_v = oi__magnitude_v(out->flux_obs, m->tsi_w_m2);
     }
     return warn;
 

@@ -109,10 +109,29 @@ typedef struct {
     int nj;        /* series terms beyond the first */
 } ld_geom;
 
+#define LD_NODES (2 * LD_HALF)
+
+/* The nodes ld_node_values evaluates at once: a panel's all where the
+ * processor has vectors of doubles (a fixed count, so that its loops
+ * vectorise whole), else one at a time (OI_DOUBLE_VECTORS). */
+#if OI_DOUBLE_VECTORS
+#define LD_BLOCK LD_NODES
+#else
+#define LD_BLOCK 1
+#endif
+
+/* Term j of P(m) / m^2 before its factor (k m^2)^j, c = ld_coef[j];
+ * inlined into each clone of ld_node_values. */
+static OI_ALWAYS_INLINE oi_real ld_term(const oi_real c[6], oi_real m)
+{
+    return ((((c[5] * m + c[4]) * m + c[3]) * m + c[2]) * m + c[1]) * m + c[0];
+}
+
 /*
- * The integrand at theta = pi/2 - phi, given sph = sin phi = cos theta and
- * cph = cos phi = sin theta (so that the end theta = pi/2, where the arc
- * meets the Sun's limb, is resolved without cancellation):
+ * The integrand at theta = pi/2 - phi of LD_BLOCK nodes, given
+ * sph[n] = sin phi = cos theta and cph[n] = cos phi = sin theta (so that the
+ * end theta = pi/2, where the arc meets the Sun's limb, is resolved without
+ * cancellation):
  *   [P(1) - P(mu)] or P(mu), times sin^2 r_s / sin^2 rho, times
  *   n / sin^2 r_s (n = dt/dpsi sin^2 rho), times dpsi/dtheta.
  * sin^2(psi/2) = sigma^2 sin^2 theta; the haversine formula gives
@@ -120,17 +139,46 @@ typedef struct {
  * hav(r_s) - hav(rho) = q cos^2 theta + e without cancellation, whence
  * mu^2 = 4 (hav(r_s) - hav(rho)) (1 - hav(r_s) - hav(rho)) / sin^2 r_s and
  * 1 - mu^2 = sin^2 rho / sin^2 r_s = 4 hav(rho) (1 - hav(rho)) / sin^2 r_s.
+ * Each node's value goes through the same operations in the same order as
+ * it would alone (P(mu) as ld_poly forms it); fixed-count loops over the
+ * nodes with selects, no branch and no call, so that they vectorise (gcc
+ * -O2 -fopt-info-vec): a node whose den is not positive is computed too and
+ * its value selected away (0). val is restrict: its stores alias neither
+ * *g nor sph, so no run-time alias check (which -O2 does not vectorise with).
  */
-static oi_real ld_node_value(const ld_geom *g, oi_real sph, oi_real cph)
+static OI_NOINLINE OI_VECTORISE_COMPARES OI_AVX2_CLONES void
+ld_node_values(const ld_geom *g, const oi_real sph[LD_BLOCK], const oi_real cph[LD_BLOCK],
+               oi_real *restrict val)
 {
-    oi_real st2 = cph * cph, ct2 = sph * sph;
-    oi_real hr = g->hb + g->q * st2;
-    oi_real m2 = oi__clamp(g->c4 * (g->q * ct2 + g->e) * (g->hrs1 - hr), (oi_real)0, (oi_real)1);
-    oi_real den = g->c4 * hr * ((oi_real)1 - hr) * OI_SQRT(ct2 + g->oms * st2);
-    oi_real p = ld_poly(OI_SQRT(m2), m2, g->k, g->nj);
-    if (g->p1 > (oi_real)0) p = g->p1 - p;
-    if (!(den > (oi_real)0)) return (oi_real)0;
-    return p * (g->n0 - g->n1 * st2) * sph / den;
+    const oi_real hb = g->hb, hrs1 = g->hrs1, c4 = g->c4, k = g->k, q = g->q, e = g->e;
+    const oi_real oms = g->oms, n0 = g->n0, n1 = g->n1, p1 = g->p1;
+    const int nj = g->nj;
+    oi_real st2[LD_BLOCK], m[LD_BLOCK], m2[LD_BLOCK], x[LD_BLOCK], acc[LD_BLOCK],
+        den[LD_BLOCK];
+    int j, n;
+    for (n = 0; n < LD_BLOCK; ++n) {
+        oi_real ct2 = sph[n] * sph[n], s2 = cph[n] * cph[n];
+        oi_real hr = hb + q * s2;
+        oi_real u = c4 * (q * ct2 + e) * (hrs1 - hr);
+        den[n] = c4 * hr * ((oi_real)1 - hr) * OI_SQRT(ct2 + oms * s2);
+        /* oi__clamp(u, 0, 1), NaN to 0 */
+        u = u > (oi_real)0 ? (u < (oi_real)1 ? u : (oi_real)1) : (oi_real)0;
+        st2[n] = s2;
+        m2[n] = u;
+        m[n] = OI_SQRT(u);
+        x[n] = k * u;
+        /* ld_poly's first step, acc = 0 * x + term nj, as it rounds */
+        acc[n] = (oi_real)0 * x[n] + ld_term(ld_coef[nj], m[n]);
+    }
+    for (j = nj - 1; j >= 0; --j) {
+        const oi_real *c = ld_coef[j];
+        for (n = 0; n < LD_BLOCK; ++n) acc[n] = acc[n] * x[n] + ld_term(c, m[n]);
+    }
+    for (n = 0; n < LD_BLOCK; ++n) {
+        oi_real pm = acc[n] * m2[n];
+        oi_real v = (p1 > (oi_real)0 ? p1 - pm : pm) * (n0 - n1 * st2[n]) * sph[n] / den[n];
+        val[n] = den[n] > (oi_real)0 ? v : (oi_real)0;
+    }
 }
 
 /* The geometry of the arc (ld_geom) for rs, re, sep, b = sep - re and tri
@@ -230,20 +278,30 @@ oi_real oi__fraction_limb_darkened(oi_real rs, oi_real re, oi_real sep, oi_real 
      * q > lim (at most 40), then [0, q] */
     for (k = 0, t = OI_HALF_PI_R; k <= 40; ++k) {
         oi_real lo = grade && k < 40 && t > lim ? OI_R(0.5) * t : (oi_real)0, h = t - lo;
-        oi_real ps = (oi_real)0;
+        oi_real ps = (oi_real)0, sph[LD_BLOCK], cph[LD_BLOCK], val[LD_BLOCK];
+        /* node 2 i + j (i the rule's node, j its mirror), summed in that
+         * order */
         for (i = 0; i < LD_HALF; ++i) {
             for (j = 0; j < 2; ++j) {
-                oi_real sph, cph;
+                const int n = LD_BLOCK == 1 ? 0 : 2 * i + j;
                 if (grade) {
                     oi_real ph = lo + h * (j ? (oi_real)1 - ld_node[i][0] : ld_node[i][0]);
-                    OI_SINCOS(ph, &sph, &cph);
+                    OI_SINCOS(ph, &sph[n], &cph[n]);
                 } else {
-                    sph = ld_node[i][j ? 3 : 2];
-                    cph = ld_node[i][j ? 2 : 3];
+                    sph[n] = ld_node[i][j ? 3 : 2];
+                    cph[n] = ld_node[i][j ? 2 : 3];
                 }
-                ps += ld_node[i][1] * ld_node_value(&g, sph, cph);
+#if LD_BLOCK == 1
+                ld_node_values(&g, sph, cph, val);
+                ps += ld_node[i][1] * val[0];
+#endif
             }
         }
+#if LD_BLOCK > 1
+        ld_node_values(&g, sph, cph, val);
+        for (i = 0; i < LD_HALF; ++i)
+            for (j = 0; j < 2; ++j) ps += ld_node[i][1] * val[2 * i + j];
+#endif
         sum += ps * h;
         if (!(lo > (oi_real)0)) break;
         t = lo;

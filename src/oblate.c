@@ -231,18 +231,27 @@ static oi_real ld_chord_half(oi_real m0)
 }
 #endif
 
-/* What the occulters cover of the chord at height y (solid angle per unit
- * y); *full: the whole chord's. ld not NULL (the disc of gnomonic radius t
- * limb-darkened): ld[0] the covered flux, ld[1] the whole chord's. */
-static OI_NOINLINE oi_real chord_hidden(const cone *k, int n, oi_real y, oi_real h,
-                                         oi_real *full, oi_real t, oi_real *ld)
+/* What a chord gives the quadrature (the four sums of fraction_from_breaks,
+ * in this order): the solid angle per unit y the occulters hide of it, the
+ * part they leave visible, and (limb-darkened disc of gnomonic radius t)
+ * the same of its flux. */
+#define Q_HID 0
+#define Q_VIS 1
+#define Q_LD_HID 2
+#define Q_LD_VIS 3
+#define N_SUMS 4
+
+/* The chord at height y of half-width h: its four values times w added to
+ * sum (the last two only with want_ld). */
+static void chord_values(const cone *k, int n, oi_real y, oi_real h, oi_real t, int want_ld,
+                         oi_real w, oi_real sum[N_SUMS])
 {
     const oi_real yy = (oi_real)1 + y * y;
     /* zeros only for the analyser, which cannot see that nc == 2 means both
      * covers were written */
     oi_real a[2] = {(oi_real)0, (oi_real)0}, b[2] = {(oi_real)0, (oi_real)0}, hid = (oi_real)0;
+    oi_real full;
     int i, nc = 0;
-    *full = (oi_real)2 * chord_h(h, yy);
     for (i = 0; i < n; ++i)
         if (chord_cover(&k[i], y, h, &a[nc], &b[nc])) ++nc;
     if (nc == 2 && a[1] < b[0] && a[0] < b[1]) {
@@ -251,26 +260,31 @@ static OI_NOINLINE oi_real chord_hidden(const cone *k, int n, oi_real y, oi_real
         b[0] = b[0] > b[1] ? b[0] : b[1];
         nc = 1;
     }
-    for (i = 0; i < nc; ++i) hid += chord_h(b[i], yy) - chord_h(a[i], yy);
 #ifndef OI_NO_LIMB_DARKENING
-    if (ld != NULL) {
+    if (want_ld) {
         const oi_real m0 = h / (t * OI_SQRT(yy));
         const oi_real scale = h / (OI_SQRT(yy + h * h) * yy);
         const oi_real half = ld_chord_half(m0);
-        oi_real hl = (oi_real)0;
+        oi_real hl = (oi_real)0, whole;
         for (i = 0; i < nc; ++i)
             hl += (a[i] == -h && b[i] == h)
                       ? (oi_real)2 * half
                       : ld_chord_end(b[i], h, yy, m0) - ld_chord_end(a[i], h, yy, m0);
-        ld[1] = (oi_real)2 * half * scale;
+        whole = (oi_real)2 * half * scale;
         hl *= scale;
-        ld[0] = hl < ld[1] ? (hl > (oi_real)0 ? hl : (oi_real)0) : ld[1];
+        hl = hl < whole ? (hl > (oi_real)0 ? hl : (oi_real)0) : whole;
+        sum[Q_LD_HID] += w * hl;
+        sum[Q_LD_VIS] += w * (whole - hl);
     }
 #else
     (void)t;
-    (void)ld;
+    (void)want_ld;
 #endif
-    return hid < *full ? hid : *full;
+    full = (oi_real)2 * chord_h(h, yy);
+    for (i = 0; i < nc; ++i) hid += chord_h(b[i], yy) - chord_h(a[i], yy);
+    hid = hid < full ? hid : full;
+    sum[Q_HID] += w * hid;
+    sum[Q_VIS] += w * (full - hid);
 }
 
 /* A circle on the sky in the back disc's frame: the directions
@@ -408,52 +422,6 @@ static const oi_real edge_narrow[N_NARROW + 1] = {
     OI_R(0.25),  OI_R(0.375),      OI_R(0.5),      OI_R(0.625),  OI_R(0.75),
     OI_R(0.875), OI_R(0.9375),     OI_R(0.984375), OI_R(0.99609375), OI_R(1.0)};
 
-/* The integrals over psi in [p0, p1] of the hidden part of the chord (the
- * return value) and of the visible part (added to *vis), times dy/dpsi;
- * ld not NULL: the same of the limb-darkened flux added to ld[0] (hidden)
- * and ld[1] (visible). */
-static OI_NOINLINE oi_real piece(const cone *k, int n, oi_real t, oi_real p0, oi_real p1,
-                                 int narrow, oi_real *vis, oi_real *ld)
-{
-    const oi_real hw = OI_R(0.5) * (p1 - p0);
-    const oi_real *edge = narrow ? edge_narrow : edge_wide;
-    const int panels = narrow ? N_NARROW : N_WIDE;
-    oi_real sum = (oi_real)0, vsum = (oi_real)0, lsum[2] = {(oi_real)0, (oi_real)0};
-    int pn, i, j;
-    for (pn = 0; pn < panels; ++pn) {
-        const oi_real u0 = edge[pn], du = edge[pn + 1] - edge[pn];
-        oi_real part = (oi_real)0, vpart = (oi_real)0, lpart[2] = {(oi_real)0, (oi_real)0};
-        for (i = 0; i < 4; ++i) {
-            for (j = 0; j < 2; ++j) {
-                const oi_real x = j ? (oi_real)1 - gl8[i][0] : gl8[i][0];
-                const oi_real u = u0 + du * x;
-                oi_real su, cu, sp, cp, psi, full, hid, wgt, cl[2];
-                OI_SINCOS(OI_PI_R * u, &su, &cu);
-                psi = p0 + hw * ((oi_real)1 - cu);
-                OI_SINCOS(psi, &sp, &cp);
-                hid = chord_hidden(k, n, t * sp, t * cp, &full, t, ld != NULL ? cl : NULL);
-                wgt = gl8[i][1] * t * cp * su;
-                part += wgt * hid;
-                vpart += wgt * (full - hid);
-                if (ld != NULL) {
-                    lpart[0] += wgt * cl[0];
-                    lpart[1] += wgt * (cl[1] - cl[0]);
-                }
-            }
-        }
-        sum += part * du;
-        vsum += vpart * du;
-        lsum[0] += lpart[0] * du;
-        lsum[1] += lpart[1] * du;
-    }
-    *vis += vsum * hw * OI_PI_R;
-    if (ld != NULL) {
-        ld[0] += lsum[0] * hw * OI_PI_R;
-        ld[1] += lsum[1] * hw * OI_PI_R;
-    }
-    return sum * hw * OI_PI_R;
-}
-
 static void disc_frame(const oi_real s[3], const oi_real toward[3], oi_real f[3][3]);
 
 /* The Earth's cone crossing the Moon's limb (centre m in the frame, radius
@@ -509,11 +477,12 @@ static void disc_frame(const oi_real s[3], const oi_real toward[3], oi_real f[3]
         oi__unit_bounded(n, n) > (oi_real)0) {
         oi__cross(n, s, u);
     } else {
-        const oi_real e[3] = {(oi_real)1, (oi_real)0, (oi_real)0};
-        const oi_real g[3] = {(oi_real)0, (oi_real)1, (oi_real)0};
-        const oi_real h[3] = {(oi_real)0, (oi_real)0, (oi_real)1};
+        /* the axes (static: not copied to the stack) */
+        static const oi_real axis[3][3] = {{(oi_real)1, (oi_real)0, (oi_real)0},
+                                           {(oi_real)0, (oi_real)1, (oi_real)0},
+                                           {(oi_real)0, (oi_real)0, (oi_real)1}};
         const oi_real ax = OI_FABS(s[0]), ay = OI_FABS(s[1]), az = OI_FABS(s[2]);
-        oi__cross(s, (ax <= ay && ax <= az) ? e : (ay <= az ? g : h), u);
+        oi__cross(s, axis[(ax <= ay && ax <= az) ? 0 : (ay <= az ? 1 : 2)], u);
     }
     (void)oi__unit_bounded(u, u);
     for (i = 0; i < 3; ++i) f[1][i] = u[i];
@@ -547,43 +516,75 @@ static OI_NOINLINE int build_cones(const oi_real s[3], oi_real r, const oi_real 
  * them integrated, and the visible fraction formed (see oi__oblate_visible);
  * frac_ld not NULL: the limb-darkened disc's there, the visible flux over
  * the disc's (both from the same pieces). Out of line: the breaks' search
- * is over before this frame is live. */
+ * is over before this frame is live. One frame for the pieces, their panels
+ * and the chords (the sums in arrays, per level): a frame per level would
+ * save the floating-point registers at each (make stack). The panels
+ * (above) in u of each piece, the integrand times dy/dpsi. */
 static OI_NOINLINE oi_real fraction_from_breaks(const cone *k, int n, oi_real r, oi_real t,
                                                 int narrow, const breaks *b, oi_real *frac_ld)
 {
-    oi_real hid = (oi_real)0, vis = (oi_real)0, prev, disc, *brk = b->psi;
-    oi_real ld[2] = {(oi_real)0, (oi_real)0};
+    oi_real tot[N_SUMS], prev, disc, vis, *brk = b->psi;
 #ifdef OI_NO_LIMB_DARKENING
-    oi_real *const want_ld = NULL;
+    const int want_ld = 0;
 #else
-    oi_real *const want_ld = frac_ld != NULL ? ld : NULL;
+    const int want_ld = frac_ld != NULL;
 #endif
-    const int nb = b->n;
-    int i, j;
+    const oi_real *const edge = narrow ? edge_narrow : edge_wide;
+    const int panels = narrow ? N_NARROW : N_WIDE, nb = b->n;
+    int i, j, q;
     for (i = 1; i < nb; ++i) {
         const oi_real v = brk[i];
         for (j = i; j > 0 && brk[j - 1] > v; --j) brk[j] = brk[j - 1];
         brk[j] = v;
     }
+    for (q = 0; q < N_SUMS; ++q) tot[q] = (oi_real)0;
     prev = -OI_HALF_PI_R;
     for (i = 0; i <= nb; ++i) {
         const oi_real next = i < nb ? brk[i] : OI_HALF_PI_R;
-        if (next > prev) hid += piece(k, n, t, prev, next, narrow, &vis, want_ld);
+        const oi_real p0 = prev, hw = OI_R(0.5) * (next - prev);
+        oi_real sum[N_SUMS];
+        int pn;
         prev = next;
+        if (!(next > p0)) continue;
+        for (q = 0; q < N_SUMS; ++q) sum[q] = (oi_real)0;
+        for (pn = 0; pn < panels; ++pn) {
+            const oi_real u0 = edge[pn], du = edge[pn + 1] - edge[pn];
+            oi_real part[N_SUMS];
+            int g;
+            for (q = 0; q < N_SUMS; ++q) part[q] = (oi_real)0;
+            for (g = 0; g < 8; ++g) {
+                const int gi = g >> 1;
+                const oi_real x = (g & 1) ? (oi_real)1 - gl8[gi][0] : gl8[gi][0];
+                const oi_real u = u0 + du * x;
+                oi_real sc[2], su;
+                OI_SINCOS(OI_PI_R * u, &sc[0], &sc[1]);
+                su = sc[0];
+                OI_SINCOS(p0 + hw * ((oi_real)1 - sc[1]), &sc[0], &sc[1]);
+                chord_values(k, n, t * sc[0], t * sc[1], t, want_ld, gl8[gi][1] * t * sc[1] * su,
+                             part);
+            }
+            for (q = 0; q < N_SUMS; ++q) sum[q] += part[q] * du;
+        }
+        for (q = 0; q < N_SUMS; ++q) tot[q] += sum[q] * hw * OI_PI_R;
     }
     /* the smaller of the two parts keeps its relative accuracy (and is
      * exactly 0 when nothing, or everything, is covered) */
     disc = (oi_real)4 * OI_PI_R * oi__sin_half_sq(r);
-    vis = oi__clamp(vis < hid ? vis / disc : (oi_real)1 - hid / disc, (oi_real)0, (oi_real)1);
+    vis = oi__clamp(tot[Q_VIS] < tot[Q_HID] ? tot[Q_VIS] / disc : (oi_real)1 - tot[Q_HID] / disc,
+                    (oi_real)0, (oi_real)1);
+#ifdef OI_NO_LIMB_DARKENING
+    if (frac_ld != NULL) *frac_ld = vis;
+#else
     if (frac_ld != NULL) {
         /* in the same form, over the disc's flux as integrated: exactly 0
          * or 1 with the uniform fraction (the same chords' covers) */
-        const oi_real tot = ld[0] + ld[1];
-        *frac_ld = want_ld == NULL ? vis
-                   : !(tot > (oi_real)0) ? vis
-                   : oi__clamp(ld[1] < ld[0] ? ld[1] / tot : (oi_real)1 - ld[0] / tot,
-                               (oi_real)0, (oi_real)1);
+        const oi_real ld_hid = tot[Q_LD_HID], ld_vis = tot[Q_LD_VIS], all = ld_hid + ld_vis;
+        *frac_ld = !(all > (oi_real)0)
+                       ? vis
+                       : oi__clamp(ld_vis < ld_hid ? ld_vis / all : (oi_real)1 - ld_hid / all,
+                                   (oi_real)0, (oi_real)1);
     }
+#endif
     return vis;
 }
 
@@ -662,16 +663,14 @@ oi_real oi__oblate_visible(const oi_real s[3], oi_real r, const oi_real p[3], oi
  * ulps far away); beyond 90 deg the denominator is negative and atan2 says so. */
 oi_real oi__oblate_radius_towards(const oi_real p[3], oi_real a, const oi_real s[3])
 {
-    oi_real f[3][3], n[3], big_a[3], big_b[3], c[3], pn, q, tb;
+    /* f[0], f[1] become A and B in place, c beside them */
+    oi_real f[3][3], n[3], pn, q, tb;
+    oi_real *const big_a = f[0], *const big_b = f[1], *const c = n;
     int i;
     const oi_real k = OI_SQRT((oi_real)1 + K2M1);
     const oi_real dp = oi__norm_bounded(p);
     for (i = 0; i < 3; ++i) n[i] = -p[i] / dp;
     disc_frame(n, s, f);
-    for (i = 0; i < 3; ++i) {
-        big_a[i] = f[0][i];
-        big_b[i] = f[1][i];
-    }
     big_a[2] *= k;
     big_b[2] *= k;
     pn = dp * oi__norm_bounded(big_a);

@@ -17,6 +17,46 @@
 #define OI_NOINLINE
 #endif
 
+/* GCC if-converts (and so vectorises) a loop's comparisons and selects only
+ * when they may not trap: the attribute says so for one function whose
+ * results do not depend on it (no floating-point exception is read). */
+#if defined(__GNUC__) && !defined(__clang__)
+#define OI_VECTORISE_COMPARES __attribute__((optimize("no-trapping-math")))
+#else
+#define OI_VECTORISE_COMPARES
+#endif
+
+/* GCC and clang: a helper inlined into its caller whatever its size (a
+ * block function's loop vectorises only with no call in it). */
+#if defined(__GNUC__)
+#define OI_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define OI_ALWAYS_INLINE inline
+#endif
+
+/* 1 where the processor has vectors of doubles (x86-64, AArch64): there a
+ * block function evaluates many rows or nodes at once; elsewhere one at a
+ * time, where the block's arrays would only cost stack (a Cortex-M4F's,
+ * make stack). The bits do not depend on it. */
+#if defined(__x86_64__) || defined(__aarch64__)
+#define OI_DOUBLE_VECTORS 1
+#else
+#define OI_DOUBLE_VECTORS 0
+#endif
+
+/* A block function also compiled for AVX2 (4 doubles a vector instead of
+ * SSE2's 2), chosen at load time where the processor has it (GCC's function
+ * multi-versioning, an ifunc: x86-64 Linux with glibc, whose headers define
+ * __GLIBC__); the default clone is the portable code. AVX2 alone does not
+ * enable fma, and -std=c99 does not contract: every lane rounds as scalar
+ * code does. -DOI_NO_TARGET_CLONES leaves it out. */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) && \
+    defined(__GLIBC__) && !defined(OI_NO_TARGET_CLONES)
+#define OI_AVX2_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define OI_AVX2_CLONES
+#endif
+
 static inline oi_real oi__dot(const oi_real a[3], const oi_real b[3])
 {
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
@@ -276,6 +316,12 @@ int oi__moon_shadow(const oi_real sun_km[3], const oi_real moon_km[3],
                     const oi_real point_km[3], const oi_model *m, oi_shadow *sh,
                     oi_real *hidden);
 
+/* The top of the air that dims the Moon's light near the Earth's limb (km
+ * above the Earth's radius; src/atmosphere_moonlight.c): beyond the
+ * apparent radius of that sphere oi__moon_disc_visible is the solid Earth's
+ * fraction. */
+#define OI_MOON_AIR_TOP_KM OI_R(100.0)
+
 /* Fraction of the Moon's disc seen from the point that the Earth does not
  * hide; u_moon the unit vector to the Moon, dm its distance
  * (src/moon_occultation.c). */
@@ -393,6 +439,23 @@ int oi__illuminate_resolved(const oi_scene *scene, const oi_model *m, oi_illum *
 int oi__illuminate_outputs(const oi_scene *scene, const oi_model *m, unsigned outputs,
                            oi_illum *out);
 
+/* The batch calls' array checks (src/batch_arrays.c). OI_ALIGN_OF: the
+ * alignment of a type in C99 (no _Alignof), the offset of a member after a
+ * char. oi__span: a caller's array as its address range [lo, hi), lo == hi
+ * when absent (NULL). oi__span_of: the span of n elements of size bytes at
+ * p, 0 when p is not aligned to align or the size overflows the address
+ * space. oi__check_overlap: OI_OK when no output span overlaps an input
+ * span or another output span, else OI_ERR_INPUT. oi__batch_fail: a batch
+ * error st, every status set to it (when status can be written) and, when
+ * zero_out, every output row (size bytes each) zeroed; returns st. */
+#define OI_ALIGN_OF(type) offsetof(struct { char c; type t; }, t)
+typedef struct {
+    uintptr_t lo, hi;
+} oi__span;
+int oi__span_of(const void *p, long n, size_t size, size_t align, oi__span *s);
+int oi__check_overlap(const oi__span *in, int n_in, const oi__span *out, int n_out);
+int oi__batch_fail(int st, long n, int *status, void *out, size_t size, int zero_out);
+
 /* The batch's certain regions of the Sun seen from a point (src/batch.c):
  * OI__ROW_LIT or OI__ROW_UMBRA (asked only with umbra_too) when the point is
  * certainly there, decided from cosines after every check of
@@ -450,8 +513,10 @@ const oi_earth_angular_table *oi__earth_angular_of(const oi_model *m);
 /* S(o) = F / phi, the shape of a Lambertian sphere's flux under earthshine
  * towards the unit direction o of the local frame (z zenith, x towards the
  * Sun's side), under the resolved model m (the cubature, or the table's
- * moments with OI_EARTH_REFLECT_TABLE) at theta (with its cosine and sine)
- * and h_km above an Earth of radius R, phi the caller's scalar irradiance
+ * moments with OI_EARTH_REFLECT_TABLE) at theta (with its cosine and sine;
+ * theta is OI_ATAN2(sin_theta, cos_theta), bit for bit: the cubature's
+ * break at the terminator takes it) and h_km above an Earth of radius R,
+ * phi the caller's scalar irradiance
  * (the cubature's flux is F = phi S): returns 1 with *shape >= 0, or 0
  * (shape 0) below the table's first row (src/earthshine_angular.c). */
 int oi__earth_sphere_shape(const oi_model *m, oi_real theta, oi_real cos_theta,
@@ -461,10 +526,13 @@ int oi__earth_sphere_shape(const oi_model *m, oi_real theta, oi_real cos_theta,
 
 /* Break points of the cap cubatures' polar angle (src/cap_breaks.c): bp
  * sorted, at most cap entries; start: 0, the horizon *a_max and the
- * terminator's tangency; altitude: up to n_geo multiples of it. */
+ * terminator's tangency; altitude: up to n_geo multiples of it. at: start
+ * given theta = OI_ATAN2(sin_theta, cos_theta), the same bits. */
 int oi__cap_break_add(oi_real *bp, int cap, int n, oi_real x, oi_real a_max);
 int oi__cap_breaks_start(oi_real *bp, int cap, oi_real hp, oi_real rp, oi_real cos_theta,
                          oi_real sin_theta, oi_real *a_max);
+int oi__cap_breaks_at(oi_real *bp, int cap, oi_real hp, oi_real rp, oi_real theta,
+                      oi_real *a_max);
 int oi__cap_breaks_altitude(oi_real *bp, int cap, int n, int n_geo, oi_real hp, oi_real rp,
                             oi_real a_max);
 
@@ -507,8 +575,7 @@ oi_real oi__phong_lobe(const oi_real nrm[3], oi_real cos_in, const oi_real u_in[
                        const oi_real u_out[3], oi_real shininess);
 /* A scene's shape: its check and its fluxes (src/facet.c). */
 int oi__shape_scene_check(const oi_scene *s);
-void oi__shape_flux(const oi_scene *s, const oi_model *m, const oi_real obs_hat[3],
-                    oi_illum *out);
+void oi__shape_flux(const oi_scene *s, const oi_model *m, oi_illum *out);
 oi_real oi__shape_peak(const oi_scene *s);
 #endif
 
@@ -544,24 +611,37 @@ typedef struct oi__albedo_sums {
     int varies;
 } oi__albedo_sums;
 
-/* The sums under a map model, patch by patch of its bilinear field
- * (src/earthshine_albedo_map.c), added to *acc (w and v in the scene's
- * frame); a_ref the albedo da is taken from. OI_OK or OI_ERR_ALBEDO. */
-int oi__earthshine_map_cells(const oi__albedo_field *f, const oi_real r_hat[3],
-                             const oi_real s_hat[3], oi_real x, const oi_real *obs_hat,
-                             oi_real a_ref, oi__albedo_sums *acc);
+/* One earthshine evaluation under a non-uniform albedo field: the field,
+ * the target's unit position r_hat and x = R / r, the Sun's unit direction
+ * s_hat, the unit direction to the observer (has_obs 0: none), the
+ * reference albedo and the sums. Held in one frame by the caller, so that
+ * the integrators' frames are not stacked under copies of them. */
+typedef struct oi__albedo_job {
+    oi__albedo_field f;
+    oi_real r_hat[3], s_hat[3], obs_hat[3];
+    oi_real x, a_ref;
+    int has_obs;
+    oi__albedo_sums acc;
+} oi__albedo_job;
 
-/* Earthshine under a non-uniform albedo field (src/earthshine_albedo.c), at
- * the target of unit position r_hat and x = R / r, the Sun in the unit
- * direction s_hat; obs_hat the unit direction to the observer or NULL.
- * *albedo: the earthshine-weighted mean albedo over the lit visible cap;
- * dir: given the uniform sphere's mean incidence direction, returned with
- * the field's change; *shape_add: the change of the sphere's shape S(o) =
- * F / phi per unit mean albedo (0 without observer). Returns OI_OK or
- * OI_ERR_ALBEDO (outputs then 0, dir untouched). */
-int oi__earthshine_albedo(const oi__albedo_field *f, const oi_real r_hat[3],
-                          const oi_real s_hat[3], oi_real x, const oi_real *obs_hat,
-                          oi_real *albedo, oi_real dir[3], oi_real *shape_add);
+/* Earthshine under a non-uniform albedo field (src/earthshine_albedo.c), in
+ * two steps so that the caller's frame, which holds the job, is the only one
+ * above the integrators. oi__albedo_integrate: job->a_ref (the albedo under
+ * the target) and the sums job->acc over the lit visible cap, for job's f,
+ * r_hat, s_hat, obs_hat (has_obs) and x; OI_OK or OI_ERR_ALBEDO.
+ * oi__albedo_mean, after it: *albedo the earthshine-weighted mean albedo
+ * over the lit visible cap; dir: given the uniform sphere's mean incidence
+ * direction, returned with the field's change; *shape_add: the change of the
+ * sphere's shape S(o) = F / phi per unit mean albedo (0 without observer). */
+int oi__albedo_integrate(oi__albedo_job *job);
+void oi__albedo_mean(const oi__albedo_job *job, oi_real *albedo, oi_real dir[3],
+                     oi_real *shape_add);
+
+/* The sums under a map model, patch by patch of its bilinear field
+ * (src/earthshine_albedo_map.c), added to job->acc (w and v in the scene's
+ * frame) with da from job->a_ref; job's r_hat, s_hat and obs_hat are left
+ * in the Earth-fixed frame. OI_OK or OI_ERR_ALBEDO. */
+int oi__earthshine_map_cells(oi__albedo_job *job);
 #endif
 
 /* oi_magnitude_v (src/magnitude.c) with the model's TSI already resolved. */
@@ -575,6 +655,51 @@ int oi__camera_valid(const oi_camera *c);
  * (src/expose.c); same statuses as oi_expose after its camera check. */
 int oi__expose_valid(const oi_camera *camera, const oi_expose_in *in,
                      const oi_expose_goal *goal, oi_exposure *out);
+
+/* The part of oi_expose's choice that depends on the camera and the goal
+ * only, formed once per batch (src/expose.c): the goal's defaults and status
+ * (a row's statuses come after it), the detection rule, the dark current at
+ * the goal's temperature and its status (after a row's own checks). */
+typedef struct {
+    oi_real goal_fill, snr_min; /* the goal, defaults filled in */
+    oi_real det_k, det_z;       /* the detection rule (src/expose.c detect_rule) */
+    oi_real dark;               /* dark current (e-/s) at the goal's temperature */
+    int goal_st, dark_st;       /* their statuses */
+} oi__expose_plan;
+
+/* What oi__expose_planned computes (bits): the search of the setting (with
+ * the detection margin and OI_FLAG_SATURATED) and OI_FLAG_TOO_FAINT. */
+#define OI__EXPOSE_SEARCH (1u)
+#define OI__EXPOSE_FAINT  (2u)
+
+void oi__expose_plan_make(const oi_camera *camera, const oi_expose_goal *goal,
+                          oi__expose_plan *p);
+/* oi__expose_valid with the plan made (p NULL: from goal, as the single
+ * call); out zeroed, need: OI__EXPOSE_* bits (the fields need leaves out
+ * stay 0 or partial: the batch clears them). */
+int oi__expose_planned(const oi_camera *camera, const oi__expose_plan *p,
+                       const oi_expose_goal *goal, const oi_expose_in *in, unsigned need,
+                       oi_exposure *out);
+
+/* The set-up of oi_expose_scene_batch_outputs (src/expose_scene.c): the
+ * model's constants, the plan, cos(sun_exclusion_rad), the outputs mask. */
+typedef struct {
+    oi__expose_plan plan;
+    oi_real re, au, tsi, rm, moon_albedo; /* the model's (oi_model's units) */
+    oi_real cos_excl;                     /* cos(camera->sun_exclusion_rad) */
+    int shape;                            /* oi_model.earth_shape */
+    unsigned outputs;                     /* OI_EXPOSE_* */
+} oi__expose_scene_batch;
+
+/* The set-up: the model's status, then the camera's (src/expose_scene.c). */
+int oi__expose_scene_setup(const oi_camera *camera, const oi_model *model,
+                           const oi_expose_goal *goal, unsigned outputs,
+                           oi__expose_scene_batch *b);
+/* One row of oi_expose_scene (b NULL: the single call, every output and
+ * every check; else the batch's set-up), out zeroed. */
+int oi__expose_scene_row(const oi_camera *camera, const oi_scene *scene, const oi_illum *illum,
+                         const oi_model *model, const oi_expose_goal *goal,
+                         const oi__expose_scene_batch *b, oi_exposure *out);
 
 /* The Gaussian PSF's sigma (pixels) for a central-pixel fraction p in (0, 1]
  * and the trailed peak's factor for a trail of L pixels (src/trail.c). */
@@ -600,6 +725,11 @@ oi_real oi__signal_min_e(oi_real thr, oi_real z, oi_real c);
  */
 int oi__atm_fraction(const oi_real sun_km[3], const oi_real point_km[3], const oi_model *m,
                      oi_real frac, oi_real frac_ld, oi_real *fraction_atm, oi_real dir[3]);
+/* The same with the table's coordinates about a sphere of radius
+ * earth_radius_km instead of m->earth_radius_km (the ellipsoid's). */
+int oi__atm_fraction_about(const oi_real sun_km[3], const oi_real point_km[3], const oi_model *m,
+                           oi_real earth_radius_km, oi_real frac, oi_real frac_ld,
+                           oi_real *fraction_atm, oi_real dir[3]);
 #endif
 
 #endif /* OI_INTERNAL_H */

@@ -43,6 +43,7 @@ BLOCKS = {
     "target-bench": ("target-bench", "make target-bench", lambda l: l.startswith("target.")),
     "bench": ("bench", "make bench | grep -v ns_min",
               lambda l: (l.startswith(("bench.", "profile.", "goal.")) and "ns_min" not in l)),
+    "peers": ("bench", "make bench | grep '^peer\\.'", lambda l: l.startswith("peer.")),
 }
 
 

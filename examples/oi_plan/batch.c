@@ -63,9 +63,54 @@ typedef struct batch {
     const char *path;
     int warned_extra;
     unsigned long messages;   /* row messages printed so far */
+    unsigned long bad;        /* rows with errors */
     char last_camera_name[64]; /* the camera column's last text and its camera */
     const oi_camera *last_camera;
+    /* rows read but not yet computed and written (flush_pending) */
+    struct pending *pending;
+    int flushing;             /* 1 inside flush_pending (its messages do not flush) */
+    FILE *out;
+    window_list *wins;
+    FILE *summary;            /* NULL once the summary is given up */
 } batch;
+
+/* Rows are read into a block of up to PENDING_MAX, then the library runs on
+ * the block (oi_illuminate_batch_outputs, the model resolved once per run of
+ * rows that share it, with only the outputs the CSV needs) and the block is
+ * written in input order. Messages keep the order of the rows: before a row
+ * prints one, the rows read before it are computed and written. */
+#define PENDING_MAX 64
+
+/* Bytes of the block's ids; a longer id is not copied (its row is computed
+ * at once). */
+#define PENDING_ID_BYTES (1u << 14)
+
+/* What the CSV needs of the illumination: the observer's flux and
+ * magnitude; not the shadow's angles, the limb-darkened fraction or the
+ * directions. */
+#define PLAN_OUTPUTS (OI_BATCH_OBSERVER)
+
+typedef struct pending_row {
+    plan_row row;             /* status when parsing failed; else filled by the flush */
+    oi_model model;
+    oi_expose_goal goal;
+    const oi_camera *camera;
+    unsigned long line;
+    const char *id;           /* into ids, or the reader's field (flushed at once) */
+    int compute;              /* 1: parsed, to be computed */
+} pending_row;
+
+typedef struct pending {
+    long n;
+    size_t id_used;
+    oi_scene scenes[PENDING_MAX];
+    oi_illum illum[PENDING_MAX];
+    int status[PENDING_MAX];
+    pending_row rows[PENDING_MAX];
+    char ids[PENDING_ID_BYTES];
+} pending;
+
+static void flush_pending(batch *b);
 
 /* Output buffer of the batch (bytes). */
 #define OUT_BUFFER (1u << 16)
@@ -88,6 +133,7 @@ static int same_nocase(const char *a, const char *b)
 static void row_error(batch *b, unsigned long line, long field, const char *what,
                       const char *detail)
 {
+    flush_pending(b);
     if (++b->messages > MAX_ROW_MESSAGES) {
         if (b->messages == MAX_ROW_MESSAGES + 1) {
             fprintf(stderr, "oi-plan: %s: more row errors; further messages suppressed "
@@ -278,11 +324,32 @@ static int parse_sky(const char *s, unsigned *sky)
     }
 }
 
+/* Column k's field as a plain decimal alone (num_parse_plain, then the
+ * field's end): 1 with *x, what parse_real gives for it; 0 for any other
+ * field (absent, empty, blanks, another form), which parse_real then reads. */
+static int plain_field(const batch *b, const csv_reader *r, int k, double *x)
+{
+    const long c = b->col[k];
+    const char *s;
+    char *end;
+    if (c < 0 || (size_t)c >= csv_nfields(r)) return 0;
+    s = csv_field(r, (size_t)c);
+    return num_parse_plain(s, csv_record_end(r), x, &end) && *end == '\0';
+}
+
 /* Read a group of three coordinates; returns 1 given, 0 all empty or the
  * columns absent, -1 after reporting a parse error. */
 static int parse_vec(batch *b, const csv_reader *r, int k0, oi_real v[3], int required)
 {
     int i, given = 0, first_empty = -1, short_row = 0;
+    double x0, x1, x2;
+    if (plain_field(b, r, k0, &x0) && plain_field(b, r, k0 + 1, &x1) &&
+        plain_field(b, r, k0 + 2, &x2)) { /* the common row */
+        v[0] = (oi_real)x0;
+        v[1] = (oi_real)x1;
+        v[2] = (oi_real)x2;
+        return 1;
+    }
     for (i = 0; i < 3; i++) {
         const char *s = field_of(b, r, k0 + i, &short_row);
         double x = 0;
@@ -316,7 +383,9 @@ static int parse_vec(batch *b, const csv_reader *r, int k0, oi_real v[3], int re
 static int parse_opt(batch *b, const csv_reader *r, int k, double *value)
 {
     int sr = 0, st;
-    const char *s = field_of(b, r, k, &sr);
+    const char *s;
+    if (plain_field(b, r, k, value)) return 1;
+    s = field_of(b, r, k, &sr);
     if (s == NULL) return 0;
     st = parse_real(s, csv_field_avail(r, (size_t)b->col[k]), value);
     if (st == 1) return 0;
@@ -381,9 +450,10 @@ static int parse_target(batch *b, const csv_reader *r, oi_scene *sc)
     return 0;
 }
 
-/* Build the scene of one record and compute it. Returns 1 when the row is
- * OK (or a warning), 0 when it is an error; fills row. */
-static int run_row(batch *b, const csv_reader *r, plan_row *row)
+/* Build the scene, model, goal and camera of one record. Returns 1 when
+ * the row is to be computed, 0 when it failed (row holds its status). */
+static int parse_row(batch *b, const csv_reader *r, plan_row *row, oi_scene *scene,
+                     oi_model *model_out, oi_expose_goal *goal_out, const oi_camera **camera)
 {
     oi_scene sc;
     oi_model model;
@@ -412,6 +482,7 @@ static int run_row(batch *b, const csv_reader *r, plan_row *row)
             }
         }
     } else if (csv_nfields(r) > b->header_fields && !b->warned_extra) {
+        flush_pending(b);
         fprintf(stderr, "oi-plan: %s: line %lu: note: row has more fields than the header; "
                         "extra fields ignored (reported once)\n", b->path, r->rec_line);
         b->warned_extra = 1;
@@ -589,11 +660,25 @@ static int run_row(batch *b, const csv_reader *r, plan_row *row)
         }
     }
 
-    st = oi_illuminate(&sc, &model, &row->illum);
+    *scene = sc;
+    memcpy(model_out, &model, sizeof model); /* bytes: blocks are split where they differ */
+    memcpy(goal_out, &goal, sizeof goal);
+    *camera = cam;
+    return 1;
+}
+
+/* The rest of a parsed row once its illumination is in (status st): flags,
+ * the exposure, messages. Returns 1 when the row is OK (or a warning), 0
+ * when it is an error. */
+static int finish_row(batch *b, const oi_scene *sc, const oi_illum *illum, int st,
+                      pending_row *p)
+{
+    plan_row *row = &p->row;
+    row->illum = *illum;
     row->status = st;
     row->status_name = oi_status_name(st);
     if (st < 0) {
-        row_error(b, r->rec_line, -1, "cannot compute the row:", row->status_name);
+        row_error(b, p->line, -1, "cannot compute the row:", row->status_name);
         return 0;
     }
     if (row->illum.shadow.region == OI_SHADOW_UMBRA) {
@@ -602,12 +687,12 @@ static int run_row(batch *b, const csv_reader *r, plan_row *row)
         row->flags |= OI_FLAG_PENUMBRA;
     }
     if (row->illum.sun_moon_hidden > (oi_real)0) row->flags |= OI_FLAG_MOON_SHADOW;
-    if (sc.has_observer) {
-        int st2 = oi_expose_scene(cam, &sc, &row->illum, &model, &goal, &row->expo);
+    if (sc->has_observer) {
+        int st2 = oi_expose_scene(p->camera, sc, &row->illum, &p->model, &p->goal, &row->expo);
         if (st2 < 0) {
             row->status = st2;
             row->status_name = oi_status_name(st2);
-            row_error(b, r->rec_line, -1, "cannot compute the exposure:", row->status_name);
+            row_error(b, p->line, -1, "cannot compute the exposure:", row->status_name);
             return 0;
         }
         row->flags = row->expo.flags;
@@ -615,6 +700,76 @@ static int run_row(batch *b, const csv_reader *r, plan_row *row)
     }
     row->has_numbers = 1;
     return 1;
+}
+
+/* Compute the block's parsed rows (one library call per run of rows with
+ * the same model), then write every row of the block in order. */
+static void flush_pending(batch *b)
+{
+    pending *q = b->pending;
+    long i = 0, j;
+    if (q == NULL || q->n == 0 || b->flushing) return;
+    b->flushing = 1;
+    while (i < q->n) {
+        if (!q->rows[i].compute) {
+            i++;
+            continue;
+        }
+        for (j = i + 1; j < q->n && q->rows[j].compute &&
+                        memcmp(&q->rows[j].model, &q->rows[i].model, sizeof q->rows[i].model) == 0;
+             j++) {
+        }
+        (void)oi_illuminate_batch_outputs(j - i, q->scenes + i, &q->rows[i].model, PLAN_OUTPUTS,
+                                          q->illum + i, q->status + i);
+        i = j;
+    }
+    for (i = 0; i < q->n; i++) {
+        pending_row *p = &q->rows[i];
+        if (p->compute && !finish_row(b, &q->scenes[i], &q->illum[i], q->status[i], p)) b->bad++;
+        out_csv_row(b->out, p->id, &p->row);
+        if (b->summary && windows_add(b->wins, p->id, &p->row) != 0) {
+            fprintf(stderr, "oi-plan: out of memory: no window summary\n");
+            b->summary = NULL;
+        }
+    }
+    q->n = 0;
+    q->id_used = 0;
+    b->flushing = 0;
+}
+
+/* Append the row just read (parsed or failed) to the block; the block is
+ * flushed when full, and at once when the id could not be copied. */
+static void add_pending(batch *b, const char *id, const plan_row *row, const oi_scene *scene,
+                        const oi_model *model, const oi_expose_goal *goal,
+                        const oi_camera *camera, unsigned long line, int compute)
+{
+    pending *q = b->pending;
+    pending_row *p;
+    const size_t len = strlen(id) + 1;
+    int at_once = 0;
+    if (q->id_used + len > sizeof q->ids) flush_pending(b);
+    p = &q->rows[q->n];
+    if (len <= sizeof q->ids) {
+        memcpy(q->ids + q->id_used, id, len);
+        p->id = q->ids + q->id_used;
+        q->id_used += len;
+    } else {
+        p->id = id; /* valid until the next record is read */
+        at_once = 1;
+    }
+    p->row = *row;
+    p->compute = compute;
+    p->line = line;
+    if (compute) {
+        q->scenes[q->n] = *scene;
+        memcpy(&p->model, model, sizeof *model);
+        memcpy(&p->goal, goal, sizeof *goal);
+        p->camera = camera;
+    } else {
+        b->bad++; /* failed while parsing */
+    }
+    q->n++;
+    if (at_once || q->n == PENDING_MAX) flush_pending(b);
 }
 
 /* Progress on stderr, only when it is a terminal, at most once a second. */
@@ -643,7 +798,7 @@ int batch_run_map(const char *path, const oi_camera *default_camera, const plan_
     csv_reader r;
     FILE *fp;
     int st, result = PLAN_EXIT_OK, tty;
-    unsigned long rows = 0, bad = 0;
+    unsigned long rows = 0;
     time_t last;
 
     memset(&b, 0, sizeof b);
@@ -651,10 +806,21 @@ int batch_run_map(const char *path, const oi_camera *default_camera, const plan_
     b.default_camera = default_camera;
     b.shapes = shapes;
     b.albedo_map = albedo_map;
+    b.out = out;
+    b.wins = &wins;
+    b.summary = summary;
     b.path = strcmp(path, "-") == 0 ? "<stdin>" : path;
+    b.pending = malloc(sizeof *b.pending);
+    if (b.pending == NULL) {
+        fprintf(stderr, "oi-plan: out of memory\n");
+        return PLAN_EXIT_INPUT;
+    }
+    b.pending->n = 0;
+    b.pending->id_used = 0;
     fp = strcmp(path, "-") == 0 ? stdin : fopen(path, "rb");
     if (fp == NULL) {
         fprintf(stderr, "oi-plan: cannot open '%s': %s\n", path, strerror(errno));
+        free(b.pending);
         return PLAN_EXIT_INPUT;
     }
     csv_init(&r, fp);
@@ -662,6 +828,7 @@ int batch_run_map(const char *path, const oi_camera *default_camera, const plan_
     if (st != 0) {
         csv_free(&r);
         if (fp != stdin) fclose(fp);
+        free(b.pending);
         return st;
     }
     /* rows go out in blocks of OUT_BUFFER bytes (a pipe's default is 4 KiB:
@@ -673,14 +840,19 @@ int batch_run_map(const char *path, const oi_camera *default_camera, const plan_
 
     for (;;) {
         plan_row row;
+        oi_scene sc;
+        oi_model model;
+        oi_expose_goal goal;
+        const oi_camera *cam = NULL;
         char idbuf[32];
         const char *id;
-        int sr = 0;
+        int sr = 0, compute;
         st = csv_next(&r);
         if (st == CSV_END) break;
         rows++;
         if (b.col[C_ID] < 0) snprintf(idbuf, sizeof idbuf, "%lu", rows);
         if (st == CSV_IO || st == CSV_NOMEM) {
+            flush_pending(&b);
             fprintf(stderr, "oi-plan: %s: line %lu: %s\n", b.path, r.line, csv_result_text(st));
             result = PLAN_EXIT_INPUT;
             break;
@@ -691,27 +863,21 @@ int batch_run_map(const char *path, const oi_camera *default_camera, const plan_
             row_error(&b, r.err_line, -1, csv_result_text(st), where);
             memset(&row, 0, sizeof row);
             row.status_name = PLAN_STATUS_PARSE;
-            out_csv_row(out, b.col[C_ID] >= 0 ? "" : idbuf, &row);
-            if (summary && windows_add(&wins, b.col[C_ID] >= 0 ? "" : idbuf, &row) != 0) {
-                summary = NULL;
-            }
-            bad++;
+            add_pending(&b, b.col[C_ID] >= 0 ? "" : idbuf, &row, NULL, NULL, NULL, NULL,
+                        r.err_line, 0);
             continue;
         }
         id = b.col[C_ID] >= 0 ? field_of(&b, &r, C_ID, &sr) : idbuf;
-        if (!run_row(&b, &r, &row)) bad++;
-        out_csv_row(out, id, &row);
-        if (summary && windows_add(&wins, id, &row) != 0) {
-            fprintf(stderr, "oi-plan: out of memory: no window summary\n");
-            summary = NULL;
-        }
+        compute = parse_row(&b, &r, &row, &sc, &model, &goal, &cam);
+        add_pending(&b, id, &row, &sc, &model, &goal, cam, r.rec_line, compute);
         progress(rows, &last, tty);
     }
+    flush_pending(&b);
     if (tty && rows >= 1024) fprintf(stderr, "\roi-plan: %lu rows done.   \n", rows);
-    if (summary) windows_print(&wins, summary);
+    if (b.summary) windows_print(&wins, b.summary);
     windows_free(&wins);
-    if (bad > 0) {
-        fprintf(stderr, "oi-plan: %lu of %lu rows had errors\n", bad, rows);
+    if (b.bad > 0) {
+        fprintf(stderr, "oi-plan: %lu of %lu rows had errors\n", b.bad, rows);
         if (result == PLAN_EXIT_OK) result = PLAN_EXIT_ROWS;
     }
     if (fflush(out) != 0 || ferror(out)) {
@@ -720,5 +886,6 @@ int batch_run_map(const char *path, const oi_camera *default_camera, const plan_
     }
     csv_free(&r);
     if (fp != stdin) fclose(fp);
+    free(b.pending);
     return result;
 }

@@ -341,6 +341,12 @@ int csv_next(csv_reader *r)
         st = quick_record(r, &blank);
         if (st < 0) st = read_record(r, &blank);
     } while (st == CSV_RECORD && blank);
+    /* zeros after the text: the number reader's 8-byte loads reach the last field's end */
+    r->pad = 0;
+    if (st == CSV_RECORD && (r->len + CSV_PAD <= r->cap || reserve(r, r->len + CSV_PAD, 0))) {
+        memset(r->buf + r->len, 0, CSV_PAD);
+        r->pad = CSV_PAD;
+    }
     return st;
 }
 

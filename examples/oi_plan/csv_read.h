@@ -16,6 +16,7 @@
 
 #define CSV_MAX_RECORD (1u << 20) /* bytes per record */
 #define CSV_READ_BLOCK (1u << 16) /* bytes per fread: the input is read in blocks */
+#define CSV_PAD 8u                /* zero bytes after a record's text, for word-wide reads */
 
 enum csv_result {
     CSV_RECORD = 0,   /* a record was read */
@@ -36,6 +37,7 @@ typedef struct csv_reader {
     unsigned long err_col;
     char *buf;                /* field text, each NUL-terminated */
     size_t len, cap;
+    size_t pad;               /* zero bytes at buf + len (CSV_PAD, or 0 without room) */
     size_t *start;            /* offset of each field in buf */
     size_t nfields, fcap;
     int started;              /* BOM check done */
@@ -60,11 +62,16 @@ static inline const char *csv_field(const csv_reader *r, size_t i)
     return i < r->nfields ? r->buf + r->start[i] : NULL;
 }
 /* Bytes readable from field i of the last record to the end of the record's
- * text (its NUL and the fields after it; 0 past the end): what
- * num_parse_n may read. */
+ * text and its zero padding (its NUL, the fields after it, pad bytes; 0 past
+ * the end): what num_parse_n may read. */
 static inline size_t csv_field_avail(const csv_reader *r, size_t i)
 {
-    return i < r->nfields ? r->len - r->start[i] : 0;
+    return i < r->nfields ? r->len + r->pad - r->start[i] : 0;
+}
+/* The end of what csv_field_avail counts (the record's text and padding). */
+static inline const char *csv_record_end(const csv_reader *r)
+{
+    return r->buf + r->len + r->pad;
 }
 /* Human-readable text of a csv_result. */
 const char *csv_result_text(int result);

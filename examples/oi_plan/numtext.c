@@ -20,6 +20,9 @@
  * arithmetic without contraction into fused multiply-adds and without excess
  * precision (the C99 build: -std=c99 turns contraction off in GCC; x86-64 and
  * AArch64 have no excess precision).
+ * The parser reads the planner's usual text (a plain decimal of at most 19
+ * digits, no exponent) in one straight pass of 8-byte words, the other
+ * forms in the general steps.
  * Tested against printf and strtod on millions of doubles
  * (tests/c/test_numtext.c).
  */
@@ -34,6 +37,14 @@
 typedef struct {
     double hi, lo;
 } dd;
+
+/* The digit steps, inlined into their few callers (GCC otherwise keeps put8
+ * out of line: a call per eight digits). */
+#if defined(__GNUC__) || defined(__clang__)
+#define NUM_INLINE __inline__ __attribute__((always_inline))
+#else
+#define NUM_INLINE
+#endif
 
 static uint64_t bits_of(double x)
 {
@@ -354,7 +365,7 @@ static const char DIGIT_PAIRS[201] =
  * x 10486 / 2^20, exact below 10^4), each into two digits (x 103 / 2^10,
  * exact below 100): no lane carries into the next. Otherwise two digits at
  * a time from a table. */
-static void put8(uint32_t v, char *d)
+static NUM_INLINE void put8(uint32_t v, char *d)
 {
     if (little_endian()) {
         const uint64_t y = (uint64_t)(v / 10000u) | ((uint64_t)(v % 10000u) << 32);
@@ -518,7 +529,7 @@ static int round_dd(dd v, double *out)
 /* Eight digit values (0..9, one a byte, the first in the lowest) as their
  * decimal number: pairs, then quads, then the eight (three multiplies
  * instead of eight multiply-adds). */
-static inline uint32_t eight_values(uint64_t x)
+static NUM_INLINE uint32_t eight_values(uint64_t x)
 {
     x = x * 10u + (x >> 8); /* pairs: 10 d0 + d1 in the even bytes */
     x = (((x & 0x000000FF000000FFULL) * (100u + (1000000ULL << 32))) +
@@ -535,7 +546,7 @@ static const uint64_t POW10_U64[9] = {1u, 10u, 100u, 1000u, 10000u, 100000u, 100
  * a byte is a digit when its high nibble is 3 and adding 6 leaves it 3 (a
  * carry out of a byte only follows a byte that is no digit, so the lowest
  * failing byte is exact); the run of digits below it is converted at once. */
-static inline int read_digits(const char **pp, const char *lim, uint64_t *m)
+static NUM_INLINE int read_digits(const char **pp, const char *lim, uint64_t *m)
 {
     const char *p = *pp;
     uint64_t v = *m;
@@ -579,12 +590,155 @@ double num_parse(const char *s, char **end)
     return num_parse_n(s, strlen(s), end);
 }
 
+/* The double nearest m 10^e (m < 10^19 of nd digits at most) into *out;
+ * 0 when this cannot decide it (then strtod does). */
+static NUM_INLINE int decimal_value(uint64_t m, int e, int nd, double *out)
+{
+    double v;
+    if (m == 0) {
+        v = 0.0;
+    } else if (m < (1ULL << 53) && e >= -22 && e <= 22) {
+        /* Clinger's fast path: two exact operands, one rounding */
+        v = e < 0 ? (double)m / POW10_EXACT[-e] : (double)m * POW10_EXACT[e];
+    } else {
+        if (e + nd > 280 || e + nd < -280) return 0;
+#ifdef NUM_WIDE
+        {
+            /* m (normalised to 64 bits) times P: the upper 128 bits, their
+             * top 53 the significand, the 75 below decide the rounding */
+            const int zm = clz64(m), i = POW_MAX + e;
+            u128 h;
+            int zh;
+            uint64_t sig, hh, hl, rest;
+            const uint64_t half = 1ULL << 63, margin = (1ULL << 21) + 1u;
+            if (!pow_ready) pow_init();
+            h = mul_hi128(m << zm, wide_hi[i], wide_lo[i]);
+            zh = h >> 127 ? 0 : 1; /* h >= 2^126 */
+            h <<= zh;
+            hh = (uint64_t)(h >> 64);
+            hl = (uint64_t)h;
+            sig = hh >> 11;
+            /* the 75 bits below as a 64-bit fraction; the error (P's 2^-98 of
+             * h and the truncation, 2^32 of h's units) is 2^21 of its units */
+            rest = (hh << 53) | (hl >> 11);
+            if ((rest > half ? rest - half : half - rest) <= margin) return 0;
+            if (rest > half && ++sig == (1ULL << 53)) {
+                sig = 1ULL << 52;
+                zh--;
+            }
+            /* value = sig 2^(139 + E - zh - zm); biased exponent + 52 + 1023 */
+            v = of_bits(((uint64_t)(139 + wide_exp[i] - zh - zm + 1075) << 52) |
+                        (sig & 0xFFFFFFFFFFFFFULL));
+        }
+#else
+        {
+            dd mm;
+            mm.hi = (double)m;
+            /* m < 10^19 < 2^64: (double)m converts back, the difference is exact */
+            mm.lo = (double)(int64_t)(m - (uint64_t)mm.hi);
+            if (!round_dd(scale10(mm, e), &v)) return 0;
+        }
+#endif
+    }
+    *out = v;
+    return 1;
+}
+
+/* Count of digit bytes leading the eight of x (little-endian, 0..8): a byte
+ * is a digit when its high nibble is 3 and adding 6 leaves it 3 (a carry out
+ * of a byte only follows a byte that is no digit). */
+static NUM_INLINE int digit_count8(uint64_t x)
+{
+    const uint64_t bad = ((x & 0xF0F0F0F0F0F0F0F0ULL) |
+                          (((x + 0x0606060606060606ULL) & 0xF0F0F0F0F0F0F0F0ULL) >> 4)) ^
+                         0x3333333333333333ULL;
+    return bad == 0u ? 8 : lowest_byte(bad);
+}
+
+/* m 10^k + the first k (1..8) digits of the word x (their values: x minus
+ * the '0's). */
+static NUM_INLINE uint64_t append_digits(uint64_t m, uint64_t x, int k)
+{
+    return m * POW10_U64[k] + eight_values(x << (8 * (8 - k)));
+}
+
+/* The digits leading the eight bytes at *p appended to *m (append_digits),
+ * *p moved past them: their count (0..8), or -1 when fewer than eight bytes
+ * are left before lim. */
+static NUM_INLINE int digit_word(const char **p, const char *lim, uint64_t *m)
+{
+    uint64_t x;
+    int k;
+    if (lim - *p < 8) return -1;
+    memcpy(&x, *p, 8);
+    k = digit_count8(x);
+    if (k > 0) *m = append_digits(*m, x - 0x3030303030303030ULL, k);
+    *p += k;
+    return k;
+}
+
+/* The plain decimal at s, [sign] digits [. digits], at most 15 digits before
+ * the point and 19 in all, no exponent, not hexadecimal, eight bytes at a
+ * time (little-endian); 0 when the text is another form or the bytes run short (num_parse_n's general steps
+ * then read it). The value is m 10^e as the general steps form it (leading
+ * zeros counted in nd, which only decides the hand-off to strtod). */
+static NUM_INLINE int parse_plain(const char *s, const char *lim, double *out, char **end)
+{
+    const char *p = s;
+    uint64_t m = 0u;
+    int k, nd, e = 0;
+    double v;
+    const int neg = *p == '-';
+    p += neg || *p == '+';
+    nd = digit_word(&p, lim, &m);
+    if (nd <= 0) return 0;
+    if (nd == 8) {
+        k = digit_word(&p, lim, &m);
+        if (k < 0 || k == 8) return 0;
+        nd += k;
+    }
+    if (*p == '.') {
+        p++;
+        /* up to three words of digits (past 19 digits m wraps, and is refused below) */
+        k = digit_word(&p, lim, &m);
+        if (k < 0) return 0;
+        nd += k;
+        e = -k;
+        if (k == 8) {
+            k = digit_word(&p, lim, &m);
+            if (k < 0) return 0;
+            nd += k;
+            e -= k;
+            if (k == 8) {
+                k = digit_word(&p, lim, &m);
+                if (k < 0 || k == 8) return 0;
+                nd += k;
+                e -= k;
+            }
+        }
+    }
+    /* an exponent, or hexadecimal text ("0x"): the general steps */
+    if (nd > 19 || *p == 'e' || *p == 'E' || *p == 'x' || *p == 'X' ||
+        !decimal_value(m, e, nd, &v))
+        return 0;
+    *out = neg ? -v : v;
+    *end = (char *)p;
+    return 1;
+}
+
 double num_parse_n(const char *s, size_t len, char **end)
 {
     const char *p = s, *lim = s + len;
     uint64_t m = 0;
     int neg = 0, nd = 0, any = 0, e = 0, exp_frac = 0, k;
     double v;
+    if (little_endian()) {
+        char *fast_end = NULL;
+        if (parse_plain(s, lim, &v, &fast_end)) {
+            if (end != NULL) *end = fast_end;
+            return v;
+        }
+    }
     if (*p == '+' || *p == '-') neg = *p++ == '-';
     if (!is_digit(*p) && !(*p == '.' && is_digit(p[1]))) return strtod(s, end);
     if (p[0] == '0' && (p[1] == 'x' || p[1] == 'X')) return strtod(s, end);
@@ -625,51 +779,12 @@ double num_parse_n(const char *s, size_t len, char **end)
         }
     }
     e += exp_frac;
-    if (m == 0) {
-        v = 0.0;
-    } else if (m < (1ULL << 53) && e >= -22 && e <= 22) {
-        /* Clinger's fast path: two exact operands, one rounding */
-        v = e < 0 ? (double)m / POW10_EXACT[-e] : (double)m * POW10_EXACT[e];
-    } else {
-        if (e + nd > 280 || e + nd < -280) return strtod(s, end);
-#ifdef NUM_WIDE
-        {
-            /* m (normalised to 64 bits) times P: the upper 128 bits, their
-             * top 53 the significand, the 75 below decide the rounding */
-            const int zm = clz64(m), i = POW_MAX + e;
-            u128 h;
-            int zh;
-            uint64_t sig, hh, hl, rest;
-            const uint64_t half = 1ULL << 63, margin = (1ULL << 21) + 1u;
-            if (!pow_ready) pow_init();
-            h = mul_hi128(m << zm, wide_hi[i], wide_lo[i]);
-            zh = h >> 127 ? 0 : 1; /* h >= 2^126 */
-            h <<= zh;
-            hh = (uint64_t)(h >> 64);
-            hl = (uint64_t)h;
-            sig = hh >> 11;
-            /* the 75 bits below as a 64-bit fraction; the error (P's 2^-98 of
-             * h and the truncation, 2^32 of h's units) is 2^21 of its units */
-            rest = (hh << 53) | (hl >> 11);
-            if ((rest > half ? rest - half : half - rest) <= margin) return strtod(s, end);
-            if (rest > half && ++sig == (1ULL << 53)) {
-                sig = 1ULL << 52;
-                zh--;
-            }
-            /* value = sig 2^(139 + E - zh - zm); biased exponent + 52 + 1023 */
-            v = of_bits(((uint64_t)(139 + wide_exp[i] - zh - zm + 1075) << 52) |
-                        (sig & 0xFFFFFFFFFFFFFULL));
-        }
-#else
-        {
-            dd mm;
-            mm.hi = (double)m;
-            /* m < 10^19 < 2^64: (double)m converts back, the difference is exact */
-            mm.lo = (double)(int64_t)(m - (uint64_t)mm.hi);
-            if (!round_dd(scale10(mm, e), &v)) return strtod(s, end);
-        }
-#endif
-    }
+    if (!decimal_value(m, e, nd, &v)) return strtod(s, end);
     if (end != NULL) *end = (char *)p;
     return neg ? -v : v;
+}
+
+int num_parse_plain(const char *s, const char *lim, double *out, char **end)
+{
+    return little_endian() && parse_plain(s, lim, out, end);
 }

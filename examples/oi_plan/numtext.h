@@ -22,4 +22,11 @@ double num_parse(const char *s, char **end);
  * past the NUL are read, never used; they must be initialised). */
 double num_parse_n(const char *s, size_t len, char **end);
 
+/* The first step of num_parse_n alone: a plain decimal ([sign] digits
+ * [. digits], at most 15 digits before the point and 19 in all, no
+ * exponent) at s, the bytes up to lim readable and initialised. Returns 1
+ * with num_parse_n's double and end, or 0 for any other text (or on a
+ * big-endian machine), *out and *end then untouched. */
+int num_parse_plain(const char *s, const char *lim, double *out, char **end);
+
 #endif

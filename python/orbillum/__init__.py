@@ -757,7 +757,8 @@ def _exposure_dict(ex, st):
 def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None,
            target_albedo=None, target_radius_m=None, target_shape=None, attitude_q=None,
            model=None, fill=None, snr_min=None, sky=None, target_velocity=None,
-           observer_velocity=None, epoch_jd=None, earth_rotation_rad=None, sensor_temp_c=None):
+           observer_velocity=None, epoch_jd=None, earth_rotation_rad=None, sensor_temp_c=None,
+           outputs=None):
     """oi_illuminate then oi_expose_scene for each row: the suggested exposure.
 
     camera: a built-in camera name (see cameras()), a dict as camera() returns
@@ -781,11 +782,24 @@ def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None
     expose_status_name. Rows whose illumination failed are not exposed
     (expose_status equals their illumination status, exposure fields 0).
     row_status / row_status_name: the status build/oi-plan prints for the row.
+    outputs: None (every exposure field) or a mask of OI_EXPOSE_* bits
+    (oi_expose_scene_batch_outputs: OI_EXPOSE_SETTING, FAINT, DETECT, SUN_ANGLE,
+    BACKGROUND, RATE; docs/camera.md, "Batches and their outputs mask"): the
+    fields left out are 0 and not computed, the others the same bits.
     """
     if observer is None:
         raise ValueError("observer: expose needs the observer's position, (N, 3) or (3,) km "
                          "(the exposure is that of the observer's camera); for the light "
                          "alone call illuminate()")
+    if outputs is None:
+        emask = L.OI_EXPOSE_ALL
+    elif isinstance(outputs, (bool, np.bool_)) or not isinstance(outputs, (int, np.integer)):
+        raise TypeError(f"outputs: a mask of OI_EXPOSE_* bits or None, got {outputs!r}")
+    elif int(outputs) < 0 or int(outputs) & ~L.OI_EXPOSE_ALL:
+        raise ValueError(f"outputs: unknown bits in {int(outputs):#x} (OI_EXPOSE_ALL is "
+                         f"{L.OI_EXPOSE_ALL:#x})")
+    else:
+        emask = int(outputs)
     cp, _ = _camera_ptr(camera)
     m = _model(model)
     g = _goal(fill, snr_min, sky, sensor_temp_c)
@@ -798,8 +812,10 @@ def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None
     n = sc.shape[0]
     ex = np.empty(n, dtype=EXPOSURE_DTYPE)  # the batch writes every row
     est = np.empty(n, dtype=np.intc)
-    st = _lib.oi_expose_scene_batch(n, cp, sc.ctypes.data, res.ctypes.data, _mptr(m), _mptr(g),
-                                    ex.ctypes.data, est.ctypes.data)
+    # the camera, model and goal formed once (with OI_EXPOSE_ALL the rows are
+    # oi_expose_scene_batch's bits)
+    st = _lib.oi_expose_scene_batch_outputs(n, cp, sc.ctypes.data, res.ctypes.data, _mptr(m),
+                                            _mptr(g), emask, ex.ctypes.data, est.ctypes.data)
     _batch_status(st, n, "camera or model")
     # rows whose illumination failed are not exposed: their status, zero fields
     failed = status < 0

@@ -115,6 +115,14 @@ OI_DETECT_MARGIN_NONE = -100.0
 OI_SKY_ZODIACAL = 1
 OI_SKY_MOON = 2
 OI_SKY_STARLIGHT = 4
+OI_EXPOSE_SETTING = 1      # outputs mask of oi_expose(_scene)_batch_outputs
+OI_EXPOSE_FAINT = 2
+OI_EXPOSE_DETECT = 4
+OI_EXPOSE_SUN_ANGLE = 8
+OI_EXPOSE_BACKGROUND = 16
+OI_EXPOSE_RATE = 32
+OI_EXPOSE_ALL = (OI_EXPOSE_SETTING | OI_EXPOSE_FAINT | OI_EXPOSE_DETECT | OI_EXPOSE_SUN_ANGLE |
+                 OI_EXPOSE_BACKGROUND | OI_EXPOSE_RATE)
 
 # ---- include/oi_table.h
 OI_TABLE_FORMAT = 4
@@ -352,6 +360,10 @@ _PROTOS = {
                                 c_void_p]),
     "oi_expose_scene_batch": (c_int, [ctypes.c_long, c_void_p, c_void_p, c_void_p, c_void_p,
                                       c_void_p, c_void_p, c_void_p]),
+    "oi_expose_batch_outputs": (c_int, [ctypes.c_long, c_void_p, c_void_p, c_void_p, c_uint,
+                                        c_void_p, c_void_p]),
+    "oi_expose_scene_batch_outputs": (c_int, [ctypes.c_long, c_void_p, c_void_p, c_void_p,
+                                              c_void_p, c_void_p, c_uint, c_void_p, c_void_p]),
 }
 
 

@@ -282,6 +282,56 @@ const JS_EVAL = {
   },
 };
 
+// The batch calls (stab_dump's <table>_batch and <table>_mask lines): each table's vectors in
+// one call of the JavaScript module's batch wrapper, row by row against the native batch's dump.
+const BATCH_ROWS = {};
+function batchRow(name, all, idx, compute) {
+  BATCH_ROWS[name] = BATCH_ROWS[name] ?? compute(all);
+  return BATCH_ROWS[name][idx];
+}
+const illumScene = (v) => ({ sun_km: v.slice(0, 3), target_km: v.slice(3, 6), observer_km: v.slice(6, 9),
+  has_observer: true, terms: oi.c.OI_TERM_SUN | oi.c.OI_TERM_EARTH, earth_albedo: 0.3, target_albedo: 0.2,
+  target_radius_m: 1 });
+const ILLUM_MODEL = { no_atmosphere: 1, earth_model: oi.c.OI_EARTH_LAMBERT };
+const shadowRow = ({ status, shadow: s }) => [status, s.region,
+  [s.fraction, s.sun_radius_rad, s.earth_radius_rad, s.separation_rad, s.sun_distance_km, s.fraction_ld]];
+const illumRow = ({ status, illum: o }) => [status > 0 ? 0 : status, -1,
+  [o.e_sun, o.e_earth, o.earth_theta, o.earth_h_km, o.flux_sun, o.mag_v, o.flux_obs]];
+const expoRow = ({ status, expo: e }) => [status, e.time_index * 100 + e.gain_index * 10 + ((e.flags >>> 3) & 3),
+  [e.signal_e, e.background_e, e.peak_e, e.fill, e.snr, e.exposure_s, e.sun_angle_rad, e.background_w_m2_sr,
+    e.detect_margin_mag]];
+const sunBatch = (outputs) => (v, i, all) => batchRow(`shadow ${outputs}`, all, i, (a) =>
+  oi.sunFractionBatch(a.map((x) => x.slice(0, 3)), a.map((x) => x.slice(3, 6)), { no_atmosphere: 1 }, outputs)
+    .rows.map(shadowRow));
+const illumBatch = (outputs) => (v, i, all) => batchRow(`illum ${outputs}`, all, i, (a) =>
+  oi.illuminateBatch(a.map(illumScene), ILLUM_MODEL, outputs).rows.map(illumRow));
+const exposeBatch = (outputs) => (v, i, all) => batchRow(`camera ${outputs}`, all, i, (a) =>
+  oi.exposeBatch(oi.writeCamera(STAB_CAMERA), a.map((x) => ({ flux_w_m2: x[0], background_w_m2_sr: x[1] })), outputs)
+    .rows.map(expoRow));
+const exposeSceneBatch = (outputs) => (v, i, all) => batchRow(`expose_scene ${outputs}`, all, i, (a) =>
+  oi.exposeSceneBatch(oi.writeCamera(STAB_CAMERA), a.map(illumScene), ILLUM_MODEL, outputs).rows.map(expoRow));
+Object.assign(JS_EVAL, {
+  shadow_batch: sunBatch(oi.c.OI_BATCH_ALL),
+  shadow_mask: sunBatch(0),
+  earth_table_batch: (v, i, all) => batchRow('earth_table', all, i, (a) =>
+    oi.earthshineBatch(a.map((x) => x[0]), a.map((x) => x[1])).rows.map((r) => [r.status, -1, [r.phi, r.psi]])),
+  illum_batch: illumBatch(null),
+  illum_mask: illumBatch(oi.c.OI_BATCH_OBSERVER),
+  camera_batch: exposeBatch(null),
+  camera_mask: exposeBatch(oi.c.OI_EXPOSE_SETTING | oi.c.OI_EXPOSE_FAINT),
+  expose_scene_batch: exposeSceneBatch(null),
+  expose_scene_mask: exposeSceneBatch(oi.c.OI_EXPOSE_SETTING | oi.c.OI_EXPOSE_BACKGROUND),
+});
+const baseTable = (name) => name.replace(/_(batch|mask)$/, '');
+const INPUT_TABLE = { expose_scene: 'illum' }; // the scene exposure batch runs on the illum vectors' scenes
+
+test('the batch calls are in the stability dump, each over its whole table', () => {
+  const native = execFileSync(path.join(BUILD, 'wasm/stab_dump'), { encoding: 'utf8' }).trim().split('\n');
+  const names = new Set(native.map((l) => l.split(' ')[0]));
+  for (const n of Object.keys(JS_EVAL)) assert.ok(names.has(n), `no ${n} lines in the dump`);
+  assert.ok(native.filter((l) => l.startsWith('expose_scene_mask ') && l.split(' ')[2] === '0').length > 20);
+});
+
 for (const run of RUNS) test(`every double-precision stability vector through the JavaScript module vs native, ${run.what}`, () => {
   const native = execFileSync(path.join(BUILD, 'wasm/stab_dump'), { encoding: 'utf8', env: run.env }).trim().split('\n')
     .map((l) => l.split(' '));
@@ -290,11 +340,13 @@ for (const run of RUNS) test(`every double-precision stability vector through th
   const near = [];
   let outputs = 0;
   for (const [name, idx, st, region, ...want] of native) {
-    inputs[name] = inputs[name] ?? vectorInputs(name);
-    const v = inputs[name][Number(idx)];
-    const [gst, gregion, got] = JS_EVAL[name](v);
+    const base = baseTable(name);
+    const table = INPUT_TABLE[base] ?? base;
+    inputs[table] = inputs[table] ?? vectorInputs(table);
+    const v = inputs[table][Number(idx)];
+    const [gst, gregion, got] = JS_EVAL[name](v, Number(idx), inputs[table]);
     assert.equal(gst, Number(st), `${name}[${idx}] status`);
-    if (name === 'shadow' || name === 'camera') assert.equal(gregion, Number(region), `${name}[${idx}] region`);
+    if (['shadow', 'camera', 'expose_scene'].includes(base)) assert.equal(gregion, Number(region), `${name}[${idx}] region`);
     want.forEach((w, k) => {
       outputs++;
       const g = bits(got[k] ?? 0);

@@ -166,12 +166,64 @@ static void test_public(void **state)
     assert_true(out.moon_disc_visible == 0 && out.e_moon == 0);
 }
 
+/* oi_illuminate's moon_disc_visible is oi__moon_disc_visible's, bit for
+ * bit, on both sides of where illuminate.c decides the Moon certainly clear
+ * of the Earth and its air without the arctangents (1 exactly): the Moon
+ * stepped from half behind the solid Earth to well clear, finely across
+ * that test's margin, from four distances, with the air and without. */
+static void test_public_as_internal(void **state)
+{
+    const double dm = 384400.0, dps[4] = {6878.137, 26578.137, 42164.0, 200000.0};
+    int k, i, air, clear = 0, shaded = 0;
+    (void)state;
+    for (air = 0; air < 2; ++air)
+        for (k = 0; k < 4; ++k) {
+            const double dp = dps[k], re = asin(R_E / dp), rm = asin(R_M / dm);
+            const double top = asin((R_E + 100.0) / dp), edge = top + rm + 1e-4;
+            oi_model model, m;
+            oi_scene s;
+            oi_illum out;
+            oi_real pt[3], u[3], moon[3], to_target[3], dir[3];
+            double sep;
+            oi_scene_defaults(&s);
+            memset(&model, 0, sizeof model);
+            model.no_atmosphere = air ? 0 : 1;
+            assert_int_equal(oi__model_resolve(&model, &m), OI_OK);
+            for (i = 0; i <= 260; ++i) {
+                /* 200 steps to twice the edge, then 60 within 1e-5 of it */
+                sep = i <= 200 ? re - 0.5 * rm + (2.0 * edge - re) * (double)i / 200.0
+                               : edge + 1e-5 * ((double)(i - 230) / 30.0);
+                moon_at(dp, sep, dm, pt, u, moon);
+                s.sun_km[0] = (oi_real)1.495978707e8;
+                memcpy(s.target_km, pt, sizeof pt);
+                memcpy(s.moon_km, moon, sizeof moon);
+                s.terms = OI_TERM_MOON;
+                assert_true(oi_illuminate(&s, &model, &out) >= 0);
+                /* moon_term's direction and distance, by its operations */
+                oi__sub(pt, moon, to_target);
+                (void)oi__unit(to_target, dir);
+                dir[0] = -dir[0];
+                dir[1] = -dir[1];
+                dir[2] = -dir[2];
+                if (out.moon_disc_visible !=
+                    oi__moon_disc_visible(pt, dir, oi__norm(to_target), &m))
+                    fail_msg("dp %.0f sep %.9f air %d: oi_illuminate %.9g", dp, sep, air,
+                             (double)out.moon_disc_visible);
+                if (out.moon_disc_visible == (oi_real)1) clear++;
+                else shaded++;
+            }
+        }
+    /* both sides reached */
+    assert_true(clear > 100 && shaded > 100);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_against_brute_force),
         cmocka_unit_test(test_limits_and_monotonic),
         cmocka_unit_test(test_public),
+        cmocka_unit_test(test_public_as_internal),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

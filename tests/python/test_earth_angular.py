@@ -173,17 +173,57 @@ def test_cubature_kernel_acos_polynomial():
             poly = sum(c * x ** i for i, c in enumerate(a))
             worst = max(worst, abs(mpmath.sqrt(1 - x) * poly - mpmath.acos(x)))
     assert worst <= 2.2e-8, worst
+    # acos_approx on [-1, 0): reflected about the polynomial's value at 0,
+    # 2 a0 - acos_poly(|x|), continuous at 0 and within 6.6e-8 of acos
+    with mpmath.workdps(30):
+        worst = 0
+        for k in range(1, 20001):
+            x = mpmath.mpf(k) / 20000
+            poly = sum(c * x ** i for i, c in enumerate(a))
+            worst = max(worst, abs(2 * a[0] - mpmath.sqrt(1 - x) * poly - mpmath.acos(-x)))
+    assert worst <= 6.6e-8, worst
+    assert "OI_R(2.0) * acos_poly[0] - a" in text
+
+
+def test_cubature_sincos_taylor_polynomials():
+    # sincos_small: the Taylor polynomials of sin (to x^13) and cos (to x^14)
+    # with the runtime's coefficients 1/n!, within the stated remainders on
+    # |x| <= 1.05 (mpmath at 30 digits, 2001 points), and the cubature's
+    # angles inside that range (b_m t <= pi t_max; a / 2 < pi / 4)
+    import re
+    import mpmath
+    text = open(os.path.join(ROOT, "src", "earthshine_angular.c")).read()
+    inv = {int(n): (mpmath.mpf(a), mpmath.mpf(b)) for n, a, b in re.findall(
+        r"#define INV_FACT(\d+) \(OI_R\(([0-9.]+)\) / OI_R\(([0-9.]+)\)\)", text)}
+    assert sorted(inv) == list(range(2, 15))
+    for n, (a, b) in inv.items():
+        assert a == 1 and b == mpmath.factorial(n), n
+    with mpmath.workdps(30):
+        ws = wc = 0
+        for k in range(2001):
+            x = mpmath.mpf(1.05) * k / 2000
+            ts = sum((-1) ** j * x ** (2 * j + 1) / mpmath.factorial(2 * j + 1) for j in range(7))
+            tc = sum((-1) ** j * x ** (2 * j) / mpmath.factorial(2 * j) for j in range(8))
+            ws = max(ws, abs(ts - mpmath.sin(x)))
+            wc = max(wc, abs(tc - mpmath.cos(x)))
+    assert ws <= 1.6e-12 and wc <= 1.1e-13, (ws, wc)
+    body = re.search(r"b_rule\[NB_SPHERE / 2\]\[2\] = \{(.*?)\};", text, re.S).group(1)
+    b = [float(v) for v in re.findall(r"OI_R\(([-0-9.e]+)\)", body)]
+    assert math.pi * max(b[0::2]) <= 1.05 and math.pi / 4 <= 1.05
+    # b_weight: the rule's weights, lower half then mirror images
+    body = re.search(r"b_weight\[NB_SPHERE\] = \{(.*?)\};", text, re.S).group(1)
+    assert [float(v) for v in re.findall(r"OI_R\(([-0-9.e]+)\)", body)] == b[1::2] * 2
 
 
 def test_cubature_rules_are_the_gauss_rules():
-    # a_rule: (1 - cos(pi t)) / 2 and pi sin(pi t) / 2 w of the 9-point
-    # Gauss-Legendre rule (t, w) on [0, 1]; b_rule: the 4-point rule's lower
+    # a_rule: (1 - cos(pi t)) / 2 and pi sin(pi t) / 2 w of the
+    # 9-point Gauss-Legendre rule (t, w) on [0, 1]; b_rule: the 4-point rule's lower
     # half (the rule is symmetric: t -> 1 - t, the same weight)
     import re
     import mpmath
     text = open(os.path.join(ROOT, "src", "earthshine_angular.c")).read()
     for name, n, mapped, kept in (("a_rule", 9, True, 9), ("b_rule", 4, False, 2)):
-        body = re.search(name + r"\[N[AB]_SPHERE( / 2)?\]\[2\] = \{(.*?)\};", text, re.S).group(2)
+        body = re.search(name + r"\[N[A-Z_]+( / 2)?\]\[2\] = \{(.*?)\};", text, re.S).group(2)
         with mpmath.workdps(40):
             vals = [mpmath.mpf(v) for v in re.findall(r"OI_R\(([-0-9.e]+)\)", body)]
             assert len(vals) == 2 * kept

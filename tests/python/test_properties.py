@@ -99,6 +99,20 @@ def tol(name):
          rot=np.array([[-1.0, 0.0, 0.0], [0.0, 2.220446049250313e-16, 1.0],
                        [0.0, 1.0, 2.220446049250313e-16]]),
          earth_model=0)
+# at 100,000 km exactly, where a cubature rule switched by altitude once
+# stepped flux_earth by 3.2e-3 between the two sides of the rounding
+@example(scene=(np.array([0.0, 0.0, 1.49597871e+08]), np.array([0.0, 0.0, 106378.137]),
+                np.array([0.0, 0.0, 356000.0]), np.array([0.0, 0.0, 106379.137])),
+         rot=np.array([[-1.0, 0.0, 0.0], [0.0, 2.220446049250313e-16, 1.0],
+                       [0.0, 1.0, 2.220446049250313e-16]]),
+         earth_model=0)
+# the terminator through the sub-target point (theta = pi/2): the lit arc's
+# acos once stepped by 4.4e-8 as cos(theta)'s rounding crossed 0
+@example(scene=(np.array([0.0, 0.0, 1.49597871e+08]), np.array([0.0, 7378.137, 4.12792897e-219]),
+                np.array([0.0, 0.0, 356000.0]), np.array([0.0, 7378.137, 1.0])),
+         rot=np.array([[-1.0, 0.0, 0.0], [0.0, 15.0 / 17.0, 8.0 / 17.0],
+                       [0.0, 8.0 / 17.0, -15.0 / 17.0]]),
+         earth_model=0)
 def test_rotation_invariance(scene, rot, earth_model):
     sun, target, moon, observer = scene
     m = oi.model(earth_model=earth_model)

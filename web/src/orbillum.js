@@ -109,6 +109,9 @@ export class Orbillum {
       name: slot(256), vecs: slot(24 * 4),
     };
     if (at - base > this.x.oi_wasm_scratch_bytes()) throw new Error('scratch area too small');
+    // the rest: the batch calls' arrays (batchRows)
+    this.p.batch = at;
+    this.batchBytes = base + this.x.oi_wasm_scratch_bytes() - at;
     this.cameraList = [];
     for (let i = 0; ; i++) {
       const ptr = this.x.oi_camera_builtin(i);
@@ -205,8 +208,7 @@ export class Orbillum {
   }
 
   /* Write a scene (defaults first, then the given fields) and a model into scratch. */
-  writeScene(scene) {
-    const p = this.p.scene;
+  writeScene(scene, p = this.p.scene) {
     const S = 'oi_scene';
     this.x.oi_scene_defaults(p);
     for (const f of ['sun_km', 'moon_km', 'target_km', 'observer_km']) {
@@ -263,7 +265,8 @@ export class Orbillum {
     const E = 'oi_exposure';
     const out = {};
     for (const f of ['exposure_s', 'gain', 'signal_e', 'background_e', 'peak_e', 'saturation_e',
-      'fill', 'snr', 'sun_angle_rad', 'detect_margin_mag']) out[f] = this.getR(p, E, f);
+      'fill', 'snr', 'sun_angle_rad', 'detect_margin_mag', 'background_w_m2_sr', 'rate_rad_s',
+      'trail_px', 'trail_factor', 'signal_min_e']) out[f] = this.getR(p, E, f);
     out.time_index = this.getI(p, E, 'time_index');
     out.gain_index = this.getI(p, E, 'gain_index');
     out.flags = this.getU(p, E, 'flags');
@@ -358,6 +361,145 @@ export class Orbillum {
     this.setU(p, E, 'flags', flags);
     const st = this.x.oi_expose(camera.ptr, p, 0, this.p.expo);
     return { status: st, expo: this.readExposure(this.p.expo) };
+  }
+
+  /*
+   * Rows [0, n) of a batch call in chunks that fit the scratch's batch area: perRow lists the
+   * bytes per row of each array the call takes (each array 8-byte aligned); run(start, k, ptrs)
+   * writes the chunk's inputs, calls, reads its rows and returns the call's value. Returns the
+   * sum of the chunks' values (rows in error), or the first batch error (negative).
+   */
+  batchRows(n, perRow, run) {
+    const total = perRow.reduce((a, b) => a + b, 0) + 8 * perRow.length;
+    const per = Math.max(1, Math.floor(this.batchBytes / total));
+    let bad = 0;
+    for (let start = 0; start < n || (n === 0 && start === 0); start += per) {
+      const k = Math.min(per, n - start);
+      let at = this.p.batch;
+      const ptrs = perRow.map((b) => { const q = at; at += Math.ceil((b * k) / 8) * 8; return q; });
+      const r = run(start, k, ptrs);
+      if (r < 0) return r;
+      bad += r;
+      if (n === 0) break;
+    }
+    return bad;
+  }
+
+  /** oi_sun_fraction_batch: suns and points are arrays of [x, y, z]; {result, rows: [{status, shadow}]}. */
+  sunFractionBatch(suns, points, model = {}, outputs = this.c.OI_BATCH_ALL) {
+    const pm = this.writeModel(model);
+    const SH = this.layout['sizeof.oi_shadow'];
+    const rows = [];
+    const result = this.batchRows(suns.length, [24, 24, SH, 4], (start, k, [ps, pp, po, pst]) => {
+      for (let i = 0; i < k; i++) for (let j = 0; j < 3; j++) {
+        this.dv.setFloat64(ps + 24 * i + 8 * j, suns[start + i][j], true);
+        this.dv.setFloat64(pp + 24 * i + 8 * j, points[start + i][j], true);
+      }
+      const r = this.x.oi_sun_fraction_batch(k, ps, pp, pm, outputs, po, pst);
+      for (let i = 0; i < k; i++) {
+        rows.push({ status: this.dv.getInt32(pst + 4 * i, true), shadow: this.readShadow(po + SH * i) });
+      }
+      return r;
+    });
+    return { result, rows };
+  }
+
+  readShadow(p) {
+    const H = 'oi_shadow';
+    const out = { region: this.getI(p, H, 'region') };
+    for (const f of ['fraction', 'fraction_ld', 'fraction_atm', 'sun_radius_rad', 'earth_radius_rad',
+      'separation_rad', 'sun_distance_km']) out[f] = this.getR(p, H, f);
+    return out;
+  }
+
+  /** oi_earthshine_batch: {result, rows: [{status, phi, psi}]}. */
+  earthshineBatch(thetas, hKms, model = null) {
+    const pm = model ? this.writeModel(model) : 0;
+    const rows = [];
+    const result = this.batchRows(thetas.length, [8, 8, 8, 8, 4], (start, k, [pt, ph, pphi, ppsi, pst]) => {
+      for (let i = 0; i < k; i++) {
+        this.dv.setFloat64(pt + 8 * i, thetas[start + i], true);
+        this.dv.setFloat64(ph + 8 * i, hKms[start + i], true);
+      }
+      const r = this.x.oi_earthshine_batch(k, pt, ph, pm, pphi, ppsi, pst);
+      for (let i = 0; i < k; i++) {
+        rows.push({ status: this.dv.getInt32(pst + 4 * i, true), phi: this.dv.getFloat64(pphi + 8 * i, true),
+          psi: this.dv.getFloat64(ppsi + 8 * i, true) });
+      }
+      return r;
+    });
+    return { result, rows };
+  }
+
+  /**
+   * oi_illuminate_batch (outputs null) or oi_illuminate_batch_outputs (an OI_BATCH_* mask) over
+   * scenes (writeScene's fields): {result, rows: [{status, illum}]}.
+   */
+  illuminateBatch(scenes, model = {}, outputs = null) {
+    const pm = this.writeModel(model);
+    const SC = this.layout['sizeof.oi_scene'];
+    const IL = this.layout['sizeof.oi_illum'];
+    const rows = [];
+    const result = this.batchRows(scenes.length, [SC, IL, 4], (start, k, [ps, po, pst]) => {
+      for (let i = 0; i < k; i++) this.writeScene(scenes[start + i], ps + SC * i);
+      const r = outputs === null ? this.x.oi_illuminate_batch(k, ps, pm, po, pst)
+        : this.x.oi_illuminate_batch_outputs(k, ps, pm, outputs, po, pst);
+      for (let i = 0; i < k; i++) rows.push({ status: this.dv.getInt32(pst + 4 * i, true), illum: this.readIllum(po + IL * i) });
+      return r;
+    });
+    return { result, rows };
+  }
+
+  /**
+   * oi_expose_batch (outputs null) or oi_expose_batch_outputs (an OI_EXPOSE_* mask) with the
+   * default goal: ins are {flux_w_m2, background_w_m2_sr, flags, rate_rad_s}; {result, rows: [{status, expo}]}.
+   */
+  exposeBatch(camera, ins, outputs = null) {
+    const E = 'oi_expose_in';
+    const IN = this.layout['sizeof.oi_expose_in'];
+    const EX = this.layout['sizeof.oi_exposure'];
+    const rows = [];
+    const result = this.batchRows(ins.length, [IN, EX, 4], (start, k, [pi, po, pst]) => {
+      new Uint8Array(this.memory.buffer, pi, IN * k).fill(0);
+      for (let i = 0; i < k; i++) {
+        const x = ins[start + i];
+        this.setR(pi + IN * i, E, 'flux_w_m2', x.flux_w_m2);
+        this.setR(pi + IN * i, E, 'background_w_m2_sr', x.background_w_m2_sr ?? 0);
+        this.setU(pi + IN * i, E, 'flags', x.flags ?? 0);
+        this.setR(pi + IN * i, E, 'rate_rad_s', x.rate_rad_s ?? 0);
+      }
+      const r = outputs === null ? this.x.oi_expose_batch(k, camera.ptr, pi, 0, po, pst)
+        : this.x.oi_expose_batch_outputs(k, camera.ptr, pi, 0, outputs, po, pst);
+      for (let i = 0; i < k; i++) rows.push({ status: this.dv.getInt32(pst + 4 * i, true), expo: this.readExposure(po + EX * i) });
+      return r;
+    });
+    return { result, rows };
+  }
+
+  /**
+   * oi_illuminate_batch, then oi_expose_scene_batch (outputs null) or
+   * oi_expose_scene_batch_outputs (an OI_EXPOSE_* mask) with the default goal, over scenes:
+   * {result, rows: [{status, illumStatus, expo}]}.
+   */
+  exposeSceneBatch(camera, scenes, model = {}, outputs = null) {
+    const pm = this.writeModel(model);
+    const SC = this.layout['sizeof.oi_scene'];
+    const IL = this.layout['sizeof.oi_illum'];
+    const EX = this.layout['sizeof.oi_exposure'];
+    const rows = [];
+    const result = this.batchRows(scenes.length, [SC, IL, EX, 4, 4], (start, k, [ps, pl, po, pist, pst]) => {
+      for (let i = 0; i < k; i++) this.writeScene(scenes[start + i], ps + SC * i);
+      const ri = this.x.oi_illuminate_batch(k, ps, pm, pl, pist);
+      if (ri < 0) return ri;
+      const r = outputs === null ? this.x.oi_expose_scene_batch(k, camera.ptr, ps, pl, pm, 0, po, pst)
+        : this.x.oi_expose_scene_batch_outputs(k, camera.ptr, ps, pl, pm, 0, outputs, po, pst);
+      for (let i = 0; i < k; i++) {
+        rows.push({ status: this.dv.getInt32(pst + 4 * i, true), illumStatus: this.dv.getInt32(pist + 4 * i, true),
+          expo: this.readExposure(po + EX * i) });
+      }
+      return r;
+    });
+    return { result, rows };
   }
 
   /**
