@@ -11,6 +11,7 @@
  * them (src/sun_crescent.h), eight rows at a time in a vectorised loop.
  */
 #include "oi_internal.h"
+#include "fp_quiet.h"
 #include "sun_crescent.h"
 
 /* The checks common to every batch: n, the required pointers. */
@@ -328,9 +329,12 @@ static long crescent_flush(crescent_rows *c, const oi_real *sun_km, const oi_rea
     unsigned outside;
     long bad = 0;
     int j;
+    oi_fp_status fp;
     for (j = c->n; j < CRESCENT_ROWS; j++) c->row[j] = c->row[0];
+    fp = oi__fp_quiet_begin();
     outside = crescent_block(sun_km, point_km, c->row, c->n, m->earth_radius_km,
                              m->sun_radius_km, out);
+    oi__fp_quiet_end(fp);
     if (outside != 0u) {
         for (j = 0; j < c->n; j++) {
             const long i = c->row[j];
@@ -408,8 +412,10 @@ int oi_sun_fraction_batch(long n, const oi_real *sun_km, const oi_real *point_km
         /* without the geometry asked, the rows certainly lit (or in the
          * umbra, or in the penumbra) first, from cosines; the others in full */
         if (!(outputs & OI_BATCH_GEOMETRY) && k == CLASSIFY_ROWS) {
+            const oi_fp_status fp = oi__fp_quiet_begin();
             classify_block(sun_km + 3 * b, point_km + 3 * b, &m, lit_radius,
                            atm_on ? (oi_real)0 : (oi_real)1, pen_on, code);
+            oi__fp_quiet_end(fp);
             decided_block(code, &decided, out + b, status + b, todo);
             /* eight rows at a time: all decided, all the crescent's, or one by one */
             for (j = 0; j < k; j += 8) {

@@ -3,6 +3,7 @@
  * under earthshine, by a cubature over the visible sunlit cap (default) or
  * from the angular table's moments (oi_earth_angular_table, include/oi_table.h;
  * docs/earthshine-angular.md), and oi_earthshine_sphere. */
+#include "fp_quiet.h"
 #include "oi_tables_internal.h"
 
 #ifndef OI_NO_EARTH_ANGULAR
@@ -423,6 +424,7 @@ static OI_NOINLINE oi_real cubature_flux(oi_real theta_cs, oi_real cos_theta, oi
      * follow its vectorised loops and would report them uninitialised */
     oi_real term[NODE_BLOCK] = {(oi_real)0};
     int n, p, q, i, count = 0;
+    oi_fp_status fp;
 
     r = R + h_km;
     g.rp = R / r;
@@ -437,6 +439,7 @@ static OI_NOINLINE oi_real cubature_flux(oi_real theta_cs, oi_real cos_theta, oi
     g.o[2] = o[2];
     n = oi__cap_breaks_at(bp, N_BREAK_SPHERE, g.hp, g.rp, theta_cs, &a_max);
     n = oi__cap_breaks_altitude(bp, N_BREAK_SPHERE, n, N_GEO_SPHERE, g.hp, g.rp, a_max);
+    fp = oi__fp_quiet_begin(); /* the blocks' discarded rings */
     for (p = 0; p + 1 < n; p++) {
         const oi_real a0 = bp[p], width = bp[p + 1] - bp[p];
         if (!(width > (oi_real)0)) continue;
@@ -463,6 +466,7 @@ static OI_NOINLINE oi_real cubature_flux(oi_real theta_cs, oi_real cos_theta, oi
             node_block(&g, a, aw, term);
         for (i = 0; i < count; i++) flux += term[i];
     }
+    oi__fp_quiet_end(fp);
     flux *= g.rp * g.rp / OI_PI_R;
     return flux > (oi_real)0 ? flux : (oi_real)0;
 }

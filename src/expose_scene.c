@@ -218,7 +218,9 @@ static OI_NOINLINE int earth_in_fov(const oi_scene *scene, const scene_geom *g, 
     const oi_real one = OI_R(1.0);
     oi_real sin_rho, cos_rho, cos_g, sin_g, sin_gr, cos_gr;
     oi_real u[3]; /* unit vector of the observer, then u x bh */
-    sin_rho = g->re / g->r_obs;
+    /* an observer inside the sphere of radius re (above the ellipsoid,
+     * OI_EARTH_WGS84): the disc taken as the hemisphere below its horizon */
+    sin_rho = g->r_obs > g->re ? g->re / g->r_obs : one;
     cos_rho = OI_SQRT((one - sin_rho) * (one + sin_rho));
     u[0] = scene->observer_km[0] / g->r_obs;
     u[1] = scene->observer_km[1] / g->r_obs;

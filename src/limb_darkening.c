@@ -3,6 +3,7 @@
  * when the Earth's disc hides part of it (oi__fraction_limb_darkened;
  * internal, called by oi_sun_fraction). Method and accuracy: docs/shadow.md.
  * Reference: Neckel, H. & Labs, D. 1994, Sol. Phys. 153, 91. */
+#include "fp_quiet.h"
 #include "oi_internal.h"
 
 #ifndef OI_NO_LIMB_DARKENING
@@ -271,7 +272,9 @@ oi_real oi__fraction_limb_darkened(oi_real rs, oi_real re, oi_real sep, oi_real 
     const oi_real b = sep - re;
     oi_real lim, sum = (oi_real)0, res, t;
     int grade, i, j, k;
+    oi_fp_status fp;
     res = ld_setup(rs, re, sep, b, tri, &g, &grade, &lim); /* P(1) */
+    fp = oi__fp_quiet_begin(); /* ld_node_values' discarded nodes */
 
     /* panels in phi = pi/2 - theta: [0, pi/2] undivided (nodes and their
      * sines tabulated), or graded: [q/2, q] for q = pi/2, pi/4, ... while
@@ -306,6 +309,7 @@ oi_real oi__fraction_limb_darkened(oi_real rs, oi_real re, oi_real sep, oi_real 
         if (!(lo > (oi_real)0)) break;
         t = lo;
     }
+    oi__fp_quiet_end(fp);
     sum /= OI_PI_R * res;
     if (g.p1 > (oi_real)0) res = pa_s / OI_PI_R + sum;
     else if (b > (oi_real)0) res = (oi_real)1 - sum;

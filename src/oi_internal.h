@@ -19,7 +19,9 @@
 
 /* GCC if-converts (and so vectorises) a loop's comparisons and selects only
  * when they may not trap: the attribute says so for one function whose
- * results do not depend on it (no floating-point exception is read). */
+ * results do not depend on it. Its callers bracket its calls with
+ * src/fp_quiet.h, so that the exceptions raised on the lanes a select
+ * discards neither trap nor stay flagged. */
 #if defined(__GNUC__) && !defined(__clang__)
 #define OI_VECTORISE_COMPARES __attribute__((optimize("no-trapping-math")))
 #else

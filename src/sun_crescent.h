@@ -12,8 +12,9 @@
  * Bit-identity of the two callers rests on every operation rounding once in
  * the order written: C99 with -std=c99 (GCC: -ffp-contract=off), no
  * -ffast-math. Every value is an oi_real and every choice a select, so that
- * GCC if-converts the loop (with trapping math off for that loop only: no
- * floating-point exception is read).
+ * GCC if-converts the loop (with trapping math off for that loop only; the
+ * exceptions its discarded lanes raise are masked and cleared by the
+ * caller, src/fp_quiet.h).
  */
 #ifndef OI_SUN_CRESCENT_H
 #define OI_SUN_CRESCENT_H
