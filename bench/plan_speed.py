@@ -8,7 +8,7 @@ best child CPU time (user + system, getrusage) gives rows per CPU-second. Its
 output is checked to be the golden output repeated, byte for byte. With
 valgrind, callgrind counts the instructions per row on --cg-copies copies and
 the part inside the library (oi_illuminate or oi_illuminate_batch_outputs,
-and oi_expose_scene, inclusive); with --baseline also the bound the library
+and oi_expose_scene or oi_expose_scene_batch, inclusive); with --baseline also the bound the library
 sets: the original's instructions per row over the library's alone, and,
 where perf runs, the same bound in CPU time (the share of perf's samples in
 the library's functions, named by nm from build/liborbillum.a, and libm).
@@ -79,7 +79,7 @@ def callgrind(plan, path, tmp):
         if "PROGRAM TOTALS" in line:
             total = n
         else:
-            f = re.search(r":(oi_illuminate|oi_illuminate_batch_outputs|oi_expose_scene) ", line)
+            f = re.search(r":(oi_illuminate|oi_illuminate_batch_outputs|oi_expose_scene|oi_expose_scene_batch) ", line)
             if f:
                 per_fn[f.group(1)] = max(per_fn.get(f.group(1), 0), n)
     return total, sum(per_fn.values())
@@ -177,7 +177,7 @@ def main():
                 total, lib = callgrind(a.plan, cpath, tmp)
                 put(f"plan.{case}.instructions_per_row", f"{total / crows:.0f}", "instructions",
                     f"callgrind, {crows} rows; the library (oi_illuminate or its batch, "
-                    f"oi_expose_scene) "
+                    f"oi_expose_scene or its batch) "
                     f"{lib / crows:.0f} ({100.0 * lib / total:.0f} %)")
                 if a.baseline:
                     btotal, blib = callgrind(a.baseline, cpath, tmp)

@@ -106,6 +106,8 @@ typedef struct pending {
     oi_scene scenes[PENDING_MAX];
     oi_illum illum[PENDING_MAX];
     int status[PENDING_MAX];
+    oi_exposure expo[PENDING_MAX];
+    int expo_status[PENDING_MAX];
     pending_row rows[PENDING_MAX];
     char ids[PENDING_ID_BYTES];
 } pending;
@@ -667,11 +669,11 @@ static int parse_row(batch *b, const csv_reader *r, plan_row *row, oi_scene *sce
     return 1;
 }
 
-/* The rest of a parsed row once its illumination is in (status st): flags,
- * the exposure, messages. Returns 1 when the row is OK (or a warning), 0
- * when it is an error. */
+/* The rest of a parsed row once its illumination (status st) and, with an
+ * observer, its exposure (status st2) are in: flags, messages. Returns 1
+ * when the row is OK (or a warning), 0 when it is an error. */
 static int finish_row(batch *b, const oi_scene *sc, const oi_illum *illum, int st,
-                      pending_row *p)
+                      const oi_exposure *expo, int st2, pending_row *p)
 {
     plan_row *row = &p->row;
     row->illum = *illum;
@@ -688,7 +690,7 @@ static int finish_row(batch *b, const oi_scene *sc, const oi_illum *illum, int s
     }
     if (row->illum.sun_moon_hidden > (oi_real)0) row->flags |= OI_FLAG_MOON_SHADOW;
     if (sc->has_observer) {
-        int st2 = oi_expose_scene(p->camera, sc, &row->illum, &p->model, &p->goal, &row->expo);
+        row->expo = *expo;
         if (st2 < 0) {
             row->status = st2;
             row->status_name = oi_status_name(st2);
@@ -700,6 +702,13 @@ static int finish_row(batch *b, const oi_scene *sc, const oi_illum *illum, int s
     }
     row->has_numbers = 1;
     return 1;
+}
+
+/* Whether row i of the block gets an exposure: parsed, with an observer,
+ * its illumination computed. */
+static int exposes(const pending *q, long i)
+{
+    return q->rows[i].compute && q->status[i] >= 0 && q->scenes[i].has_observer;
 }
 
 /* Compute the block's parsed rows (one library call per run of rows with
@@ -723,9 +732,30 @@ static void flush_pending(batch *b)
                                           q->illum + i, q->status + i);
         i = j;
     }
+    /* the exposures: one call per run of rows with an observer and their
+     * illumination computed under the same camera, model and goal (the
+     * batch's rows are the single calls' bit for bit) */
+    i = 0;
+    while (i < q->n) {
+        if (!exposes(q, i)) {
+            i++;
+            continue;
+        }
+        for (j = i + 1; j < q->n && exposes(q, j) && q->rows[j].camera == q->rows[i].camera &&
+                        memcmp(&q->rows[j].model, &q->rows[i].model, sizeof q->rows[i].model) == 0 &&
+                        memcmp(&q->rows[j].goal, &q->rows[i].goal, sizeof q->rows[i].goal) == 0;
+             j++) {
+        }
+        (void)oi_expose_scene_batch(j - i, q->rows[i].camera, q->scenes + i, q->illum + i,
+                                    &q->rows[i].model, &q->rows[i].goal, q->expo + i,
+                                    q->expo_status + i);
+        i = j;
+    }
     for (i = 0; i < q->n; i++) {
         pending_row *p = &q->rows[i];
-        if (p->compute && !finish_row(b, &q->scenes[i], &q->illum[i], q->status[i], p)) b->bad++;
+        if (p->compute && !finish_row(b, &q->scenes[i], &q->illum[i], q->status[i], &q->expo[i],
+                                      q->expo_status[i], p))
+            b->bad++;
         out_csv_row(b->out, p->id, &p->row);
         if (b->summary && windows_add(b->wins, p->id, &p->row) != 0) {
             fprintf(stderr, "oi-plan: out of memory: no window summary\n");
