@@ -425,6 +425,87 @@ static void test_exposure(void)
 }
 #endif
 
+#if defined(__ARM_FP)
+/* FPSCR's cumulative exception flags: IOC (bit 0), DZC (1), OFC (2); UFC,
+ * IXC and IDC (3, 4, 7) are the arithmetic's normal work. */
+#define FPSCR_HARMFUL (0x7u)
+#define FPSCR_FLAGS (0x9Fu)
+
+static uint32_t fpscr_read(void)
+{
+    uint32_t v;
+    __asm__ __volatile__("vmrs %0, fpscr" : "=r"(v));
+    return v;
+}
+
+static void fpscr_clear_flags(void)
+{
+    const uint32_t v = fpscr_read() & ~FPSCR_FLAGS;
+    __asm__ __volatile__("vmsr fpscr, %0" : : "r"(v));
+}
+
+/* A valid call raises no invalid-operation, division-by-zero or overflow
+ * flag on the target either (tests/c/test_fp_exceptions.c on the host):
+ * LEO, GEO and cislunar targets, lit, in the penumbra's middle and in the
+ * umbra, the Sun on +x, observers 50 km away; the default model, the
+ * limb-darkened disc and the WGS-84 Earth. */
+static void test_fp_flags(void)
+{
+    static const double radius[3] = {RE + 500.0, 42164.0, 200000.0};
+    oi_scene s;
+    oi_illum il;
+    oi_model m;
+    size_t b;
+    int o, l, k;
+    for (k = 0; k < 3; k++) {
+        for (o = 0; o < 3; o++) {
+            for (l = 0; l < 3; l++) {
+                const double r = radius[o];
+                /* the penumbra's middle at x behind the Earth: rho = R + x R / AU
+                 * (between the umbra's R - x (R_sun - R) / d and the
+                 * penumbra's R + x (R_sun + R) / d) */
+                double x = 0.9 * r, rho = l == 1 ? RE + 0.9 * r * RE / AU : 0.3 * RE;
+                uint32_t f;
+                int st;
+                x = r * r > rho * rho ? __builtin_sqrt(r * r - rho * rho) : 0.0;
+                oi_scene_defaults(&s);
+                set3(s.sun_km, AU, 0, 0);
+                set3(s.moon_km, -300000, 200000, 1000);
+                if (l == 0)
+                    set3(s.target_km, 0.5 * r, 0.866 * r, 0.01 * r);
+                else
+                    set3(s.target_km, -x, rho, 0.0);
+                set3(s.observer_km, (double)s.target_km[0] + 30.0, (double)s.target_km[1] + 40.0,
+                     (double)s.target_km[2]);
+                s.has_observer = 1;
+                s.terms = OI_TERM_ALL;
+                for (b = 0; b < sizeof m; b++) ((unsigned char *)&m)[b] = 0;
+                if (k == 1) m.limb_darkening = OI_LIMB_DARKENED;
+                if (k == 2) m.earth_shape = OI_EARTH_WGS84;
+                fpscr_clear_flags();
+                st = oi_illuminate(&s, &m, &il);
+                f = fpscr_read() & FPSCR_HARMFUL;
+                check_true("fp flags: illuminate computes", st >= 0);
+                check_int("fp flags: oi_illuminate raises none", 0, (long)f);
+                fpscr_clear_flags();
+                (void)oi_sun_fraction(s.sun_km, s.target_km, &m, &il.shadow);
+                check_int("fp flags: oi_sun_fraction raises none", 0, (long)(fpscr_read() & FPSCR_HARMFUL));
+#ifndef OI_NO_EXPOSURE
+                {
+                    oi_exposure ex;
+                    (void)oi_illuminate(&s, &m, &il);
+                    fpscr_clear_flags();
+                    st = oi_expose_scene(oi_camera_builtin(0), &s, &il, &m, NULL, &ex);
+                    check_true("fp flags: expose_scene computes", st >= 0);
+                    check_int("fp flags: oi_expose_scene raises none", 0, (long)(fpscr_read() & FPSCR_HARMFUL));
+                }
+#endif
+            }
+        }
+    }
+}
+#endif
+
 /* thunks for the stack probe: the worst inputs we know (penumbra, all
  * terms, observer) */
 static oi_scene probe_s;
@@ -513,6 +594,9 @@ int main(void)
     golden_shadow();
     golden_earthshine();
     golden_stability();
+#if defined(__ARM_FP)
+    test_fp_flags();
+#endif
     report_stack("oi_sun_fraction", probe_sun_fraction);
     report_stack("oi_earthshine", probe_earthshine);
     setup_illuminate();
