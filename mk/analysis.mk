@@ -30,30 +30,21 @@ PLAN_LIB_SRC := $(filter-out examples/oi_plan/main.c,$(PLAN_SRC))
 .PHONY: fuzz fuzz-ci fuzz-replay fuzz-build sanitize analyze \
         analyze-cppcheck analyze-gcc analyze-clang
 
-# ---- libFuzzer targets: the runtime compiled into each binary with the sanitizers.
-$(FUZZ_DIR)/double/fuzz_api: fuzz/fuzz_api.c fuzz/fuzz_common.h $(RT_SRC) | deps-fuzz
-	@mkdir -p $(dir $@)
-	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer $< $(RT_SRC) -lm -o $@
+# ---- libFuzzer targets: the runtime compiled into each binary with the sanitizers, once per
+# precision (the binary's directory): fuzz_api and fuzz_batch on the runtime alone, fuzz_csv
+# with the planner's reader.
+FUZZ_PREC_double :=
+FUZZ_PREC_float := -DOI_SINGLE_PRECISION
+define FUZZ_RULES
+$(FUZZ_DIR)/$(1)/fuzz_api $(FUZZ_DIR)/$(1)/fuzz_batch: $(FUZZ_DIR)/$(1)/fuzz_%: fuzz/fuzz_%.c fuzz/fuzz_common.h $(RT_SRC) | deps-fuzz
+	@mkdir -p $$(dir $$@)
+	$$(FUZZ_CC) $$(FUZZ_CFLAGS) $(FUZZ_PREC_$(1)) -fsanitize=fuzzer $$< $$(RT_SRC) -lm -o $$@
 
-$(FUZZ_DIR)/float/fuzz_api: fuzz/fuzz_api.c fuzz/fuzz_common.h $(RT_SRC) | deps-fuzz
-	@mkdir -p $(dir $@)
-	$(FUZZ_CC) $(FUZZ_CFLAGS) -DOI_SINGLE_PRECISION -fsanitize=fuzzer $< $(RT_SRC) -lm -o $@
-
-$(FUZZ_DIR)/double/fuzz_csv: fuzz/fuzz_csv.c $(PLAN_SRC) $(RT_SRC) | deps-fuzz
-	@mkdir -p $(dir $@)
-	$(FUZZ_CC) $(FUZZ_CFLAGS) -Iexamples/oi_plan -fsanitize=fuzzer $< $(PLAN_LIB_SRC) $(RT_SRC) -lm -o $@
-
-$(FUZZ_DIR)/float/fuzz_csv: fuzz/fuzz_csv.c $(PLAN_SRC) $(RT_SRC) | deps-fuzz
-	@mkdir -p $(dir $@)
-	$(FUZZ_CC) $(FUZZ_CFLAGS) -DOI_SINGLE_PRECISION -Iexamples/oi_plan -fsanitize=fuzzer $< $(PLAN_LIB_SRC) $(RT_SRC) -lm -o $@
-
-$(FUZZ_DIR)/double/fuzz_batch: fuzz/fuzz_batch.c fuzz/fuzz_common.h $(RT_SRC) | deps-fuzz
-	@mkdir -p $(dir $@)
-	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer $< $(RT_SRC) -lm -o $@
-
-$(FUZZ_DIR)/float/fuzz_batch: fuzz/fuzz_batch.c fuzz/fuzz_common.h $(RT_SRC) | deps-fuzz
-	@mkdir -p $(dir $@)
-	$(FUZZ_CC) $(FUZZ_CFLAGS) -DOI_SINGLE_PRECISION -fsanitize=fuzzer $< $(RT_SRC) -lm -o $@
+$(FUZZ_DIR)/$(1)/fuzz_csv: fuzz/fuzz_csv.c $(PLAN_SRC) $(RT_SRC) | deps-fuzz
+	@mkdir -p $$(dir $$@)
+	$$(FUZZ_CC) $$(FUZZ_CFLAGS) $(FUZZ_PREC_$(1)) -Iexamples/oi_plan -fsanitize=fuzzer $$< $$(PLAN_LIB_SRC) $$(RT_SRC) -lm -o $$@
+endef
+$(foreach p,double float,$(eval $(call FUZZ_RULES,$(p))))
 
 fuzz-build: $(FUZZ_BINS) ## build the libFuzzer targets (both precisions)
 
