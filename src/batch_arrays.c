@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The batch calls' checks of the caller's arrays (src/batch.c,
  * src/expose_batch.c): alignment, length within the address space, no

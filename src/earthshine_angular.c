@@ -173,11 +173,6 @@ static const oi_real b_rule[NB_SPHERE / 2][2] = {
     { OI_R(0.06943184420297371238803), OI_R(0.1739274225687269286865) },
     { OI_R(0.3300094782075718675987), OI_R(0.3260725774312730713135) },
 };
-/* The azimuth rule's weights in the cubature's node order: the lower
- * half's, then their mirror images'. */
-static const oi_real b_weight[NB_SPHERE] = {
-    OI_R(0.1739274225687269286865), OI_R(0.3260725774312730713135),
-    OI_R(0.1739274225687269286865), OI_R(0.3260725774312730713135)};
 
 /* Break points of the a range: 0, the horizon, the terminator's tangency
  * and up to N_GEO_SPHERE multiples of the altitude (the 1/d^3 peak). */
@@ -319,7 +314,7 @@ static OI_ALWAYS_INLINE OI_VECTORISE_COMPARES void rings(const cap_geometry *g, 
     int i, k;
 
     for (i = 0; i < nb; i++) {
-        oi_real sh, ch, sa, sh2, cb, d2, dd;
+        oi_real sh, ch, sa, sh2, cb, cc, d2, dd;
         sincos_small(OI_R(0.5) * a[i], &sh, &ch);
         sa = OI_R(2.0) * sh * ch;
         sh2 = sh * sh;
@@ -336,7 +331,10 @@ static OI_ALWAYS_INLINE OI_VECTORISE_COMPARES void rings(const cap_geometry *g, 
         bm[i] = cb <= OI_R(-1.0) ? OI_PI_R : acos_approx(cb);
         cb = cb <= OI_R(-1.0) ? OI_R(-1.0) : cb;
         cbm[i] = cb;
-        sbm[i] = OI_SQRT(((oi_real)1 - cb) * ((oi_real)1 + cb)); /* 0 at cb = -1 */
+        /* 0 at cb = -1; a dark ring's (cb >= 1, its term selected away)
+         * from cb = 1: no square root of a negative number */
+        cc = cb < (oi_real)1 ? cb : (oi_real)1;
+        sbm[i] = OI_SQRT(((oi_real)1 - cc) * ((oi_real)1 + cc));
         d2 = hp2 + rp4 * sh2;
         dd = OI_SQRT(d2);
         rho[i] = rp * sa / dd;           /* omega's horizontal part */
@@ -361,7 +359,7 @@ static OI_ALWAYS_INLINE OI_VECTORISE_COMPARES void rings(const cap_geometry *g, 
             const oi_real snk = sn[k][i], csk = cs[k][i];
             const oi_real lit = lit0[i] + lit1[i] * csk;
             const oi_real u = rho[i] * csk * o0 + zc[i] * o2;
-            const oi_real v = rho[i] * snk * o1, weighted = b_weight[k] * lit;
+            const oi_real v = rho[i] * snk * o1, weighted = b_rule[k % (NB_SPHERE / 2)][1] * lit;
             const oi_real wl = lit > (oi_real)0 ? weighted : (oi_real)0;
             ring[i] += wl * (phase_of_cos(u + v) + phase_of_cos(u - v));
         }

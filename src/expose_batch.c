@@ -75,13 +75,6 @@ static void clear_unasked(unsigned outputs, oi_exposure *out)
     if ((outputs & OI_EXPOSE_RATE) == 0u) out->rate_rad_s = 0;
 }
 
-/* What oi__expose_planned computes for the mask. */
-static unsigned need_of(unsigned outputs)
-{
-    return ((outputs & (OI_EXPOSE_SETTING | OI_EXPOSE_DETECT)) != 0u ? OI__EXPOSE_SEARCH : 0u) |
-           ((outputs & OI_EXPOSE_FAINT) != 0u ? OI__EXPOSE_FAINT : 0u);
-}
-
 /* A computed row with its status st: zeroed when st is an error (1 is
  * returned, the batch's count of such rows), else the fields the mask
  * leaves out cleared (0). */
@@ -110,7 +103,7 @@ int oi_expose_batch_outputs(long n, const oi_camera *camera, const oi_expose_in 
     if (!oi__camera_valid(camera))
         return oi__batch_fail(OI_ERR_CAMERA, n, status, out, sizeof *out, 1);
     oi__expose_plan_make(camera, goal, &plan);
-    need = need_of(outputs);
+    need = oi__expose_need(outputs);
     for (i = 0; i < n; i++) {
         memset(&out[i], 0, sizeof out[i]);
         status[i] = oi__expose_planned(camera, &plan, goal, &in[i], need, &out[i]);

@@ -478,7 +478,6 @@ int oi__expose_scene_row(const oi_camera *camera, const oi_scene *scene, const o
     int st, use_moon, moon_hit = 0, lit_ground, excluded;
     const unsigned sky = goal != NULL ? goal->sky : 0u;
     const unsigned outputs = b != NULL ? b->outputs : (unsigned)OI_EXPOSE_ALL;
-    unsigned need;
 
     /* the Moon's position is read only with OI_TERM_MOON (as oi_illuminate) */
 #ifndef OI_NO_MOON
@@ -530,9 +529,8 @@ int oi__expose_scene_row(const oi_camera *camera, const oi_scene *scene, const o
     in.flags |= region_flags(illum->shadow.region);
     if (illum->sun_moon_hidden > (oi_real)0) in.flags |= OI_FLAG_MOON_SHADOW;
 
-    need = ((outputs & (OI_EXPOSE_SETTING | OI_EXPOSE_DETECT)) != 0u ? OI__EXPOSE_SEARCH : 0u) |
-           ((outputs & OI_EXPOSE_FAINT) != 0u ? OI__EXPOSE_FAINT : 0u);
-    st = oi__expose_planned(camera, b != NULL ? &b->plan : NULL, goal, &in, need, out);
+    st = oi__expose_planned(camera, b != NULL ? &b->plan : NULL, goal, &in,
+                            oi__expose_need(outputs), out);
     if (st < 0) return st;
     out->sun_angle_rad = sun_angle;
     return st;

@@ -131,9 +131,7 @@ void oi__shape_flux(const oi_scene *s, const oi_model *m, oi_illum *out)
     unsigned i, n = shape->n_facets;
     int side;
 
-    /* the unit vector to the observer, formed as oi_illuminate's observer term does */
-    oi__sub(s->observer_km, s->target_km, obs_hat);
-    (void)oi__unit(obs_hat, obs_hat);
+    (void)oi__observer_direction(s, obs_hat);
     out->flux_sun = out->flux_earth = out->flux_moon = out->flux_sky = (oi_real)0;
     (void)oi__quat_unit(s->attitude_q, fs.q);
     fs.cubature = oi__plate_cubature(m) && out->e_earth > (oi_real)0;

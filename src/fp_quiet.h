@@ -12,8 +12,10 @@
  * call of the library raises no floating-point exception
  * (tests/c/test_fp_exceptions.c). x86-64: MXCSR; AArch64: FPCR's trap
  * enables and FPSR; 32-bit Arm with a floating-point unit (the Cortex-M4F
- * and M7, which have no traps): FPSCR's flags. Elsewhere nothing is done
- * (without GCC the blocks are compiled with trapping math).
+ * and M7, which have no traps): FPSCR's flags. Elsewhere nothing is done:
+ * there OI_VECTORISE_COMPARES is empty, the blocks keep trapping math, and
+ * their source clamps what a discarded lane would take a square root of or
+ * divide by, so that they raise nothing either.
  */
 #ifndef OI_FP_QUIET_H
 #define OI_FP_QUIET_H

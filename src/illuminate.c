@@ -416,13 +416,6 @@ static OI_NOINLINE int sky_term(const oi_scene *scene, const oi_model *m, oi_ill
 }
 #endif
 
-/* The unit vector from the target to the observer; returns the range (km). */
-static oi_real observer_direction(const oi_scene *scene, oi_real obs_hat[3])
-{
-    oi__sub(scene->observer_km, scene->target_km, obs_hat);
-    return oi__unit(obs_hat, obs_hat);
-}
-
 /* The target's radius over its range from the observer (both in metres). */
 static oi_real radius_over_range(const oi_scene *scene, const oi_illum *out)
 {
@@ -459,7 +452,7 @@ static OI_NOINLINE void earth_flux_moments(const oi_scene *scene, const oi_model
     oi_real obs_hat[3], o[3], cs[2], shape, ratio;
     if (oi__earth_angular_of(m) == NULL || !(out->e_earth > (oi_real)0) || scene->shape != NULL)
         return;
-    (void)observer_direction(scene, obs_hat);
+    (void)oi__observer_direction(scene, obs_hat);
     sphere_local(scene, obs_hat, o, cs);
     if (!oi__earth_sphere_shape(m, out->earth_theta, cs[0], cs[1], out->earth_h_km,
                                 m->earth_radius_km, o, out->earth_phi, &shape))
@@ -477,7 +470,7 @@ static OI_NOINLINE void earth_flux_moments(const oi_scene *scene, const oi_model
 static OI_NOINLINE int observer_term(const oi_scene *scene, oi_illum *out)
 {
     oi_real obs_hat[3], ratio;
-    out->range_km = observer_direction(scene, obs_hat);
+    out->range_km = oi__observer_direction(scene, obs_hat);
     /* radius and range in the same unit */
     ratio = radius_over_range(scene, out);
     if (!(ratio < (oi_real)1)) return OI_ERR_OBSERVER_AT_TARGET;

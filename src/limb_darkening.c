@@ -177,7 +177,10 @@ ld_node_values(const ld_geom *g, const oi_real sph[LD_BLOCK], const oi_real cph[
     }
     for (n = 0; n < LD_BLOCK; ++n) {
         oi_real pm = acc[n] * m2[n];
-        oi_real v = (p1 > (oi_real)0 ? p1 - pm : pm) * (n0 - n1 * st2[n]) * sph[n] / den[n];
+        /* a node whose den is not positive is divided by 1 (its value
+         * selected away): no quotient by zero */
+        oi_real v = (p1 > (oi_real)0 ? p1 - pm : pm) * (n0 - n1 * st2[n]) * sph[n] /
+                    (den[n] > (oi_real)0 ? den[n] : (oi_real)1);
         val[n] = den[n] > (oi_real)0 ? v : (oi_real)0;
     }
 }

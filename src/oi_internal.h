@@ -21,8 +21,11 @@
  * when they may not trap: the attribute says so for one function whose
  * results do not depend on it. Its callers bracket its calls with
  * src/fp_quiet.h, so that the exceptions raised on the lanes a select
- * discards neither trap nor stay flagged. */
-#if defined(__GNUC__) && !defined(__clang__)
+ * discards neither trap nor stay flagged; hence only where that bracket
+ * has a floating-point status to work on (elsewhere the blocks keep
+ * trapping math, and their source raises nothing on a discarded lane). */
+#if defined(__GNUC__) && !defined(__clang__) &&                                                  \
+    (defined(__SSE2__) || defined(__aarch64__) || (defined(__arm__) && defined(__ARM_FP)))
 #define OI_VECTORISE_COMPARES __attribute__((optimize("no-trapping-math")))
 #else
 #define OI_VECTORISE_COMPARES
@@ -151,6 +154,15 @@ static inline oi_real oi__norm_bounded(const oi_real a[3])
 static inline oi_real oi__unit_bounded(const oi_real a[3], oi_real out[3])
 {
     return oi__divide3(a, oi__norm_bounded(a), out);
+}
+
+/* The unit vector from a scene's target to its observer; returns the range
+ * (km). One definition: the observer's terms and the facets' use the same
+ * bits. */
+static inline oi_real oi__observer_direction(const oi_scene *scene, oi_real obs_hat[3])
+{
+    oi__sub(scene->observer_km, scene->target_km, obs_hat);
+    return oi__unit(obs_hat, obs_hat);
 }
 
 /* Angle between two unit vectors, atan2(|a x b|, a . b) (see oi_angle). */
@@ -673,6 +685,13 @@ typedef struct {
  * the detection margin and OI_FLAG_SATURATED) and OI_FLAG_TOO_FAINT. */
 #define OI__EXPOSE_SEARCH (1u)
 #define OI__EXPOSE_FAINT  (2u)
+
+/* What an outputs mask (OI_EXPOSE_*) needs of the choice: OI__EXPOSE_* bits. */
+static inline unsigned oi__expose_need(unsigned outputs)
+{
+    return ((outputs & (OI_EXPOSE_SETTING | OI_EXPOSE_DETECT)) != 0u ? OI__EXPOSE_SEARCH : 0u) |
+           ((outputs & OI_EXPOSE_FAINT) != 0u ? OI__EXPOSE_FAINT : 0u);
+}
 
 void oi__expose_plan_make(const oi_camera *camera, const oi_expose_goal *goal,
                           oi__expose_plan *p);

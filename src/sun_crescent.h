@@ -24,13 +24,8 @@
 #ifndef OI_SINGLE_PRECISION
 #define OI_CRESCENT_KERNEL 1
 
-/* Inlined into the batch's loop whatever its size (GCC, clang: the loop is
- * vectorised only with no call in it); elsewhere a plain inline. */
-#if defined(__GNUC__)
-#define OI_CRESCENT_INLINE static inline __attribute__((always_inline))
-#else
-#define OI_CRESCENT_INLINE static inline
-#endif
+/* Inlined into the batch's loop whatever its size (OI_ALWAYS_INLINE). */
+#define OI_CRESCENT_INLINE static OI_ALWAYS_INLINE
 
 /* Veltkamp's split without oi__split's volatile (a vectorised loop cannot
  * hold one): exact when products are not fused (see above). */
