@@ -135,7 +135,8 @@ static int same_nocase(const char *a, const char *b)
 static void row_error(batch *b, unsigned long line, long field, const char *what,
                       const char *detail)
 {
-    flush_pending(b);
+    /* the rows read before it are written first, while messages are printed */
+    if (b->messages < MAX_ROW_MESSAGES) flush_pending(b);
     if (++b->messages > MAX_ROW_MESSAGES) {
         if (b->messages == MAX_ROW_MESSAGES + 1) {
             fprintf(stderr, "oi-plan: %s: more row errors; further messages suppressed "

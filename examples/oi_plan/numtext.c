@@ -540,36 +540,53 @@ static NUM_INLINE uint32_t eight_values(uint64_t x)
 static const uint64_t POW10_U64[9] = {1u, 10u, 100u, 1000u, 10000u, 100000u, 1000000u,
                                       10000000u, 100000000u};
 
+/* Count of digit bytes leading the eight of x (little-endian, 0..8): a byte
+ * is a digit when its high nibble is 3 and adding 6 leaves it 3 (a carry out
+ * of a byte only follows a byte that is no digit). */
+static NUM_INLINE int digit_count8(uint64_t x)
+{
+    const uint64_t bad = ((x & 0xF0F0F0F0F0F0F0F0ULL) |
+                          (((x + 0x0606060606060606ULL) & 0xF0F0F0F0F0F0F0F0ULL) >> 4)) ^
+                         0x3333333333333333ULL;
+    return bad == 0u ? 8 : lowest_byte(bad);
+}
+
+/* m 10^k + the first k (1..8) digits of the word x (their values: x minus
+ * the '0's). */
+static NUM_INLINE uint64_t append_digits(uint64_t m, uint64_t x, int k)
+{
+    return m * POW10_U64[k] + eight_values(x << (8 * (8 - k)));
+}
+
+/* The digits leading the eight bytes at *p appended to *m (append_digits),
+ * *p moved past them: their count (0..8), or -1 when fewer than eight bytes
+ * are left before lim. */
+static NUM_INLINE int digit_word(const char **p, const char *lim, uint64_t *m)
+{
+    uint64_t x;
+    int k;
+    if (lim - *p < 8) return -1;
+    memcpy(&x, *p, 8);
+    k = digit_count8(x);
+    if (k > 0) *m = append_digits(*m, x - 0x3030303030303030ULL, k);
+    *p += k;
+    return k;
+}
+
 /* Digits at *pp into *m (m = 10 m + digit each; wraps past 19 digits, which
  * the caller refuses); returns their count and advances *pp. lim: the end
- * of the readable bytes. Eight bytes at a time as one little-endian word:
- * a byte is a digit when its high nibble is 3 and adding 6 leaves it 3 (a
- * carry out of a byte only follows a byte that is no digit, so the lowest
- * failing byte is exact); the run of digits below it is converted at once. */
+ * of the readable bytes. Eight bytes at a time as one little-endian word
+ * (digit_word) while eight are left, then byte by byte. */
 static NUM_INLINE int read_digits(const char **pp, const char *lim, uint64_t *m)
 {
     const char *p = *pp;
     uint64_t v = *m;
+    int n;
     if (little_endian()) {
-        while (lim - p >= 8) {
-            uint64_t x, bad;
-            int n;
-            memcpy(&x, p, 8);
-            bad = ((x & 0xF0F0F0F0F0F0F0F0ULL) |
-                   (((x + 0x0606060606060606ULL) & 0xF0F0F0F0F0F0F0F0ULL) >> 4)) ^
-                  0x3333333333333333ULL;
-            x -= 0x3030303030303030ULL;
-            if (bad == 0u) {
-                v = v * 100000000u + eight_values(x);
-                p += 8;
-                continue;
-            }
-            n = lowest_byte(bad);
-            if (n > 0) {
-                /* the n digits in the high bytes, zeros before them */
-                v = v * POW10_U64[n] + eight_values(x << (8 * (8 - n)));
-                p += n;
-            }
+        int k;
+        while ((k = digit_word(&p, lim, &v)) == 8) {
+        }
+        if (k >= 0) {
             *m = v;
             n = (int)(p - *pp);
             *pp = p;
@@ -578,11 +595,9 @@ static NUM_INLINE int read_digits(const char **pp, const char *lim, uint64_t *m)
     }
     for (; is_digit(*p); p++) v = 10u * v + (uint64_t)(*p - '0');
     *m = v;
-    {
-        const int n = (int)(p - *pp);
-        *pp = p;
-        return n;
-    }
+    n = (int)(p - *pp);
+    *pp = p;
+    return n;
 }
 
 double num_parse(const char *s, char **end)
@@ -642,39 +657,6 @@ static NUM_INLINE int decimal_value(uint64_t m, int e, int nd, double *out)
     }
     *out = v;
     return 1;
-}
-
-/* Count of digit bytes leading the eight of x (little-endian, 0..8): a byte
- * is a digit when its high nibble is 3 and adding 6 leaves it 3 (a carry out
- * of a byte only follows a byte that is no digit). */
-static NUM_INLINE int digit_count8(uint64_t x)
-{
-    const uint64_t bad = ((x & 0xF0F0F0F0F0F0F0F0ULL) |
-                          (((x + 0x0606060606060606ULL) & 0xF0F0F0F0F0F0F0F0ULL) >> 4)) ^
-                         0x3333333333333333ULL;
-    return bad == 0u ? 8 : lowest_byte(bad);
-}
-
-/* m 10^k + the first k (1..8) digits of the word x (their values: x minus
- * the '0's). */
-static NUM_INLINE uint64_t append_digits(uint64_t m, uint64_t x, int k)
-{
-    return m * POW10_U64[k] + eight_values(x << (8 * (8 - k)));
-}
-
-/* The digits leading the eight bytes at *p appended to *m (append_digits),
- * *p moved past them: their count (0..8), or -1 when fewer than eight bytes
- * are left before lim. */
-static NUM_INLINE int digit_word(const char **p, const char *lim, uint64_t *m)
-{
-    uint64_t x;
-    int k;
-    if (lim - *p < 8) return -1;
-    memcpy(&x, *p, 8);
-    k = digit_count8(x);
-    if (k > 0) *m = append_digits(*m, x - 0x3030303030303030ULL, k);
-    *p += k;
-    return k;
 }
 
 /* The plain decimal at s, [sign] digits [. digits], at most 15 digits before
