@@ -19,6 +19,15 @@ static inline double lcg01(uint64_t *state)
     return (double)(*state >> 11) * (1.0 / 9007199254740992.0);
 }
 
+/* A random unit vector, uniform on the sphere: z, then the azimuth. */
+static inline void random_unit(uint64_t *rng, double u[3])
+{
+    const double z = 2 * lcg01(rng) - 1, a = 2 * OI_PI * lcg01(rng), r = sqrt(1 - z * z);
+    u[0] = r * cos(a);
+    u[1] = r * sin(a);
+    u[2] = z;
+}
+
 static inline void set3(oi_real v[3], double x, double y, double z)
 {
     v[0] = (oi_real)x;

@@ -136,12 +136,10 @@ static void test_sun_stability_vectors(void **state)
 /* A Sun at about 1 AU in a random direction; s_hat its unit vector. */
 static void random_sun(uint64_t *rng, double s[3], double s_hat[3])
 {
-    double z = 2 * lcg01(rng) - 1, a = 2 * OI_PI * lcg01(rng), r = sqrt(1 - z * z);
-    double d = AU * (0.983 + 0.034 * lcg01(rng));
+    double d;
     int k;
-    s_hat[0] = r * cos(a);
-    s_hat[1] = r * sin(a);
-    s_hat[2] = z;
+    random_unit(rng, s_hat);
+    d = AU * (0.983 + 0.034 * lcg01(rng));
     for (k = 0; k < 3; k++) s[k] = d * s_hat[k];
 }
 

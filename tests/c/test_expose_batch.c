@@ -105,21 +105,12 @@ static void compare_row(long i, unsigned m, int scene_call)
     expect_field((m & OI_EXPOSE_RATE) != 0u, a->rate_rad_s, b->rate_rad_s, "rate_rad_s", i, m);
 }
 
-/* Random unit vector. */
-static void random_dir(uint64_t *rng, double u[3])
-{
-    double z = 2 * lcg01(rng) - 1, a = 2 * OI_PI * lcg01(rng), r = sqrt(1 - z * z);
-    u[0] = r * cos(a);
-    u[1] = r * sin(a);
-    u[2] = z;
-}
-
 /* A unit vector at angle ang from unit vector s. */
 static void dir_at(uint64_t *rng, const double s[3], double ang, double u[3])
 {
     double p[3], q[3], n;
     int k;
-    random_dir(rng, p);
+    random_unit(rng, p);
     q[0] = p[1] * s[2] - p[2] * s[1];
     q[1] = p[2] * s[0] - p[0] * s[2];
     q[2] = p[0] * s[1] - p[1] * s[0];
@@ -142,9 +133,9 @@ static void random_scenes(long n, uint64_t seed, double excl_rad)
         double rt = RE + 300 + 36000 * lcg01(&rng), ro = RE + 400 + 36000 * lcg01(&rng);
         double range = 100 + 40000 * lcg01(&rng);
         oi_scene_defaults(s);
-        random_dir(&rng, sd);
-        random_dir(&rng, t);
-        random_dir(&rng, md);
+        random_unit(&rng, sd);
+        random_unit(&rng, t);
+        random_unit(&rng, md);
         set3(s->sun_km, AU * sd[0], AU * sd[1], AU * sd[2]);
         set3(s->moon_km, 384400 * md[0], 384400 * md[1], 384400 * md[2]);
         set3(s->target_km, rt * t[0], rt * t[1], rt * t[2]);
@@ -153,7 +144,7 @@ static void random_scenes(long n, uint64_t seed, double excl_rad)
              * observer, off by 10^-3 .. 10^-17 rad */
             double off = pow(10.0, -3 - 14 * lcg01(&rng)) * (lcg01(&rng) < 0.5 ? -1 : 1), so[3];
             double rs, rtt;
-            random_dir(&rng, o);
+            random_unit(&rng, o);
             for (k = 0; k < 3; k++) o[k] *= ro;
             for (k = 0; k < 3; k++) so[k] = AU * sd[k] - o[k];
             rs = sqrt(so[0] * so[0] + so[1] * so[1] + so[2] * so[2]);
@@ -165,10 +156,10 @@ static void random_scenes(long n, uint64_t seed, double excl_rad)
                 for (k = 0; k < 3; k++) t[k] = o[k] + 100 * b[k];
             set3(s->target_km, t[0], t[1], t[2]);
         } else if (i % 2) {
-            random_dir(&rng, b);
+            random_unit(&rng, b);
             for (k = 0; k < 3; k++) o[k] = rt * t[k] + 500 * b[k];
         } else {
-            random_dir(&rng, o);
+            random_unit(&rng, o);
             for (k = 0; k < 3; k++) o[k] *= ro;
         }
         set3(s->observer_km, o[0], o[1], o[2]);
@@ -178,8 +169,8 @@ static void random_scenes(long n, uint64_t seed, double excl_rad)
         s->terms &= ~OI_TERM_MOON;
 #endif
         if (i % 2 == 0) {
-            random_dir(&rng, v);
-            random_dir(&rng, w);
+            random_unit(&rng, v);
+            random_unit(&rng, w);
             set3(s->target_vel_km_s, 7.5 * v[0], 7.5 * v[1], 7.5 * v[2]);
             set3(s->observer_vel_km_s, 3 * w[0], 3 * w[1], 3 * w[2]);
         }

@@ -41,15 +41,6 @@ static int status[NSCENES];
 static oi_exposure exposure[NSCENES];
 #endif
 
-static void unit_random(uint64_t *seed, double u[3])
-{
-    const double z = 2.0 * lcg01(seed) - 1.0, a = 6.283185307179586 * lcg01(seed);
-    const double s = sqrt(1.0 - z * z);
-    u[0] = s * cos(a);
-    u[1] = s * sin(a);
-    u[2] = z;
-}
-
 /* A unit vector normal to u. */
 static void normal_to(const double u[3], double v[3])
 {
@@ -78,10 +69,10 @@ static void make_scenes(void)
         const double r = RE + 150.0 * exp(lcg01(&seed) * log(400000.0 / 150.0));
         const double d_sun = AU * (0.983 + 0.034 * lcg01(&seed)), d_obs = 10.0 + 1990.0 * lcg01(&seed);
         oi_scene_defaults(s);
-        unit_random(&seed, us);
-        unit_random(&seed, um);
-        unit_random(&seed, ut);
-        unit_random(&seed, uo);
+        random_unit(&seed, us);
+        random_unit(&seed, um);
+        random_unit(&seed, ut);
+        random_unit(&seed, uo);
         if (i % 3 != 0) {
             /* behind the Earth: x along the anti-Sun axis, the cone's radius
              * there R - x (R_sun - R) / d_sun (umbra) to R + x (R_sun + R) / d_sun */

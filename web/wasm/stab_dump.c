@@ -58,6 +58,11 @@ static void dump(const char *name, const stab_vec *v, size_t n, int nout, eval_f
 
 #define BATCH_MAX 512
 #define NV(name) (sizeof stab_##name##_d / sizeof stab_##name##_d[0])
+/* every vector table fits the batch arrays (a compile error otherwise) */
+typedef char stab_batch_fits[NV(shadow) <= BATCH_MAX && NV(earth_table) <= BATCH_MAX &&
+                                     NV(illum) <= BATCH_MAX && NV(camera) <= BATCH_MAX
+                                 ? 1
+                                 : -1];
 
 static oi_real b_sun[3 * BATCH_MAX], b_pt[3 * BATCH_MAX], b_th[BATCH_MAX], b_h[BATCH_MAX];
 static oi_real b_phi[BATCH_MAX], b_psi[BATCH_MAX];
