@@ -322,6 +322,27 @@ Object.assign(JS_EVAL, {
   expose_scene_batch: exposeSceneBatch(null),
   expose_scene_mask: exposeSceneBatch(oi.c.OI_EXPOSE_SETTING | oi.c.OI_EXPOSE_BACKGROUND),
 });
+test('a batch refused for its model: every wrapper the error and a zeroed row per scene', () => {
+  const scenes = [[1.496e8, 0, 0, 7000, 0, 0, 7000, 10, 0], [1.496e8, 0, 0, 0, 7000, 0, 0, 7010, 0]].map(illumScene);
+  const bad = { ...ILLUM_MODEL, earth_model: 99 };
+  const cam = oi.writeCamera(STAB_CAMERA);
+  const calls = {
+    illuminateBatch: oi.illuminateBatch(scenes, bad),
+    exposeSceneBatch: oi.exposeSceneBatch(cam, scenes, bad),
+    exposeSceneBatchMask: oi.exposeSceneBatch(cam, scenes, bad, oi.c.OI_EXPOSE_SETTING),
+  };
+  for (const [name, { result, rows }] of Object.entries(calls)) {
+    assert.equal(result, oi.c.OI_ERR_MODEL, `${name} result`);
+    assert.equal(rows.length, scenes.length, `${name} rows`);
+    for (const row of rows) assert.equal(row.status, oi.c.OI_ERR_MODEL, `${name} row status`);
+  }
+  for (const row of calls.exposeSceneBatch.rows) {
+    assert.equal(row.illumStatus, oi.c.OI_ERR_MODEL);
+    assert.equal(row.expo.exposure_s, 0);
+    assert.equal(row.expo.snr, 0);
+  }
+});
+
 const baseTable = (name) => name.replace(/_(batch|mask)$/, '');
 const INPUT_TABLE = { expose_scene: 'illum' }; // the scene exposure batch runs on the illum vectors' scenes
 

@@ -490,9 +490,16 @@ export class Orbillum {
     const result = this.batchRows(scenes.length, [SC, IL, EX, 4, 4], (start, k, [ps, pl, po, pist, pst]) => {
       for (let i = 0; i < k; i++) this.writeScene(scenes[start + i], ps + SC * i);
       const ri = this.x.oi_illuminate_batch(k, ps, pm, pl, pist);
-      if (ri < 0) return ri;
-      const r = outputs === null ? this.x.oi_expose_scene_batch(k, camera.ptr, ps, pl, pm, 0, po, pst)
-        : this.x.oi_expose_scene_batch_outputs(k, camera.ptr, ps, pl, pm, 0, outputs, po, pst);
+      let r = ri;
+      if (ri < 0) {
+        // the scenes refused as a batch (the model): every row its status and a zeroed
+        // exposure, the shape the other batch wrappers give
+        new Uint8Array(this.memory.buffer, po, EX * k).fill(0);
+        for (let i = 0; i < k; i++) this.dv.setInt32(pst + 4 * i, this.dv.getInt32(pist + 4 * i, true), true);
+      } else {
+        r = outputs === null ? this.x.oi_expose_scene_batch(k, camera.ptr, ps, pl, pm, 0, po, pst)
+          : this.x.oi_expose_scene_batch_outputs(k, camera.ptr, ps, pl, pm, 0, outputs, po, pst);
+      }
       for (let i = 0; i < k; i++) {
         rows.push({ status: this.dv.getInt32(pst + 4 * i, true), illumStatus: this.dv.getInt32(pist + 4 * i, true),
           expo: this.readExposure(po + EX * i) });
