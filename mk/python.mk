@@ -24,7 +24,7 @@ shared: $(SHARED_LIB) ## build build/liborbillum.so (double precision, for the P
 
 $(SHARED_LIB): $(RT_SRC) $(RT_HDR)
 	@mkdir -p $(dir $@)
-	$(CC) $(WARN) $(OPT) $(RT_MATH) -fPIC -shared -Iinclude -Isrc -Itables $(RT_SRC) -lm -o $@
+	$(CC) $(RT_CFLAGS) -fPIC -shared $(RT_SRC) -lm -o $@
 
 binding: $(VENV)/.orbillum-binding ## pip install ./python into the venv (builds its own liborbillum.so)
 $(VENV)/.orbillum-binding: $(PY_BINDING_SRC) $(RT_SRC) $(RT_HDR) | deps-py

@@ -2,9 +2,8 @@
 """Build hook: compile the runtime (../src/*.c, ../tables/*.c) into orbillum/liborbillum.so.
 
 The C sources live beside this directory in the repository, so install from a
-checkout: ``pip install ./python``. The flags are the repository's strict flags
-(Makefile WARN) plus -fno-math-errno (Makefile RT_MATH) and -fPIC; the compiler
-is $CC or cc. Set ORBILLUM_LIB at run time to use another build instead (e.g. build/liborbillum.so from ``make shared``).
+checkout: ``pip install ./python``. The flags are the repository Makefile's own,
+read from it (WARN, OPT, RT_MATH), plus -fPIC; the compiler is $CC or cc. Set ORBILLUM_LIB at run time to use another build instead (e.g. build/liborbillum.so from ``make shared``).
 """
 import glob
 import os
@@ -17,8 +16,18 @@ from setuptools.dist import Distribution
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
-WARN = ("-std=c99 -Wall -Wextra -Wpedantic -Wconversion -Wshadow -Wdouble-promotion "
-        "-Werror").split()
+
+
+def make_variable(name):
+    """The words of the Makefile's `NAME := value` or `NAME ?= value` line: the
+    library's flags are written once, there."""
+    with open(os.path.join(ROOT, "Makefile")) as f:
+        for line in f:
+            for sep in (":=", "?="):
+                key, found, value = line.partition(sep)
+                if found and key.strip() == name:
+                    return shlex.split(value)
+    raise SystemExit(f"orbillum: no {name} in ../Makefile: install from a repository checkout")
 
 
 class BuildWithLibrary(build_py):
@@ -33,9 +42,10 @@ class BuildWithLibrary(build_py):
         os.makedirs(out_dir, exist_ok=True)
         out = os.path.join(out_dir, "liborbillum.so")
         cc = shlex.split(os.environ.get("CC", "cc"))
-        # -fno-math-errno as the library's own build (Makefile RT_MATH): sqrt one
-        # instruction, so that the batch's loops vectorise
-        cmd = cc + WARN + ["-O2", "-fno-math-errno", "-fPIC", "-shared"] + [
+        # the library's own flags (RT_MATH's -fno-math-errno makes sqrt one
+        # instruction, so that the batch's loops vectorise)
+        flags = make_variable("WARN") + make_variable("OPT") + make_variable("RT_MATH")
+        cmd = cc + flags + ["-fPIC", "-shared"] + [
             "-I" + os.path.join(ROOT, d) for d in ("include", "src", "tables")
         ] + src + ["-lm", "-o", out]
         print(" ".join(cmd))
