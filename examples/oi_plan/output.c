@@ -74,9 +74,15 @@ void out_flags(unsigned flags, char *buf, size_t size)
 
 void out_csv_row(FILE *fp, const char *id, const plan_row *row)
 {
-    const oi_illum *il = &row->illum;
-    int num = row->has_numbers;
-    int obs = num && row->has_observer;
+    out_csv_fields(fp, id, row->status_name, row->has_numbers, row->has_observer, row->flags,
+                   &row->illum, &row->expo);
+}
+
+void out_csv_fields(FILE *fp, const char *id, const char *status_name, int has_numbers,
+                    int has_observer, unsigned flags, const oi_illum *il, const oi_exposure *ex)
+{
+    int num = has_numbers;
+    int obs = num && has_observer;
     /* the row's text, written at once: id, status (a library name), 14
      * numbers, flags (out_flags' 160) */
     char line[ID_INLINE_MAX + 64 + 14 * NUM_TEXT_MAX + 160 + 8];
@@ -90,13 +96,13 @@ void out_csv_row(FILE *fp, const char *id, const plan_row *row)
         memcpy(line, id, n);
     }
     line[n++] = ',';
-    k = strlen(row->status_name);
+    k = strlen(status_name);
     if (k > 63) { /* not a library name: on its own */
         (void)fwrite(line, 1, n, fp);
-        fputs(row->status_name, fp);
+        fputs(status_name, fp);
         n = 0;
     } else {
-        memcpy(line + n, row->status_name, k);
+        memcpy(line + n, status_name, k);
         n += k;
     }
     n += put_num(line + n, num, (double)il->shadow.fraction);
@@ -108,15 +114,15 @@ void out_csv_row(FILE *fp, const char *id, const plan_row *row)
     n += put_num(line + n, num, (double)il->earth_h_km);
     n += put_num(line + n, obs, (double)il->flux_obs);
     n += put_num(line + n, obs, (double)il->mag_v);
-    n += put_num(line + n, obs, (double)row->expo.exposure_s);
-    n += put_num(line + n, obs, (double)row->expo.gain);
-    n += put_num(line + n, obs, (double)row->expo.snr);
+    n += put_num(line + n, obs, (double)ex->exposure_s);
+    n += put_num(line + n, obs, (double)ex->gain);
+    n += put_num(line + n, obs, (double)ex->snr);
     line[n++] = ',';
     if (num) {
-        out_flags(row->flags, line + n, 160);
+        out_flags(flags, line + n, 160);
         n += strlen(line + n);
     }
-    n += put_num(line + n, obs, (double)row->expo.detect_margin_mag);
+    n += put_num(line + n, obs, (double)ex->detect_margin_mag);
     n += put_num(line + n, num, (double)il->e_sky);
     line[n++] = '\n';
     (void)fwrite(line, 1, n, fp);

@@ -26,6 +26,11 @@ extern const char plan_csv_header[];
 void out_csv_header(FILE *fp);
 /* One CSV row; id is quoted when it holds a comma, quote or line break. */
 void out_csv_row(FILE *fp, const char *id, const plan_row *row);
+/* out_csv_row from the row's parts: status name, has_numbers, has_observer
+ * and flags as in plan_row, the numbers from il and ex (not read where the
+ * row leaves them empty). */
+void out_csv_fields(FILE *fp, const char *id, const char *status_name, int has_numbers,
+                    int has_observer, unsigned flags, const oi_illum *il, const oi_exposure *ex);
 /* Flag names joined by '+' into buf (empty string for none). */
 void out_flags(unsigned flags, char *buf, size_t size);
 
