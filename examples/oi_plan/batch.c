@@ -61,6 +61,7 @@ typedef struct batch {
     const plan_shapes *shapes; /* --shapes, or NULL */
     const plan_albedo_map *albedo_map; /* --albedo-map, or NULL */
     const char *path;
+    oi_scene scene_defaults;  /* oi_scene_defaults, formed once: each row starts from it */
     int warned_extra;
     unsigned long messages;   /* row messages printed so far */
     unsigned long bad;        /* rows with errors */
@@ -125,6 +126,7 @@ typedef struct pending {
     int status[PENDING_MAX];
     oi_exposure expo[PENDING_MAX];
     int expo_status[PENDING_MAX];
+    long run[PENDING_MAX];    /* the first row of row i's run of one model (flush_pending) */
     pending_row rows[PENDING_MAX];
     char ids[PENDING_ID_BYTES];
 } pending;
@@ -511,7 +513,7 @@ static int parse_row(batch *b, const csv_reader *r, row_state *row)
     sc = &q->scenes[q->n];
     model = &q->rows[q->n].model;
     goal = &q->rows[q->n].goal;
-    oi_scene_defaults(sc);
+    *sc = b->scene_defaults;
     memset(model, 0, sizeof *model); /* bytes: blocks are split where they differ */
 
     if (parse_vec(b, r, C_SUN_X, sc->sun_km, 1) < 0) return 0;
@@ -735,7 +737,7 @@ static int exposes(const pending *q, long i)
 static void flush_pending(batch *b)
 {
     pending *q = b->pending;
-    long i = 0, j;
+    long i = 0, j, k;
     if (q == NULL || q->n == 0 || b->flushing) return;
     b->flushing = 1;
     while (i < q->n) {
@@ -747,13 +749,15 @@ static void flush_pending(batch *b)
                         memcmp(&q->rows[j].model, &q->rows[i].model, sizeof q->rows[i].model) == 0;
              j++) {
         }
+        for (k = i; k < j; k++) q->run[k] = i;
         (void)oi_illuminate_batch_outputs(j - i, q->scenes + i, &q->rows[i].model, PLAN_OUTPUTS,
                                           q->illum + i, q->status + i);
         i = j;
     }
     /* the exposures: one call per run of rows with an observer and their
      * illumination computed under the same camera, model and goal (the
-     * batch's rows are the single calls' bit for bit) */
+     * batch's rows are the single calls' bit for bit); consecutive rows that
+     * expose are all computed: one model where they lie in one model run */
     i = 0;
     while (i < q->n) {
         if (!exposes(q, i)) {
@@ -761,7 +765,7 @@ static void flush_pending(batch *b)
             continue;
         }
         for (j = i + 1; j < q->n && exposes(q, j) && q->rows[j].camera == q->rows[i].camera &&
-                        memcmp(&q->rows[j].model, &q->rows[i].model, sizeof q->rows[i].model) == 0 &&
+                        q->run[j] == q->run[i] &&
                         memcmp(&q->rows[j].goal, &q->rows[i].goal, sizeof q->rows[i].goal) == 0;
              j++) {
         }
@@ -869,6 +873,7 @@ int batch_run_map(const char *path, const oi_camera *default_camera, const plan_
     b.wins = &wins;
     b.summary = summary;
     b.path = strcmp(path, "-") == 0 ? "<stdin>" : path;
+    oi_scene_defaults(&b.scene_defaults);
     b.pending = malloc(sizeof *b.pending);
     if (b.pending == NULL) {
         fprintf(stderr, "oi-plan: out of memory\n");
