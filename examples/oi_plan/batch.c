@@ -71,6 +71,7 @@ typedef struct batch {
     struct pending *pending;
     int flushing;             /* 1 inside flush_pending (its messages do not flush) */
     FILE *out;
+    int out_tty;              /* out is a terminal: each row written at once */
     window_list *wins;
     FILE *summary;            /* NULL once the summary is given up */
 } batch;
@@ -85,6 +86,10 @@ typedef struct batch {
 /* Bytes of the block's ids; a longer id is not copied (its row is computed
  * at once). */
 #define PENDING_ID_BYTES (1u << 14)
+
+/* Bytes of the block's output text (at least OUT_CSV_LINE_MAX): written
+ * with one fwrite when the next row might not fit, and at the block's end. */
+#define PENDING_TEXT_BYTES (1u << 15)
 
 /* What the CSV needs of the illumination: the observer's flux and
  * magnitude; not the shadow's angles, the limb-darkened fraction or the
@@ -129,6 +134,7 @@ typedef struct pending {
     long run[PENDING_MAX];    /* the first row of row i's run of one model (flush_pending) */
     pending_row rows[PENDING_MAX];
     char ids[PENDING_ID_BYTES];
+    char text[PENDING_TEXT_BYTES]; /* the block's output rows, written at once */
 } pending;
 
 static void flush_pending(batch *b);
@@ -738,6 +744,7 @@ static void flush_pending(batch *b)
 {
     pending *q = b->pending;
     long i = 0, j, k;
+    size_t used = 0;
     if (q == NULL || q->n == 0 || b->flushing) return;
     b->flushing = 1;
     while (i < q->n) {
@@ -776,11 +783,28 @@ static void flush_pending(batch *b)
     }
     for (i = 0; i < q->n; i++) {
         pending_row *p = &q->rows[i];
+        size_t len;
         if (p->compute && !finish_row(b, &q->scenes[i], &q->illum[i], q->status[i], &q->expo[i],
                                       q->expo_status[i], p))
             b->bad++;
-        out_csv_fields(b->out, p->id, p->state.status_name, p->state.has_numbers,
-                       p->state.has_observer, p->state.flags, &q->illum[i], &q->expo[i]);
+        /* the rows' text into the block's (a terminal: each at once) */
+        if (used > sizeof q->text - OUT_CSV_LINE_MAX) {
+            (void)fwrite(q->text, 1, used, b->out);
+            used = 0;
+        }
+        len = out_csv_text(q->text + used, p->id, p->state.status_name, p->state.has_numbers,
+                         p->state.has_observer, p->state.flags, &q->illum[i], &q->expo[i]);
+        if (len == 0) { /* an id to quote or a long one: on its own, after the rows before */
+            (void)fwrite(q->text, 1, used, b->out);
+            used = 0;
+            out_csv_fields(b->out, p->id, p->state.status_name, p->state.has_numbers,
+                           p->state.has_observer, p->state.flags, &q->illum[i], &q->expo[i]);
+        }
+        used += len;
+        if (b->out_tty) {
+            (void)fwrite(q->text, 1, used, b->out);
+            used = 0;
+        }
         if (b->summary) {
             plan_row row;
             memset(&row, 0, sizeof row);
@@ -797,6 +821,7 @@ static void flush_pending(batch *b)
             }
         }
     }
+    (void)fwrite(q->text, 1, used, b->out);
     q->n = 0;
     q->id_used = 0;
     b->flushing = 0;
@@ -897,7 +922,8 @@ int batch_run_map(const char *path, const oi_camera *default_camera, const plan_
     }
     /* rows go out in blocks of OUT_BUFFER bytes (a pipe's default is 4 KiB:
      * a write per ~13 rows); a terminal keeps its line buffering */
-    if (!isatty(fileno(out))) (void)setvbuf(out, NULL, _IOFBF, OUT_BUFFER);
+    b.out_tty = isatty(fileno(out));
+    if (!b.out_tty) (void)setvbuf(out, NULL, _IOFBF, OUT_BUFFER);
     out_csv_header(out);
     tty = isatty(fileno(stderr));
     last = time(NULL);
