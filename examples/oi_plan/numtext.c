@@ -467,6 +467,10 @@ static size_t put_integer(uint64_t v, char *buf)
 {
     char d[32];
     size_t z;
+    if (v < 10u) { /* one digit (the planner's fractions and gains of 1) */
+        buf[0] = (char)('0' + (int)v);
+        return 1;
+    }
     if (v < 100000000u) {
         put8((uint32_t)v, d);
         memset(d + 8, '0', 8); /* read by the fixed-size copy, not printed */
