@@ -61,6 +61,7 @@ typedef struct batch {
     const plan_shapes *shapes; /* --shapes, or NULL */
     const plan_albedo_map *albedo_map; /* --albedo-map, or NULL */
     const char *path;
+    oi_scene scene_defaults;  /* oi_scene_defaults, formed once: each row starts from it */
     int warned_extra;
     unsigned long messages;   /* row messages printed so far */
     unsigned long bad;        /* rows with errors */
@@ -70,6 +71,7 @@ typedef struct batch {
     struct pending *pending;
     int flushing;             /* 1 inside flush_pending (its messages do not flush) */
     FILE *out;
+    int out_tty;              /* out is a terminal: each row written at once */
     window_list *wins;
     FILE *summary;            /* NULL once the summary is given up */
 } batch;
@@ -85,13 +87,34 @@ typedef struct batch {
  * at once). */
 #define PENDING_ID_BYTES (1u << 14)
 
+/* Bytes of the block's output text (at least OUT_CSV_LINE_MAX): written
+ * with one fwrite when the next row might not fit, and at the block's end. */
+#define PENDING_TEXT_BYTES (1u << 15)
+
 /* What the CSV needs of the illumination: the observer's flux and
  * magnitude; not the shadow's angles, the limb-darkened fraction or the
  * directions. */
 #define PLAN_OUTPUTS (OI_BATCH_OBSERVER)
 
+/* What the CSV needs of the exposure: the setting (exposure_s, gain, snr,
+ * OI_FLAG_SATURATED, OI_FLAG_TRAILED), OI_FLAG_TOO_FAINT and
+ * detect_margin_mag; not the Sun's angle (OI_FLAG_SUN_EXCLUSION is then
+ * decided from a cosine where it is certain, the same flag), the background
+ * or the rate. */
+#define PLAN_EXPOSE_OUTPUTS (OI_EXPOSE_SETTING | OI_EXPOSE_FAINT | OI_EXPOSE_DETECT)
+
+/* What a row's output takes besides its numbers (the fields of plan_row
+ * but illum and expo, which stay in the block's arrays). */
+typedef struct row_state {
+    int status;
+    const char *status_name;
+    int has_numbers;
+    int has_observer;
+    unsigned flags;
+} row_state;
+
 typedef struct pending_row {
-    plan_row row;             /* status when parsing failed; else filled by the flush */
+    row_state state;          /* status when parsing failed; else filled by the flush */
     oi_model model;
     oi_expose_goal goal;
     const oi_camera *camera;
@@ -108,8 +131,10 @@ typedef struct pending {
     int status[PENDING_MAX];
     oi_exposure expo[PENDING_MAX];
     int expo_status[PENDING_MAX];
+    long run[PENDING_MAX];    /* the first row of row i's run of one model (flush_pending) */
     pending_row rows[PENDING_MAX];
     char ids[PENDING_ID_BYTES];
+    char text[PENDING_TEXT_BYTES]; /* the block's output rows, written at once */
 } pending;
 
 static void flush_pending(batch *b);
@@ -453,14 +478,16 @@ static int parse_target(batch *b, const csv_reader *r, oi_scene *sc)
     return 0;
 }
 
-/* Build the scene, model, goal and camera of one record. Returns 1 when
- * the row is to be computed, 0 when it failed (row holds its status). */
-static int parse_row(batch *b, const csv_reader *r, plan_row *row, oi_scene *scene,
-                     oi_model *model_out, oi_expose_goal *goal_out, const oi_camera **camera)
+/* Build the scene, model, goal and camera of one record, in place in the
+ * block's next row (q->n; its id is the caller's). Returns 1 when the row
+ * is to be computed, 0 when it failed (row holds its status; a message may
+ * have flushed the block, the row is then the block's first). */
+static int parse_row(batch *b, const csv_reader *r, row_state *row)
 {
-    oi_scene sc;
-    oi_model model;
-    oi_expose_goal goal;
+    pending *q = b->pending;
+    oi_scene *sc;
+    oi_model *model;
+    oi_expose_goal *goal;
     const oi_camera *cam = b->default_camera;
     int has_moon, st, short_row = 0;
     double x;
@@ -469,8 +496,6 @@ static int parse_row(batch *b, const csv_reader *r, plan_row *row, oi_scene *sce
 
     memset(row, 0, sizeof *row);
     row->status_name = PLAN_STATUS_PARSE;
-    oi_scene_defaults(&sc);
-    memset(&model, 0, sizeof model);
 
     if (csv_nfields(r) < b->header_fields) {
         size_t k;
@@ -490,18 +515,24 @@ static int parse_row(batch *b, const csv_reader *r, plan_row *row, oi_scene *sce
                         "extra fields ignored (reported once)\n", b->path, r->rec_line);
         b->warned_extra = 1;
     }
+    /* the slot, once the note above has flushed the block */
+    sc = &q->scenes[q->n];
+    model = &q->rows[q->n].model;
+    goal = &q->rows[q->n].goal;
+    *sc = b->scene_defaults;
+    memset(model, 0, sizeof *model); /* bytes: blocks are split where they differ */
 
-    if (parse_vec(b, r, C_SUN_X, sc.sun_km, 1) < 0) return 0;
-    if (parse_vec(b, r, C_TARGET_X, sc.target_km, 1) < 0) return 0;
-    has_moon = parse_vec(b, r, C_MOON_X, sc.moon_km, 0);
+    if (parse_vec(b, r, C_SUN_X, sc->sun_km, 1) < 0) return 0;
+    if (parse_vec(b, r, C_TARGET_X, sc->target_km, 1) < 0) return 0;
+    has_moon = parse_vec(b, r, C_MOON_X, sc->moon_km, 0);
     if (has_moon < 0) return 0;
-    sc.has_moon = has_moon; /* the Moon occults the Sun whatever the terms */
-    st = parse_vec(b, r, C_OBSERVER_X, sc.observer_km, 0);
+    sc->has_moon = has_moon; /* the Moon occults the Sun whatever the terms */
+    st = parse_vec(b, r, C_OBSERVER_X, sc->observer_km, 0);
     if (st < 0) return 0;
-    sc.has_observer = st;
+    sc->has_observer = st;
     /* velocities (km/s): absent or empty, at rest (oi_scene_defaults) */
-    if (parse_vec(b, r, C_TARGET_VX, sc.target_vel_km_s, 0) < 0) return 0;
-    if (parse_vec(b, r, C_OBSERVER_VX, sc.observer_vel_km_s, 0) < 0) return 0;
+    if (parse_vec(b, r, C_TARGET_VX, sc->target_vel_km_s, 0) < 0) return 0;
+    if (parse_vec(b, r, C_OBSERVER_VX, sc->observer_vel_km_s, 0) < 0) return 0;
 
     terms = OI_TERM_SUN | OI_TERM_EARTH | (has_moon ? OI_TERM_MOON : 0u);
     s = field_of(b, r, C_TERMS, &short_row);
@@ -523,17 +554,17 @@ static int parse_row(batch *b, const csv_reader *r, plan_row *row, oi_scene *sce
             return 0;
         }
     }
-    sc.terms = terms;
+    sc->terms = terms;
 
-    x = (double)sc.earth_albedo;
+    x = (double)sc->earth_albedo;
     if ((st = parse_opt(b, r, C_EARTH_ALBEDO, &x)) < 0) return 0;
-    sc.earth_albedo = (oi_real)x;
-    x = (double)sc.target_albedo;
+    sc->earth_albedo = (oi_real)x;
+    x = (double)sc->target_albedo;
     if ((st = parse_opt(b, r, C_TARGET_ALBEDO, &x)) < 0) return 0;
-    sc.target_albedo = (oi_real)x;
-    x = (double)sc.target_radius_m;
+    sc->target_albedo = (oi_real)x;
+    x = (double)sc->target_radius_m;
     if ((st = parse_opt(b, r, C_TARGET_RADIUS, &x)) < 0) return 0;
-    sc.target_radius_m = (oi_real)x;
+    sc->target_radius_m = (oi_real)x;
     x = 1;
     if ((st = parse_opt(b, r, C_ATMOSPHERE, &x)) < 0) return 0;
     if (x != 0 && x != 1) {
@@ -541,15 +572,15 @@ static int parse_row(batch *b, const csv_reader *r, plan_row *row, oi_scene *sce
                   "atmosphere must be 1 (default) or 0 (as if the Earth had none)", NULL);
         return 0;
     }
-    model.no_atmosphere = x == 0;
+    model->no_atmosphere = x == 0;
 
     /* the Earth's shape: sphere (default, also an empty field) or wgs84 */
     s = field_of(b, r, C_EARTH_SHAPE, &short_row);
     if (s != NULL && s[0] != '\0') {
         if (same_nocase(s, "wgs84")) {
-            model.earth_shape = OI_EARTH_WGS84;
+            model->earth_shape = OI_EARTH_WGS84;
         } else if (same_nocase(s, "sphere")) {
-            model.earth_shape = OI_EARTH_SPHERE;
+            model->earth_shape = OI_EARTH_SPHERE;
         } else {
             row_error(b, r->rec_line, b->col[C_EARTH_SHAPE],
                       "earth_shape must be sphere (default) or wgs84; got", s);
@@ -562,16 +593,16 @@ static int parse_row(batch *b, const csv_reader *r, plan_row *row, oi_scene *sce
     s = field_of(b, r, C_BAND, &short_row);
     if (s != NULL && s[0] != '\0') {
         if (same_nocase(s, "total")) {
-            model.band = OI_BAND_TOTAL;
+            model->band = OI_BAND_TOTAL;
         } else if (same_nocase(s, "v")) {
-            model.band = OI_BAND_V;
+            model->band = OI_BAND_V;
         } else {
             row_error(b, r->rec_line, b->col[C_BAND], "band must be V (default) or total; got", s);
             return 0;
         }
     }
 
-    st = parse_target(b, r, &sc);
+    st = parse_target(b, r, sc);
     if (st == -1) return 0;
     if (st < 0) {
         row->status = st;
@@ -586,9 +617,9 @@ static int parse_row(batch *b, const csv_reader *r, plan_row *row, oi_scene *sce
         int has_epoch, has_rotation;
         double jd = 0, rot = 0;
         if (same_nocase(s, "knocke")) {
-            model.albedo_model = OI_ALBEDO_KNOCKE;
+            model->albedo_model = OI_ALBEDO_KNOCKE;
         } else if (same_nocase(s, "map")) {
-            model.albedo_model = OI_ALBEDO_MAP;
+            model->albedo_model = OI_ALBEDO_MAP;
         } else {
             row_error(b, r->rec_line, b->col[C_ALBEDO_MODEL],
                       "albedo_model must be uniform, knocke or map; got", s);
@@ -601,8 +632,8 @@ static int parse_row(batch *b, const csv_reader *r, plan_row *row, oi_scene *sce
                       "albedo_model knocke and map need epoch_jd (Julian date, UTC)", NULL);
             return 0;
         }
-        sc.epoch_jd = (oi_real)jd;
-        if (model.albedo_model == OI_ALBEDO_MAP) {
+        sc->epoch_jd = (oi_real)jd;
+        if (model->albedo_model == OI_ALBEDO_MAP) {
             if (b->albedo_map == NULL) {
                 row_error(b, r->rec_line, b->col[C_ALBEDO_MODEL],
                           "albedo_model map needs --albedo-map FILE", NULL);
@@ -615,16 +646,16 @@ static int parse_row(batch *b, const csv_reader *r, plan_row *row, oi_scene *sce
                 return 0;
             }
             /* degrees to radians: the range check is the library's */
-            sc.earth_rotation_rad = (oi_real)(rot * (3.14159265358979323846 / 180.0));
-            model.albedo_map = b->albedo_map->values;
-            model.albedo_map_n_lat = b->albedo_map->n_lat;
-            model.albedo_map_n_lon = b->albedo_map->n_lon;
+            sc->earth_rotation_rad = (oi_real)(rot * (3.14159265358979323846 / 180.0));
+            model->albedo_map = b->albedo_map->values;
+            model->albedo_map_n_lat = b->albedo_map->n_lat;
+            model->albedo_map_n_lon = b->albedo_map->n_lon;
         }
     }
 
-    memset(&goal, 0, sizeof goal);
+    memset(goal, 0, sizeof *goal);
     s = field_of(b, r, C_SKY, &short_row);
-    if (s != NULL && parse_sky(s, &goal.sky) < 0) {
+    if (s != NULL && parse_sky(s, &goal->sky) < 0) {
         row_error(b, r->rec_line, b->col[C_SKY],
                   "sky must be none, zodiacal, moon or all, joined by +; got", s);
         return 0;
@@ -632,8 +663,8 @@ static int parse_row(batch *b, const csv_reader *r, plan_row *row, oi_scene *sce
     /* sensor temperature (deg C): absent or empty, the camera's dark current as it stands */
     if ((st = parse_opt(b, r, C_SENSOR_TEMP, &x)) < 0) return 0;
     if (st == 1) {
-        goal.has_sensor_temp = 1u;
-        goal.sensor_temp_c = (oi_real)x;
+        goal->has_sensor_temp = 1u;
+        goal->sensor_temp_c = (oi_real)x;
     }
 
     s = field_of(b, r, C_CAMERA, &short_row);
@@ -663,10 +694,7 @@ static int parse_row(batch *b, const csv_reader *r, plan_row *row, oi_scene *sce
         }
     }
 
-    *scene = sc;
-    memcpy(model_out, &model, sizeof model); /* bytes: blocks are split where they differ */
-    memcpy(goal_out, &goal, sizeof goal);
-    *camera = cam;
+    q->rows[q->n].camera = cam;
     return 1;
 }
 
@@ -676,29 +704,27 @@ static int parse_row(batch *b, const csv_reader *r, plan_row *row, oi_scene *sce
 static int finish_row(batch *b, const oi_scene *sc, const oi_illum *illum, int st,
                       const oi_exposure *expo, int st2, pending_row *p)
 {
-    plan_row *row = &p->row;
-    row->illum = *illum;
+    row_state *row = &p->state;
     row->status = st;
     row->status_name = oi_status_name(st);
     if (st < 0) {
         row_error(b, p->line, -1, "cannot compute the row:", row->status_name);
         return 0;
     }
-    if (row->illum.shadow.region == OI_SHADOW_UMBRA) {
+    if (illum->shadow.region == OI_SHADOW_UMBRA) {
         row->flags |= OI_FLAG_ECLIPSED;
-    } else if (row->illum.shadow.region != OI_SHADOW_LIT) {
+    } else if (illum->shadow.region != OI_SHADOW_LIT) {
         row->flags |= OI_FLAG_PENUMBRA;
     }
-    if (row->illum.sun_moon_hidden > (oi_real)0) row->flags |= OI_FLAG_MOON_SHADOW;
+    if (illum->sun_moon_hidden > (oi_real)0) row->flags |= OI_FLAG_MOON_SHADOW;
     if (sc->has_observer) {
-        row->expo = *expo;
         if (st2 < 0) {
             row->status = st2;
             row->status_name = oi_status_name(st2);
             row_error(b, p->line, -1, "cannot compute the exposure:", row->status_name);
             return 0;
         }
-        row->flags = row->expo.flags;
+        row->flags = expo->flags;
         row->has_observer = 1;
     }
     row->has_numbers = 1;
@@ -717,7 +743,8 @@ static int exposes(const pending *q, long i)
 static void flush_pending(batch *b)
 {
     pending *q = b->pending;
-    long i = 0, j;
+    long i = 0, j, k;
+    size_t used = 0;
     if (q == NULL || q->n == 0 || b->flushing) return;
     b->flushing = 1;
     while (i < q->n) {
@@ -729,13 +756,15 @@ static void flush_pending(batch *b)
                         memcmp(&q->rows[j].model, &q->rows[i].model, sizeof q->rows[i].model) == 0;
              j++) {
         }
+        for (k = i; k < j; k++) q->run[k] = i;
         (void)oi_illuminate_batch_outputs(j - i, q->scenes + i, &q->rows[i].model, PLAN_OUTPUTS,
                                           q->illum + i, q->status + i);
         i = j;
     }
     /* the exposures: one call per run of rows with an observer and their
      * illumination computed under the same camera, model and goal (the
-     * batch's rows are the single calls' bit for bit) */
+     * batch's rows are the single calls' bit for bit); consecutive rows that
+     * expose are all computed: one model where they lie in one model run */
     i = 0;
     while (i < q->n) {
         if (!exposes(q, i)) {
@@ -743,44 +772,79 @@ static void flush_pending(batch *b)
             continue;
         }
         for (j = i + 1; j < q->n && exposes(q, j) && q->rows[j].camera == q->rows[i].camera &&
-                        memcmp(&q->rows[j].model, &q->rows[i].model, sizeof q->rows[i].model) == 0 &&
+                        q->run[j] == q->run[i] &&
                         memcmp(&q->rows[j].goal, &q->rows[i].goal, sizeof q->rows[i].goal) == 0;
              j++) {
         }
-        (void)oi_expose_scene_batch(j - i, q->rows[i].camera, q->scenes + i, q->illum + i,
-                                    &q->rows[i].model, &q->rows[i].goal, q->expo + i,
-                                    q->expo_status + i);
+        (void)oi_expose_scene_batch_outputs(j - i, q->rows[i].camera, q->scenes + i,
+                                            q->illum + i, &q->rows[i].model, &q->rows[i].goal,
+                                            PLAN_EXPOSE_OUTPUTS, q->expo + i, q->expo_status + i);
         i = j;
     }
     for (i = 0; i < q->n; i++) {
         pending_row *p = &q->rows[i];
+        size_t len;
         if (p->compute && !finish_row(b, &q->scenes[i], &q->illum[i], q->status[i], &q->expo[i],
                                       q->expo_status[i], p))
             b->bad++;
-        out_csv_row(b->out, p->id, &p->row);
-        if (b->summary && windows_add(b->wins, p->id, &p->row) != 0) {
-            fprintf(stderr, "oi-plan: out of memory: no window summary\n");
-            b->summary = NULL;
+        /* the rows' text into the block's (a terminal: each at once) */
+        if (used > sizeof q->text - OUT_CSV_LINE_MAX) {
+            (void)fwrite(q->text, 1, used, b->out);
+            used = 0;
+        }
+        len = out_csv_text(q->text + used, p->id, p->state.status_name, p->state.has_numbers,
+                         p->state.has_observer, p->state.flags, &q->illum[i], &q->expo[i]);
+        if (len == 0) { /* an id to quote or a long one: on its own, after the rows before */
+            (void)fwrite(q->text, 1, used, b->out);
+            used = 0;
+            out_csv_fields(b->out, p->id, p->state.status_name, p->state.has_numbers,
+                           p->state.has_observer, p->state.flags, &q->illum[i], &q->expo[i]);
+        }
+        used += len;
+        if (b->out_tty) {
+            (void)fwrite(q->text, 1, used, b->out);
+            used = 0;
+        }
+        if (b->summary) {
+            plan_row row;
+            memset(&row, 0, sizeof row);
+            row.status = p->state.status;
+            row.status_name = p->state.status_name;
+            row.has_numbers = p->state.has_numbers;
+            row.has_observer = p->state.has_observer;
+            row.flags = p->state.flags;
+            if (row.has_numbers) row.illum = q->illum[i];
+            if (row.has_observer) row.expo = q->expo[i];
+            if (windows_add(b->wins, p->id, &row) != 0) {
+                fprintf(stderr, "oi-plan: out of memory: no window summary\n");
+                b->summary = NULL;
+            }
         }
     }
+    (void)fwrite(q->text, 1, used, b->out);
     q->n = 0;
     q->id_used = 0;
     b->flushing = 0;
 }
 
-/* Append the row just read (parsed or failed) to the block; the block is
- * flushed when full, and at once when the id could not be copied. */
-static void add_pending(batch *b, const char *id, const plan_row *row, const oi_scene *scene,
-                        const oi_model *model, const oi_expose_goal *goal,
-                        const oi_camera *camera, unsigned long line, int compute)
+/* Room in the block's ids for an id of len bytes (its NUL counted): the
+ * block is flushed when they are full. Called before the row is parsed
+ * into the block. */
+static void room_for_id(batch *b, size_t len)
+{
+    if (b->pending->id_used + len > sizeof b->pending->ids) flush_pending(b);
+}
+
+/* Append the row just read (parsed into the block's next row, or failed)
+ * to the block (room_for_id made room for its id); the block is flushed
+ * when full, and at once when the id could not be copied. */
+static void add_pending(batch *b, const char *id, size_t len, const row_state *row,
+                        unsigned long line, int compute)
 {
     pending *q = b->pending;
-    pending_row *p;
-    const size_t len = strlen(id) + 1;
+    pending_row *p = &q->rows[q->n];
     int at_once = 0;
-    if (q->id_used + len > sizeof q->ids) flush_pending(b);
-    p = &q->rows[q->n];
-    if (len <= sizeof q->ids) {
+    if (q->id_used + len <= sizeof q->ids) {
         memcpy(q->ids + q->id_used, id, len);
         p->id = q->ids + q->id_used;
         q->id_used += len;
@@ -788,17 +852,10 @@ static void add_pending(batch *b, const char *id, const plan_row *row, const oi_
         p->id = id; /* valid until the next record is read */
         at_once = 1;
     }
-    p->row = *row;
+    p->state = *row;
     p->compute = compute;
     p->line = line;
-    if (compute) {
-        q->scenes[q->n] = *scene;
-        memcpy(&p->model, model, sizeof *model);
-        memcpy(&p->goal, goal, sizeof *goal);
-        p->camera = camera;
-    } else {
-        b->bad++; /* failed while parsing */
-    }
+    if (!compute) b->bad++; /* failed while parsing */
     q->n++;
     if (at_once || q->n == PENDING_MAX) flush_pending(b);
 }
@@ -841,6 +898,7 @@ int batch_run_map(const char *path, const oi_camera *default_camera, const plan_
     b.wins = &wins;
     b.summary = summary;
     b.path = strcmp(path, "-") == 0 ? "<stdin>" : path;
+    oi_scene_defaults(&b.scene_defaults);
     b.pending = malloc(sizeof *b.pending);
     if (b.pending == NULL) {
         fprintf(stderr, "oi-plan: out of memory\n");
@@ -864,18 +922,16 @@ int batch_run_map(const char *path, const oi_camera *default_camera, const plan_
     }
     /* rows go out in blocks of OUT_BUFFER bytes (a pipe's default is 4 KiB:
      * a write per ~13 rows); a terminal keeps its line buffering */
-    if (!isatty(fileno(out))) (void)setvbuf(out, NULL, _IOFBF, OUT_BUFFER);
+    b.out_tty = isatty(fileno(out));
+    if (!b.out_tty) (void)setvbuf(out, NULL, _IOFBF, OUT_BUFFER);
     out_csv_header(out);
     tty = isatty(fileno(stderr));
     last = time(NULL);
 
     for (;;) {
-        plan_row row;
-        oi_scene sc;
-        oi_model model;
-        oi_expose_goal goal;
-        const oi_camera *cam = NULL;
+        row_state row;
         char idbuf[32];
+        size_t len;
         const char *id;
         int sr = 0, compute;
         st = csv_next(&r);
@@ -894,13 +950,17 @@ int batch_run_map(const char *path, const oi_camera *default_camera, const plan_
             row_error(&b, r.err_line, -1, csv_result_text(st), where);
             memset(&row, 0, sizeof row);
             row.status_name = PLAN_STATUS_PARSE;
-            add_pending(&b, b.col[C_ID] >= 0 ? "" : idbuf, &row, NULL, NULL, NULL, NULL,
-                        r.err_line, 0);
+            id = b.col[C_ID] >= 0 ? "" : idbuf;
+            len = strlen(id) + 1;
+            room_for_id(&b, len);
+            add_pending(&b, id, len, &row, r.err_line, 0);
             continue;
         }
         id = b.col[C_ID] >= 0 ? field_of(&b, &r, C_ID, &sr) : idbuf;
-        compute = parse_row(&b, &r, &row, &sc, &model, &goal, &cam);
-        add_pending(&b, id, &row, &sc, &model, &goal, cam, r.rec_line, compute);
+        len = strlen(id) + 1;
+        room_for_id(&b, len);
+        compute = parse_row(&b, &r, &row);
+        add_pending(&b, id, len, &row, r.rec_line, compute);
         progress(rows, &last, tty);
     }
     flush_pending(&b);

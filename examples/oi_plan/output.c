@@ -68,37 +68,12 @@ void out_flags(unsigned flags, char *buf, size_t size)
     }
 }
 
-/* Longest id copied into the row's text; a longer one (or one to quote) is
- * written on its own first. */
-#define ID_INLINE_MAX 256
-
-void out_csv_row(FILE *fp, const char *id, const plan_row *row)
+/* The row's numbers and flags, from the first number's comma to the
+ * newline, at line; returns the length. */
+static size_t put_numbers(char *line, int num, int obs, unsigned flags, const oi_illum *il,
+                          const oi_exposure *ex)
 {
-    const oi_illum *il = &row->illum;
-    int num = row->has_numbers;
-    int obs = num && row->has_observer;
-    /* the row's text, written at once: id, status (a library name), 14
-     * numbers, flags (out_flags' 160) */
-    char line[ID_INLINE_MAX + 64 + 14 * NUM_TEXT_MAX + 160 + 8];
-    size_t n = strcspn(id, ",\"\n\r"), k;
-
-    if (id[n] != '\0' || n > ID_INLINE_MAX ||
-        (n > 0 && (id[0] == ' ' || id[0] == '\t' || id[n - 1] == ' ' || id[n - 1] == '\t'))) {
-        put_field(fp, id);
-        n = 0;
-    } else {
-        memcpy(line, id, n);
-    }
-    line[n++] = ',';
-    k = strlen(row->status_name);
-    if (k > 63) { /* not a library name: on its own */
-        (void)fwrite(line, 1, n, fp);
-        fputs(row->status_name, fp);
-        n = 0;
-    } else {
-        memcpy(line + n, row->status_name, k);
-        n += k;
-    }
+    size_t n = 0;
     n += put_num(line + n, num, (double)il->shadow.fraction);
     n += put_num(line + n, num, (double)il->shadow.fraction_atm);
     n += put_num(line + n, num, (double)il->e_sun);
@@ -108,17 +83,73 @@ void out_csv_row(FILE *fp, const char *id, const plan_row *row)
     n += put_num(line + n, num, (double)il->earth_h_km);
     n += put_num(line + n, obs, (double)il->flux_obs);
     n += put_num(line + n, obs, (double)il->mag_v);
-    n += put_num(line + n, obs, (double)row->expo.exposure_s);
-    n += put_num(line + n, obs, (double)row->expo.gain);
-    n += put_num(line + n, obs, (double)row->expo.snr);
+    n += put_num(line + n, obs, (double)ex->exposure_s);
+    n += put_num(line + n, obs, (double)ex->gain);
+    n += put_num(line + n, obs, (double)ex->snr);
     line[n++] = ',';
     if (num) {
-        out_flags(row->flags, line + n, 160);
+        out_flags(flags, line + n, 160);
         n += strlen(line + n);
     }
-    n += put_num(line + n, obs, (double)row->expo.detect_margin_mag);
+    n += put_num(line + n, obs, (double)ex->detect_margin_mag);
     n += put_num(line + n, num, (double)il->e_sky);
     line[n++] = '\n';
+    return n;
+}
+
+/* Whether id goes into the row's text as it is (no quotes, not longer
+ * than OUT_ID_INLINE_MAX); *n its length. */
+static int id_inline(const char *id, size_t *n)
+{
+    const size_t k = strcspn(id, ",\"\n\r");
+    *n = k;
+    return id[k] == '\0' && k <= OUT_ID_INLINE_MAX &&
+           !(k > 0 && (id[0] == ' ' || id[0] == '\t' || id[k - 1] == ' ' || id[k - 1] == '\t'));
+}
+
+void out_csv_row(FILE *fp, const char *id, const plan_row *row)
+{
+    out_csv_fields(fp, id, row->status_name, row->has_numbers, row->has_observer, row->flags,
+                   &row->illum, &row->expo);
+}
+
+size_t out_csv_text(char *line, const char *id, const char *status_name, int has_numbers,
+                    int has_observer, unsigned flags, const oi_illum *il, const oi_exposure *ex)
+{
+    size_t n, k = strlen(status_name);
+    if (k > 63 || !id_inline(id, &n)) return 0;
+    memcpy(line, id, n);
+    line[n++] = ',';
+    memcpy(line + n, status_name, k);
+    n += k;
+    return n + put_numbers(line + n, has_numbers, has_numbers && has_observer, flags, il, ex);
+}
+
+void out_csv_fields(FILE *fp, const char *id, const char *status_name, int has_numbers,
+                    int has_observer, unsigned flags, const oi_illum *il, const oi_exposure *ex)
+{
+    /* the row's text, written at once: id, status (a library name), 14
+     * numbers, flags (out_flags' 160) */
+    char line[OUT_CSV_LINE_MAX];
+    size_t n, k;
+
+    if (!id_inline(id, &n)) {
+        put_field(fp, id);
+        n = 0;
+    } else {
+        memcpy(line, id, n);
+    }
+    line[n++] = ',';
+    k = strlen(status_name);
+    if (k > 63) { /* not a library name: on its own */
+        (void)fwrite(line, 1, n, fp);
+        fputs(status_name, fp);
+        n = 0;
+    } else {
+        memcpy(line + n, status_name, k);
+        n += k;
+    }
+    n += put_numbers(line + n, has_numbers, has_numbers && has_observer, flags, il, ex);
     (void)fwrite(line, 1, n, fp);
 }
 

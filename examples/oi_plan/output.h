@@ -7,6 +7,7 @@
 
 #include <stdio.h>
 
+#include "numtext.h"
 #include "orbillum.h"
 
 /* Everything one output row needs. */
@@ -26,6 +27,23 @@ extern const char plan_csv_header[];
 void out_csv_header(FILE *fp);
 /* One CSV row; id is quoted when it holds a comma, quote or line break. */
 void out_csv_row(FILE *fp, const char *id, const plan_row *row);
+/* Longest id copied into a row's text; a longer one (or one to quote) is
+ * written on its own first (out_csv_fields). */
+#define OUT_ID_INLINE_MAX 256
+/* Bytes out_csv_text may write: the id, the status (a library name), 14
+ * numbers, the flags (out_flags' 160). */
+#define OUT_CSV_LINE_MAX (OUT_ID_INLINE_MAX + 64 + 14 * NUM_TEXT_MAX + 160 + 8)
+/* out_csv_row from the row's parts: status name, has_numbers, has_observer
+ * and flags as in plan_row, the numbers from il and ex (not read where the
+ * row leaves them empty). */
+void out_csv_fields(FILE *fp, const char *id, const char *status_name, int has_numbers,
+                    int has_observer, unsigned flags, const oi_illum *il, const oi_exposure *ex);
+/* The text out_csv_fields writes, at line (OUT_CSV_LINE_MAX bytes):
+ * returns its length, or 0 (nothing written) for a row whose id must be
+ * written on its own (quoted, or longer than OUT_ID_INLINE_MAX) or whose
+ * status is no library name: out_csv_fields writes those. */
+size_t out_csv_text(char *line, const char *id, const char *status_name, int has_numbers,
+                    int has_observer, unsigned flags, const oi_illum *il, const oi_exposure *ex);
 /* Flag names joined by '+' into buf (empty string for none). */
 void out_flags(unsigned flags, char *buf, size_t size);
 

@@ -137,12 +137,36 @@ static void test_across_read_blocks(void **state)
     assert_int_equal(failures, 0);
 }
 
+static void test_chunk_edges(void **state)
+{
+    /* lines of 0..70 bytes with a comma, a blank and a tab at each place: the
+     * sixteen-byte split's chunk edges and last chunk (csv_read.c) */
+    char text[96];
+    size_t n, c;
+    (void)state;
+    failures = 0;
+    for (n = 1; n <= 70; n++) {
+        for (c = 0; c < n; c++) {
+            memset(text, '7', n);
+            text[c] = ',';
+            text[(c + 1) % n] = ' ';
+            text[(c + 17) % n] = '\t';
+            text[n] = '\n';
+            memcpy(text + n + 1, "1,2\n", 4);
+            check_same(text, n + 5);
+            check_same(text, n); /* the line without its LF: the byte by byte reader */
+        }
+    }
+    assert_int_equal(failures, 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_hand_written),
         cmocka_unit_test(test_random_texts),
         cmocka_unit_test(test_across_read_blocks),
+        cmocka_unit_test(test_chunk_edges),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -262,6 +262,37 @@ static void test_integers_short_and_halfway(void **state)
     assert_int_equal(failures, 0);
 }
 
+static void test_digits_with_zeros(void **state)
+{
+    /* 17 significant digits with a run of zeros at each place and the rest
+     * random (half of them zeros), at exponents -6..20: every lane of the
+     * sixteen-digit step and its count up to the last nonzero digit */
+    char text[64];
+    long i;
+    int z, k;
+    (void)state;
+    failures = 0;
+    for (i = 0; i < 20000; i++) {
+        for (z = 0; z <= 16; z++) {
+            char d[18];
+            double x;
+            for (k = 0; k < 17; k++) {
+                uint64_t u = rand64();
+                d[k] = (char)('0' + ((u & 1u) ? (int)((u >> 1) % 10u) : 0));
+            }
+            if (d[0] == '0') d[0] = '1';
+            for (k = 17 - z; k < 17; k++) d[k] = '0'; /* z trailing zeros */
+            d[17] = '\0';
+            (void)snprintf(text, sizeof text, "%c.%se%d", d[0], d + 1, (int)(rand64() % 27u) - 6);
+            x = strtod(text, NULL);
+            check_format(x);
+            check_format(-x);
+            check_format(nextafter(x, INFINITY));
+        }
+    }
+    assert_int_equal(failures, 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -272,6 +303,7 @@ int main(void)
         cmocka_unit_test(test_random_decimal_strings),
         cmocka_unit_test(test_near_midpoints),
         cmocka_unit_test(test_integers_short_and_halfway),
+        cmocka_unit_test(test_digits_with_zeros),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
