@@ -192,6 +192,20 @@ int oi__atm_coords(const oi_atm_table *t, oi_real z, oi_real rho, oi_real d, oi_
     return table_index(t, z, rho, rc, a, iu, it);
 }
 
+/* On the anti-Sun axis the refracted light's mean direction is the Sun's (the
+ * ring of the limb is lit all round) and the tilt's direction e_out is
+ * undefined: below rho = TILT_AXIS z, where the cross product's rounding
+ * (a few u |point|) is a noticeable part of rho, no tilt. The tilt dropped
+ * there is within the psi table's quantisation step (3.8e-7 rad; double),
+ * or a few 1e-5 rad at the Moon's distance (float, whose e_out is then
+ * known to ~6 %); beyond it e_out turns with the scene, so that the
+ * direction does too (tests/python/test_properties.py, the rotation). */
+#ifdef OI_SINGLE_PRECISION
+#define TILT_AXIS OI_R(1.0e-6)
+#else
+#define TILT_AXIS OI_R(1.0e-10)
+#endif
+
 /* Direction of the refracted light: dir (the Sun's) tilted by psi towards
  * e_out = (point + z s) / rho, the outward normal of the axis: dir ~ dir +
  * tan(psi) e_out, normalised. |psi| <= OI_ATM_PSI_MAX_RAD: the series of tan
@@ -419,7 +433,7 @@ int oi__atm_fraction_about(const oi_real sun_km[3], const oi_real point_km[3], c
         }
     }
     *fraction_atm = f;
-    if (dir != NULL && f > (oi_real)0 && rho > (oi_real)0)
+    if (dir != NULL && f > (oi_real)0 && rho > TILT_AXIS * z)
         tilt(t->psi_min_rad + t->psi_scale_rad * oi__bilinear_u16(t->psi, t->nt, i, j, fu, ft),
              point_km, z, s_hat, rho, dir);
     return OI_OK;
