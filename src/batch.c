@@ -228,9 +228,16 @@ typedef struct {
 
 /* The outputs of the rows classify_block decides, by ROW_*: the full call's
  * fractions (1 or 0) and region, the fields the mask leaves out 0 (padding
- * too, set once here: each decided row is one copy of its template). */
+ * too, set once here: each decided row is one copy of its template).
+ * ROW_PENUMBRA's template only with the crescent kernel: without it no row
+ * is ROW_PENUMBRA (classify_block's penumbra_too is 0). */
+#ifdef OI_CRESCENT_KERNEL
+#define DECIDED_ROWS (ROW_PENUMBRA + 1)
+#else
+#define DECIDED_ROWS (ROW_UMBRA + 1)
+#endif
 typedef struct {
-    oi_shadow row[ROW_PENUMBRA + 1];
+    oi_shadow row[DECIDED_ROWS];
 } decided_rows;
 
 static void decided_templates(unsigned outputs, decided_rows *d)
@@ -244,8 +251,10 @@ static void decided_templates(unsigned outputs, decided_rows *d)
         if (outputs & OI_BATCH_ATMOSPHERE) d->row[r].fraction_atm = f;
         d->row[r].region = r == ROW_LIT ? OI_SHADOW_LIT : OI_SHADOW_UMBRA;
     }
+#ifdef OI_CRESCENT_KERNEL
     /* the crescent's rows: their fraction written over it */
     d->row[ROW_PENUMBRA].region = OI_SHADOW_PENUMBRA;
+#endif
 }
 
 /* What is left of a row after decided_block: nothing, the crescent's

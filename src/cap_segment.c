@@ -9,15 +9,13 @@
 
 /* ---------------------------------------------------------------- quadrature */
 
-/* 8-point Gauss-Legendre rule on [0, 1]: the nodes x below and 1 - x
- * share the weights (computed with mpmath at 40 digits by Newton iteration
- * on P_8; tests/ref/gen_refs.py --gauss 8 prints them). */
-#define GL_HALF 4
-static const oi_real gl_node[GL_HALF][2] = {
-    {OI_R(0.0198550717512318841582), OI_R(0.0506142681451881295763)},
-    {OI_R(0.101666761293186630204), OI_R(0.111190517226687235272)},
-    {OI_R(0.237233795041835507091), OI_R(0.156853322938943643669)},
-    {OI_R(0.40828267875217509753), OI_R(0.181341891689180991483)},
+/* The 8-point Gauss-Legendre rule on [0, 1] (src/oi_internal.h): the nodes
+ * x and 1 - x share the weights. */
+const oi_real oi__gl8[OI_GL8_HALF][2] = {
+    {OI_GL8_X1, OI_GL8_W1},
+    {OI_GL8_X2, OI_GL8_W2},
+    {OI_GL8_X3, OI_GL8_W3},
+    {OI_GL8_X4, OI_GL8_W4},
 };
 
 /* J(alpha) = int_0^alpha sin^2 u / (1 - k2 sin^2 u) du, k2 = sin^2 r <= 1,
@@ -33,12 +31,12 @@ static oi_real gauss_j(oi_real alpha, oi_real k2)
     oi_real sum = (oi_real)0, h = alpha / (oi_real)panels;
     for (k = 0; k < panels; ++k) {
         oi_real lo = (oi_real)k * h;
-        for (i = 0; i < GL_HALF; ++i) {
+        for (i = 0; i < OI_GL8_HALF; ++i) {
             for (j = 0; j < 2; ++j) {
-                oi_real x = j ? (oi_real)1 - gl_node[i][0] : gl_node[i][0];
+                oi_real x = j ? (oi_real)1 - oi__gl8[i][0] : oi__gl8[i][0];
                 oi_real su = OI_SIN(lo + h * x);
                 oi_real s2 = su * su;
-                sum += gl_node[i][1] * s2 / ((oi_real)1 - k2 * s2);
+                sum += oi__gl8[i][1] * s2 / ((oi_real)1 - k2 * s2);
             }
         }
     }

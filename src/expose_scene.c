@@ -369,17 +369,30 @@ static OI_NOINLINE oi_real starlight_background(const scene_geom *g)
  * floor's disc and the top's (an estimate: most of e_sky comes from the limb
  * near the shadow; docs/skylight.md measures it). 0 for an observer inside
  * the atmosphere or a boresight that misses the ring. */
-/* The sky table of the model and the radii of its floor and top: 0, or -1
- * without a table. A frame of its own: the resolved model is not live
- * during the table's lookup (make stack). */
-static OI_NOINLINE int sky_radii(const oi_model *model, const oi_sky_table **t, oi_real *top,
-                                 oi_real *fl)
+/* The sky table of the model and the radii of its top and floor (r[0],
+ * r[1]): 0, or -1 without a table. b: NULL (the single call: the model resolved here), or
+ * the batch's set-up, which resolved and checked it once: its Earth radius,
+ * and the caller's sky table as given (the resolution copies the pointer).
+ * A frame of its own: the resolved model is not live during the table's
+ * lookup (make stack). */
+static OI_NOINLINE int sky_radii(const oi_model *model, const oi__expose_scene_batch *b,
+                                 const oi_sky_table **t, oi_real r[2])
 {
     oi_model m;
-    if (oi__model_resolve(model, &m) < 0) return -1;
-    if (oi__sky_table_of(&m, t) < 0 || *t == NULL) return -1;
-    *top = m.earth_radius_km + (*t)->top_km;
-    *fl = m.earth_radius_km + (*t)->floor_km;
+    oi_real re;
+    if (b != NULL) {
+        if (model == NULL)
+            *t = oi_sky_table_default();
+        else if (oi__sky_table_of(model, t) < 0)
+            return -1;
+        re = b->re;
+    } else {
+        if (oi__model_resolve(model, &m) < 0 || oi__sky_table_of(&m, t) < 0) return -1;
+        re = m.earth_radius_km;
+    }
+    if (*t == NULL) return -1;
+    r[0] = re + (*t)->top_km;
+    r[1] = re + (*t)->floor_km;
     return 0;
 }
 
@@ -396,11 +409,13 @@ static OI_NOINLINE oi_real sun_observer_angle(const oi_scene *scene, oi_real *d_
 }
 
 static OI_NOINLINE oi_real sky_background(const oi_scene *scene, const oi_model *model,
-                                          const scene_geom *g)
+                                          const oi__expose_scene_batch *b, const scene_geom *g)
 {
     const oi_sky_table *t;
-    oi_real top, fl, ob, b2, theta, e, psi, st, sf, ct, cf, d_sun;
-    if (sky_radii(model, &t, &top, &fl) < 0) return 0;
+    oi_real r[2], top, fl, ob, b2, theta, e, psi, st, sf, ct, cf, d_sun;
+    if (sky_radii(model, b, &t, r) < 0) return 0;
+    top = r[0];
+    fl = r[1];
     if (!(g->r_obs > top) || !(fl < top)) return 0;
     ob = oi__dot(scene->observer_km, g->bh);
     b2 = (g->r_obs - ob) * (g->r_obs + ob); /* squared closest approach (|ob| <= r_obs) */
@@ -515,7 +530,7 @@ int oi__expose_scene_row(const oi_camera *camera, const oi_scene *scene, const o
 #endif
 #ifndef OI_NO_SKYLIGHT
         if ((scene->terms & OI_TERM_SKY) != 0u && !lit_ground && !moon_hit)
-            in.background_w_m2_sr += sky_background(scene, model, &g);
+            in.background_w_m2_sr += sky_background(scene, model, b, &g);
 #endif
     }
     (void)moon_hit;

@@ -12,18 +12,11 @@
 static const oi_real ld_a[6] = {OI_R(0.26892), OI_R(1.34319), OI_R(-1.58427),
                                 OI_R(1.91271), OI_R(-1.31350), OI_R(0.37295)};
 
-/* 8-point Gauss-Legendre rule on [0, 1]: nodes x and 1 - x share the weights
- * (the nodes of src/cap_segment.c). */
-#define GL_HALF 4
+/* Panels of the 8-point Gauss-Legendre rule (oi__gl8, src/oi_internal.h:
+ * nodes x and 1 - x share the weights) per piece. */
 #ifndef PANELS
 #define PANELS 2
 #endif
-static const oi_real gl[GL_HALF][2] = {
-    {OI_R(0.0198550717512318841582), OI_R(0.0506142681451881295763)},
-    {OI_R(0.101666761293186630204), OI_R(0.111190517226687235272)},
-    {OI_R(0.237233795041835507091), OI_R(0.156853322938943643669)},
-    {OI_R(0.40828267875217509753), OI_R(0.181341891689180991483)},
-};
 
 /* A disc in front of the Sun: radius r, its centre d from the Sun's. */
 typedef struct {
@@ -131,15 +124,15 @@ oi_real oi__fraction_ld_two(oi_real rs, oi_real re, oi_real de, oi_real rm, oi_r
     for (i = 0; i + 1 < n; ++i) {
         const oi_real lo = b[i], w = b[i + 1] - b[i];
         if (!(w > (oi_real)0)) continue;
-        for (k = 0; k < PANELS * GL_HALF * 2; ++k) {
+        for (k = 0; k < PANELS * OI_GL8_HALF * 2; ++k) {
             {
-                const int p = k / (2 * GL_HALF), q = k % (2 * GL_HALF);
-                const int j = q % GL_HALF, s = q / GL_HALF;
-                oi_real x = s ? (oi_real)1 - gl[j][0] : gl[j][0], su, cu, rho, jac, g;
+                const int p = k / (2 * OI_GL8_HALF), q = k % (2 * OI_GL8_HALF);
+                const int j = q % OI_GL8_HALF, s = q / OI_GL8_HALF;
+                oi_real x = s ? (oi_real)1 - oi__gl8[j][0] : oi__gl8[j][0], su, cu, rho, jac, g;
                 oi_real u = ((oi_real)p + x) / (oi_real)PANELS;
                 OI_SINCOS(OI_PI_R * u, &su, &cu);
                 rho = lo + w * OI_R(0.5) * ((oi_real)1 - cu);
-                jac = gl[j][1] / (oi_real)PANELS * w * OI_R(0.5) * OI_PI_R * su;
+                jac = oi__gl8[j][1] / (oi_real)PANELS * w * OI_R(0.5) * OI_PI_R * su;
                 g = jac * intensity(rho, srs) * OI_SIN(rho);
                 vis += g * ring_visible(rho, &e, &m, delta);
                 all += g * (oi_real)2 * OI_PI_R;

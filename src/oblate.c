@@ -397,15 +397,6 @@ static void tangent_breaks(const cone *k, oi_real t, breaks *b)
     }
 }
 
-/* 8-point Gauss-Legendre rule on [0, 1], nodes x and 1 - x with one weight
- * (the values of src/cap_segment.c). */
-static const oi_real gl8[4][2] = {
-    {OI_R(0.0198550717512318841582), OI_R(0.0506142681451881295763)},
-    {OI_R(0.101666761293186630204), OI_R(0.111190517226687235272)},
-    {OI_R(0.237233795041835507091), OI_R(0.156853322938943643669)},
-    {OI_R(0.40828267875217509753), OI_R(0.181341891689180991483)},
-};
-
 /* Panels per piece between breaks, each an 8-point rule in u with psi = p0
  * + (p1 - p0)(1 - cos pi u)/2 clustering the nodes at both breaks; their
  * edges in u graded towards both ends, where a neighbouring break (a
@@ -554,13 +545,13 @@ static OI_NOINLINE oi_real fraction_from_breaks(const cone *k, int n, oi_real r,
             for (q = 0; q < N_SUMS; ++q) part[q] = (oi_real)0;
             for (g = 0; g < 8; ++g) {
                 const int gi = g >> 1;
-                const oi_real x = (g & 1) ? (oi_real)1 - gl8[gi][0] : gl8[gi][0];
+                const oi_real x = (g & 1) ? (oi_real)1 - oi__gl8[gi][0] : oi__gl8[gi][0];
                 const oi_real u = u0 + du * x;
                 oi_real sc[2], su;
                 OI_SINCOS(OI_PI_R * u, &sc[0], &sc[1]);
                 su = sc[0];
                 OI_SINCOS(p0 + hw * ((oi_real)1 - sc[1]), &sc[0], &sc[1]);
-                chord_values(k, n, t * sc[0], t * sc[1], t, want_ld, gl8[gi][1] * t * sc[1] * su,
+                chord_values(k, n, t * sc[0], t * sc[1], t, want_ld, oi__gl8[gi][1] * t * sc[1] * su,
                              part);
             }
             for (q = 0; q < N_SUMS; ++q) sum[q] += part[q] * du;

@@ -310,6 +310,24 @@ oi_real oi__half_angle(const oi_real hs[4], int i, int comp);
  * at +-alpha; negative for alpha > pi/2 (src/cap_segment.c). */
 oi_real oi__cap_segment(oi_real r, oi_real alpha);
 
+/* The 8-point Gauss-Legendre rule on [0, 1] (mpmath at 40 digits by Newton
+ * iteration on P_8; tools/coeffs/quadrature.py prints them): the nodes
+ * x < 1/2 and their weights, the nodes 1 - x sharing them. The constants
+ * for the crescent kernel's unrolled rule (src/sun_crescent.h), and the
+ * table oi__gl8 of the same values, rows (x, w), for the loops
+ * (src/cap_segment.c, which defines it; src/oblate.c,
+ * src/limb_darkened_union.c). */
+#define OI_GL8_HALF 4
+#define OI_GL8_X1 OI_R(0.0198550717512318841582)
+#define OI_GL8_X2 OI_R(0.101666761293186630204)
+#define OI_GL8_X3 OI_R(0.237233795041835507091)
+#define OI_GL8_X4 OI_R(0.40828267875217509753)
+#define OI_GL8_W1 OI_R(0.0506142681451881295763)
+#define OI_GL8_W2 OI_R(0.111190517226687235272)
+#define OI_GL8_W3 OI_R(0.156853322938943643669)
+#define OI_GL8_W4 OI_R(0.181341891689180991483)
+extern const oi_real oi__gl8[OI_GL8_HALF][2];
+
 /* The region (OI_SHADOW_*) and the visible fractions, uniform *frac and
  * (frac_ld not NULL) limb-darkened *frac_ld, of the solar disc of apparent
  * radius rs behind a nearer disc of radius re, centres sep apart (radians):

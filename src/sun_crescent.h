@@ -89,17 +89,6 @@ OI_CRESCENT_INLINE oi_real oi__crescent_twice_angle(oi_real n, oi_real d)
            oi__crescent_atan_small(oi__crescent_halve(oi__crescent_halve(oi__crescent_halve(z))));
 }
 
-/* 8-point Gauss-Legendre rule on [0, 1]: nodes x and 1 - x, weights w (the
- * rule of src/cap_segment.c, from mpmath at 40 digits). */
-#define OI__CRESCENT_X1 OI_R(0.0198550717512318841582)
-#define OI__CRESCENT_X2 OI_R(0.101666761293186630204)
-#define OI__CRESCENT_X3 OI_R(0.237233795041835507091)
-#define OI__CRESCENT_X4 OI_R(0.40828267875217509753)
-#define OI__CRESCENT_W1 OI_R(0.0506142681451881295763)
-#define OI__CRESCENT_W2 OI_R(0.111190517226687235272)
-#define OI__CRESCENT_W3 OI_R(0.156853322938943643669)
-#define OI__CRESCENT_W4 OI_R(0.181341891689180991483)
-
 /* The thin segment's integrand at w = tau x, c4 = 4 cos^2 r. */
 OI_CRESCENT_INLINE oi_real oi__crescent_node(oi_real tau, oi_real x, oi_real c4)
 {
@@ -120,15 +109,16 @@ OI_CRESCENT_INLINE oi_real oi__crescent_node(oi_real tau, oi_real x, oi_real c4)
 OI_CRESCENT_INLINE oi_real oi__crescent_thin_segment(oi_real s, oi_real c, oi_real tau)
 {
     const oi_real c4 = (oi_real)4 * c * c, one = (oi_real)1;
+    /* the rule's nodes x and 1 - x, weights w: OI_GL8_* (src/oi_internal.h) */
     const oi_real sum =
-        OI__CRESCENT_W1 * (oi__crescent_node(tau, OI__CRESCENT_X1, c4) +
-                           oi__crescent_node(tau, one - OI__CRESCENT_X1, c4)) +
-        OI__CRESCENT_W2 * (oi__crescent_node(tau, OI__CRESCENT_X2, c4) +
-                           oi__crescent_node(tau, one - OI__CRESCENT_X2, c4)) +
-        OI__CRESCENT_W3 * (oi__crescent_node(tau, OI__CRESCENT_X3, c4) +
-                           oi__crescent_node(tau, one - OI__CRESCENT_X3, c4)) +
-        OI__CRESCENT_W4 * (oi__crescent_node(tau, OI__CRESCENT_X4, c4) +
-                           oi__crescent_node(tau, one - OI__CRESCENT_X4, c4));
+        OI_GL8_W1 * (oi__crescent_node(tau, OI_GL8_X1, c4) +
+                     oi__crescent_node(tau, one - OI_GL8_X1, c4)) +
+        OI_GL8_W2 * (oi__crescent_node(tau, OI_GL8_X2, c4) +
+                     oi__crescent_node(tau, one - OI_GL8_X2, c4)) +
+        OI_GL8_W3 * (oi__crescent_node(tau, OI_GL8_X3, c4) +
+                     oi__crescent_node(tau, one - OI_GL8_X3, c4)) +
+        OI_GL8_W4 * (oi__crescent_node(tau, OI_GL8_X4, c4) +
+                     oi__crescent_node(tau, one - OI_GL8_X4, c4));
     return (oi_real)16 * s * s * c * tau * sum;
 }
 

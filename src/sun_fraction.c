@@ -166,15 +166,35 @@ static oi_real crescent_fraction(oi_real rs, oi_real re, oi_real sep, oi_real ss
 #define GEOMETRIC_FRAME
 #endif
 
+/* eclipse_fraction forms the limb-darkened integral: wanted (need_ld,
+ * frac_ld not NULL) and the Sun's radius rs within (OI_LD_RS_MIN,
+ * OI_LD_RS_MAX] (beyond, an observer within 2.1 solar radii of the Sun's
+ * centre, or below 1e-15 rad, the uniform disc stands in). */
+static int ld_formed(int need_ld, oi_real rs, const oi_real *frac_ld)
+{
+#ifdef OI_NO_LIMB_DARKENING
+    (void)need_ld;
+    (void)rs;
+    (void)frac_ld;
+    return 0;
+#else
+    return need_ld && frac_ld != NULL && rs <= OI_LD_RS_MAX && rs > OI_LD_RS_MIN;
+#endif
+}
+
 /* Step 3, the discs overlapping (penumbra or annular): the region, and the
  * visible fractions of the uniform and the limb-darkened disc (Notes 1-3);
  * out of line with the ellipsoid: not in the frame that calls the
  * geometry's steps.
  * rs: the Sun's apparent radius, re: the occulter's, sep: their separation;
  * need_ld = 0 leaves the limb-darkened integral out (frac_ld = frac);
- * frac_ld may be NULL. */
+ * frac_ld may be NULL; crescent: NULL, or the penumbra's uniform fraction
+ * already formed (the crescent kernel's, src/sun_crescent.h), which then
+ * stands for the angle-based crescent's: of that only the triangle the
+ * limb-darkened integral reads is solved, where it is formed. */
 static GEOMETRIC_FRAME int eclipse_fraction(oi_real rs, oi_real re, oi_real sep, int need_ld,
-                                            oi_real *frac, oi_real *frac_ld)
+                                            const oi_real *crescent, oi_real *frac,
+                                            oi_real *frac_ld)
 {
     oi_real ssun = oi__sin_half_sq(rs);
     oi_real pa_s = OI_PI_R; /* pi - alpha_s; pi when annular */
@@ -188,30 +208,42 @@ static GEOMETRIC_FRAME int eclipse_fraction(oi_real rs, oi_real re, oi_real sep,
         *frac = OI_SIN(OI_R(0.5) * (rs - re)) * OI_SIN(OI_R(0.5) * (rs + re)) / ssun;
     } else {
         region = OI_SHADOW_PENUMBRA;
-        tri = hs;
-        *frac = crescent_fraction(rs, re, sep, ssun, hs, &pa_s);
+#ifdef OI_CRESCENT_KERNEL
+        if (crescent != NULL) {
+            *frac = *crescent;
+            if (ld_formed(need_ld, rs, frac_ld)) {
+                tri = hs;
+                oi__half_sines(rs, re, sep, hs);
+                pa_s = oi__half_angle(hs, 2, 1);
+            }
+        } else
+#else
+        (void)crescent; /* NULL: the single-precision build has no kernel */
+#endif
+        {
+            tri = hs;
+            *frac = crescent_fraction(rs, re, sep, ssun, hs, &pa_s);
+        }
     }
     *frac = oi__clamp(*frac, (oi_real)0, (oi_real)1);
+    if (frac_ld != NULL) *frac_ld = *frac;
+    if (ld_formed(need_ld, rs, frac_ld)) {
+#ifndef OI_NO_LIMB_DARKENING
+        *frac_ld = oi__fraction_limb_darkened(rs, re, sep, pa_s, tri);
+#endif
+    }
 #ifdef OI_NO_LIMB_DARKENING
-    (void)pa_s;
+    (void)pa_s; /* the limb-darkened disc is compiled out: frac_ld = frac */
     (void)tri;
-    (void)need_ld;
-    if (frac_ld != NULL) *frac_ld = *frac; /* the limb-darkened disc is compiled out */
-#else
-    /* beyond OI_LD_RS_MAX (an observer within 2.1 solar radii of the Sun's
-     * centre) or below 1e-15 rad the uniform disc stands in */
-    if (frac_ld != NULL)
-        *frac_ld = need_ld && rs <= OI_LD_RS_MAX && rs > OI_LD_RS_MIN
-                       ? oi__fraction_limb_darkened(rs, re, sep, pa_s, tri)
-                       : *frac;
 #endif
     return region;
 }
 
 /* The region and the visible fractions of a disc of apparent radius rs
- * behind a nearer disc of radius re, centres sep apart. */
-static int disc_fractions(oi_real rs, oi_real re, oi_real sep, int need_ld, oi_real *frac,
-                          oi_real *frac_ld)
+ * behind a nearer disc of radius re, centres sep apart; crescent as in
+ * eclipse_fraction. */
+static int disc_fractions(oi_real rs, oi_real re, oi_real sep, int need_ld,
+                          const oi_real *crescent, oi_real *frac, oi_real *frac_ld)
 {
     if (sep >= re + rs) {
         *frac = (oi_real)1;
@@ -223,15 +255,23 @@ static int disc_fractions(oi_real rs, oi_real re, oi_real sep, int need_ld, oi_r
         if (frac_ld != NULL) *frac_ld = (oi_real)0;
         return OI_SHADOW_UMBRA;
     }
-    return eclipse_fraction(rs, re, sep, need_ld, frac, frac_ld);
+    return eclipse_fraction(rs, re, sep, need_ld, crescent, frac, frac_ld);
 }
+
+#ifdef OI_CRESCENT_KERNEL
+/* disc_fractions' region is OI_SHADOW_PENUMBRA: |re - rs| < sep < re + rs. */
+static int discs_in_penumbra(oi_real rs, oi_real re, oi_real sep)
+{
+    return sep < re + rs && sep > re - rs && sep > rs - re;
+}
+#endif
 
 #ifndef OI_SUN_FRACTION_WANT_ONLY
 /* disc_fractions for the other occulters (src/oi_internal.h): the Sun
  * behind the Moon, the Moon behind the Earth; frac_ld NULL: not wanted. */
 int oi__disc_fractions(oi_real rs, oi_real re, oi_real sep, oi_real *frac, oi_real *frac_ld)
 {
-    return disc_fractions(rs, re, sep, frac_ld != NULL, frac, frac_ld);
+    return disc_fractions(rs, re, sep, frac_ld != NULL, NULL, frac, frac_ld);
 }
 #endif
 
@@ -323,22 +363,21 @@ static GEOMETRIC_FRAME int shadow_geometric(const oi_real sun_km[3], const oi_re
         out->fraction = out->fraction_ld = (oi_real)1;
         out->region = OI_SHADOW_LIT;
     } else {
-        out->region = disc_fractions(out->sun_radius_rad, out->earth_radius_rad,
-                                     out->separation_rad, need_ld, &out->fraction,
-                                     &out->fraction_ld);
+        const oi_real *crescent = NULL;
 #ifdef OI_CRESCENT_KERNEL
         /* the sphere's penumbra: the batch's branch-free crescent (src/sun_crescent.h) */
-        if (out->region == OI_SHADOW_PENUMBRA && m->earth_shape == OI_EARTH_SPHERE) {
+        oi_real kernel;
+        if (m->earth_shape == OI_EARTH_SPHERE &&
+            discs_in_penumbra(out->sun_radius_rad, out->earth_radius_rad, out->separation_rad)) {
             int in_domain;
-            const oi_real f = oi__crescent_fraction(sun_km, point_km, m->earth_radius_km,
-                                                    m->sun_radius_km, &in_domain);
-            if (in_domain) {
-                /* where the uniform disc stands in for the limb-darkened one */
-                if (out->fraction_ld == out->fraction) out->fraction_ld = f;
-                out->fraction = f;
-            }
+            kernel = oi__crescent_fraction(sun_km, point_km, m->earth_radius_km,
+                                           m->sun_radius_km, &in_domain);
+            if (in_domain) crescent = &kernel;
         }
 #endif
+        out->region = disc_fractions(out->sun_radius_rad, out->earth_radius_rad,
+                                     out->separation_rad, need_ld, crescent, &out->fraction,
+                                     &out->fraction_ld);
     }
     return (st & DISCS_WANT_EXACT) ? GEOMETRIC_WANTS_EXACT : OI_OK;
 }

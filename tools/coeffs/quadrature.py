@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
-"""Gauss-Legendre rules of src/shadow.c (gl_node, ld_node), from mpmath.
+"""Gauss-Legendre rules of src/ (OI_GL8_*, ld_node), from mpmath.
 
   .venv/bin/python -m tools.coeffs.quadrature  # prints the C tables
 
@@ -9,7 +9,8 @@ the Legendre polynomial P_n (Newton's iteration from Tricomi's estimate
 cos(pi (i - 1/4) / (n + 1/2)), at 40 digits), the weights
 w = 1 / ((1 - t^2) P_n'(t)^2) (half those of [-1, 1]); by symmetry only the
 nodes x < 1/2 are stored, 1 - x sharing the weight (Abramowitz & Stegun
-1964, 25.4.29). gl_node: n = 8, rows (x, w). ld_node: n = 12 (double) or
+1964, 25.4.29). OI_GL8_X1..X4, OI_GL8_W1..W4 (src/oi_internal.h): n = 8,
+the nodes and their weights. ld_node: n = 12 (double) or
 6 (float), rows (x, w, sin(pi x/2), cos(pi x/2)) for the panel [0, pi/2] of
 the limb-darkened disc.
 """
@@ -46,19 +47,26 @@ def gauss_legendre_01(n):
 
 
 def constants(single):
-    """{C name: rows of values} at DPS digits; the C literal must hold each
-    value rounded to the precision (src/shadow.c writes 21 digits)."""
+    """{C name: value or rows of values} at DPS digits; the C literal must hold
+    each value rounded to the precision (src/ writes 21 digits). The 8-point
+    rule's names lack the OI_ of their macros (the test finds OI_name too)."""
     with mp.workdps(DPS):
-        gl = [[x, w] for x, w in gauss_legendre_01(GL_POINTS)]
-        ld = [[x, w, mp.sin(mp.pi * x / 2), mp.cos(mp.pi * x / 2)]
-              for x, w in gauss_legendre_01(LD_POINTS[single])]
-        return {"gl_node": gl, "ld_node": ld}
+        out = {}
+        for i, (x, w) in enumerate(gauss_legendre_01(GL_POINTS), 1):
+            out["GL8_X%d" % i] = x
+            out["GL8_W%d" % i] = w
+        out["ld_node"] = [[x, w, mp.sin(mp.pi * x / 2), mp.cos(mp.pi * x / 2)]
+                          for x, w in gauss_legendre_01(LD_POINTS[single])]
+        return out
 
 
 def main():
     for single, name in ((False, "double"), (True, "float")):
         print(f"/* ---- {name} */")
         for arr, rows in constants(single).items():
+            if not isinstance(rows, list):
+                print(f"#define OI_{arr} OI_R({mp.nstr(rows, 21)})")
+                continue
             print(f"static const oi_real {arr}[{len(rows)}][{len(rows[0])}] = {{")
             for r in rows:
                 print("    {" + ", ".join(f"OI_R({mp.nstr(v, 21)})" for v in r) + "},")
