@@ -282,6 +282,36 @@ static int is_blank(char c)
     return c == ' ' || c == '\t';
 }
 
+/* quick_record's field buf[a..z) (z at its comma or the line's end) trimmed
+ * of blanks, NUL-terminated in place and recorded as field *nf; *content set
+ * when it holds something. 0 when the field index cannot grow. */
+static int quick_field(csv_reader *r, size_t a, size_t z, size_t *nf, int *content)
+{
+    /* blanks: none in the planner's rows (one compare a side) */
+    if ((unsigned char)r->buf[a] <= ' ')
+        while (a < z && is_blank(r->buf[a])) a++;
+    if (z > a && (unsigned char)r->buf[z - 1] <= ' ')
+        while (z > a && is_blank(r->buf[z - 1])) z--;
+    if (z > a) *content = 1;
+    r->buf[z] = '\0';
+    if (*nf == r->fcap && !reserve(r, 0, *nf + 1)) return 0;
+    r->start[(*nf)++] = a;
+    return 1;
+}
+
+/* quick_record's line of len bytes and nf fields taken: the record. */
+static int quick_done(csv_reader *r, size_t nf, size_t len, int content, int *blank)
+{
+    r->nfields = nf;
+    r->len = len + 1;
+    r->rec_line = r->line;
+    r->in_pos += len + 1;
+    r->line++;
+    r->col = 1;
+    *blank = !content;
+    return CSV_RECORD;
+}
+
 #ifdef CSV_SSE2
 /* quick_record's split of the line p[0..len) (p[len] the LF, in the block)
  * sixteen bytes at a time: each chunk copied, its commas and its quotes, CRs
@@ -311,27 +341,9 @@ static int quick_split16(csv_reader *r, const unsigned char *p, size_t len, int 
         if (bad != 0u) return -1;
         while (cm != 0u) {
             const size_t e = i + (size_t)__builtin_ctz(cm);
-            size_t z = e;
             cm &= cm - 1u;
-            /* blanks: none in the planner's rows (one compare a side) */
-            if ((unsigned char)r->buf[a] <= ' ')
-                while (a < z && is_blank(r->buf[a])) a++;
-            if (z > a && (unsigned char)r->buf[z - 1] <= ' ')
-                while (z > a && is_blank(r->buf[z - 1])) z--;
-            if (z > a) content = 1;
-            r->buf[z] = '\0';
-            if (nf == r->fcap && !reserve(r, 0, nf + 1)) return -1;
-            r->start[nf++] = a;
-            if (e == len) {
-                r->nfields = nf;
-                r->len = len + 1;
-                r->rec_line = r->line;
-                r->in_pos += len + 1;
-                r->line++;
-                r->col = 1;
-                *blank = !content;
-                return CSV_RECORD;
-            }
+            if (!quick_field(r, a, e, &nf, &content)) return -1;
+            if (e == len) return quick_done(r, nf, len, content, blank);
             content = 1; /* a separator makes the record not blank */
             a = e + 1;
         }
@@ -368,25 +380,11 @@ static int quick_record(csv_reader *r, int *blank)
     r->buf[len] = ','; /* a sentinel: every search below finds a comma */
     for (q = 0;;) {
         const size_t e = (size_t)((char *)memchr(r->buf + q, ',', len + 1 - q) - r->buf);
-        size_t a = q, z = e;
-        while (a < z && is_blank(r->buf[a])) a++;
-        while (z > a && is_blank(r->buf[z - 1])) z--;
-        if (z > a) content = 1;
-        r->buf[z] = '\0';
-        if (nf == r->fcap && !reserve(r, 0, nf + 1)) return -1;
-        r->start[nf++] = a;
-        if (e == len) break;
+        if (!quick_field(r, q, e, &nf, &content)) return -1;
+        if (e == len) return quick_done(r, nf, len, content, blank);
         content = 1; /* a separator makes the record not blank */
         q = e + 1;
     }
-    r->nfields = nf;
-    r->len = len + 1;
-    r->rec_line = r->line;
-    r->in_pos += len + 1;
-    r->line++;
-    r->col = 1;
-    *blank = !content;
-    return CSV_RECORD;
     }
 #endif
 }
