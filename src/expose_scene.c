@@ -370,29 +370,19 @@ static OI_NOINLINE oi_real starlight_background(const scene_geom *g)
  * near the shadow; docs/skylight.md measures it). 0 for an observer inside
  * the atmosphere or a boresight that misses the ring. */
 /* The sky table of the model and the radii of its top and floor (r[0],
- * r[1]): 0, or -1 without a table. b: NULL (the single call: the model resolved here), or
- * the batch's set-up, which resolved and checked it once: its Earth radius,
- * and the caller's sky table as given (the resolution copies the pointer).
- * A frame of its own: the resolved model is not live during the table's
- * lookup (make stack). */
-static OI_NOINLINE int sky_radii(const oi_model *model, const oi__expose_scene_batch *b,
+ * r[1]) about the Earth radius check_scene resolved (g->re): 0, or -1
+ * without a table. The caller's table is read from the model as given
+ * (the resolution copies the pointer); a frame of its own (make stack). */
+static OI_NOINLINE int sky_radii(const oi_model *model, const scene_geom *g,
                                  const oi_sky_table **t, oi_real r[2])
 {
-    oi_model m;
-    oi_real re;
-    if (b != NULL) {
-        if (model == NULL)
-            *t = oi_sky_table_default();
-        else if (oi__sky_table_of(model, t) < 0)
-            return -1;
-        re = b->re;
-    } else {
-        if (oi__model_resolve(model, &m) < 0 || oi__sky_table_of(&m, t) < 0) return -1;
-        re = m.earth_radius_km;
-    }
+    if (model == NULL)
+        *t = oi_sky_table_default();
+    else if (oi__sky_table_of(model, t) < 0)
+        return -1;
     if (*t == NULL) return -1;
-    r[0] = re + (*t)->top_km;
-    r[1] = re + (*t)->floor_km;
+    r[0] = g->re + (*t)->top_km;
+    r[1] = g->re + (*t)->floor_km;
     return 0;
 }
 
@@ -409,11 +399,11 @@ static OI_NOINLINE oi_real sun_observer_angle(const oi_scene *scene, oi_real *d_
 }
 
 static OI_NOINLINE oi_real sky_background(const oi_scene *scene, const oi_model *model,
-                                          const oi__expose_scene_batch *b, const scene_geom *g)
+                                          const scene_geom *g)
 {
     const oi_sky_table *t;
     oi_real r[2], top, fl, ob, b2, theta, e, psi, st, sf, ct, cf, d_sun;
-    if (sky_radii(model, b, &t, r) < 0) return 0;
+    if (sky_radii(model, g, &t, r) < 0) return 0;
     top = r[0];
     fl = r[1];
     if (!(g->r_obs > top) || !(fl < top)) return 0;
@@ -530,7 +520,7 @@ int oi__expose_scene_row(const oi_camera *camera, const oi_scene *scene, const o
 #endif
 #ifndef OI_NO_SKYLIGHT
         if ((scene->terms & OI_TERM_SKY) != 0u && !lit_ground && !moon_hit)
-            in.background_w_m2_sr += sky_background(scene, model, b, &g);
+            in.background_w_m2_sr += sky_background(scene, model, &g);
 #endif
     }
     (void)moon_hit;
