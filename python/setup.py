@@ -26,7 +26,7 @@ def make_variable(name):
             for sep in (":=", "?="):
                 key, found, value = line.partition(sep)
                 if found and key.strip() == name:
-                    return shlex.split(value)
+                    return shlex.split(value, comments=True)
     raise SystemExit(f"orbillum: no {name} in ../Makefile: install from a repository checkout")
 
 
