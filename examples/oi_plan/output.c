@@ -107,12 +107,6 @@ static int id_inline(const char *id, size_t *n)
            !(k > 0 && (id[0] == ' ' || id[0] == '\t' || id[k - 1] == ' ' || id[k - 1] == '\t'));
 }
 
-void out_csv_row(FILE *fp, const char *id, const plan_row *row)
-{
-    out_csv_fields(fp, id, row->status_name, row->has_numbers, row->has_observer, row->flags,
-                   &row->illum, &row->expo);
-}
-
 size_t out_csv_text(char *line, const char *id, const char *status_name, int has_numbers,
                     int has_observer, unsigned flags, const oi_illum *il, const oi_exposure *ex)
 {
@@ -128,28 +122,14 @@ size_t out_csv_text(char *line, const char *id, const char *status_name, int has
 void out_csv_fields(FILE *fp, const char *id, const char *status_name, int has_numbers,
                     int has_observer, unsigned flags, const oi_illum *il, const oi_exposure *ex)
 {
-    /* the row's text, written at once: id, status (a library name), 14
-     * numbers, flags (out_flags' 160) */
     char line[OUT_CSV_LINE_MAX];
-    size_t n, k;
-
-    if (!id_inline(id, &n)) {
+    size_t n = out_csv_text(line, id, status_name, has_numbers, has_observer, flags, il, ex);
+    if (n == 0) { /* an id to quote or a long one, or a status that is no library name */
         put_field(fp, id);
-        n = 0;
-    } else {
-        memcpy(line, id, n);
-    }
-    line[n++] = ',';
-    k = strlen(status_name);
-    if (k > 63) { /* not a library name: on its own */
-        (void)fwrite(line, 1, n, fp);
+        fputc(',', fp);
         fputs(status_name, fp);
-        n = 0;
-    } else {
-        memcpy(line + n, status_name, k);
-        n += k;
+        n = put_numbers(line, has_numbers, has_numbers && has_observer, flags, il, ex);
     }
-    n += put_numbers(line + n, has_numbers, has_numbers && has_observer, flags, il, ex);
     (void)fwrite(line, 1, n, fp);
 }
 

@@ -25,17 +25,16 @@ typedef struct plan_row {
 extern const char plan_csv_header[];
 
 void out_csv_header(FILE *fp);
-/* One CSV row; id is quoted when it holds a comma, quote or line break. */
-void out_csv_row(FILE *fp, const char *id, const plan_row *row);
 /* Longest id copied into a row's text; a longer one (or one to quote) is
  * written on its own first (out_csv_fields). */
 #define OUT_ID_INLINE_MAX 256
 /* Bytes out_csv_text may write: the id, the status (a library name), 14
  * numbers, the flags (out_flags' 160). */
 #define OUT_CSV_LINE_MAX (OUT_ID_INLINE_MAX + 64 + 14 * NUM_TEXT_MAX + 160 + 8)
-/* out_csv_row from the row's parts: status name, has_numbers, has_observer
- * and flags as in plan_row, the numbers from il and ex (not read where the
- * row leaves them empty). */
+/* One CSV row from its parts (id quoted when it holds a comma, quote or
+ * line break, or starts or ends with a blank): status name, has_numbers,
+ * has_observer and flags as in plan_row, the numbers from il and ex (not
+ * printed where the row leaves them empty). */
 void out_csv_fields(FILE *fp, const char *id, const char *status_name, int has_numbers,
                     int has_observer, unsigned flags, const oi_illum *il, const oi_exposure *ex);
 /* The text out_csv_fields writes, at line (OUT_CSV_LINE_MAX bytes):
