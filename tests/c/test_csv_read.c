@@ -154,7 +154,21 @@ static void test_chunk_edges(void **state)
             text[n] = '\n';
             memcpy(text + n + 1, "1,2\n", 4);
             check_same(text, n + 5);
-            check_same(text, n); /* the line without its LF: the byte by byte reader */
+        }
+        /* a quote, CR or NUL at each place: the split's masks hand the line to
+         * the byte by byte reader, the last chunk's too (a CR before the LF is
+         * every CRLF file) */
+        for (c = 0; c < n; c++) {
+            static const char hand_off[3] = {'"', '\r', '\0'};
+            int k;
+            for (k = 0; k < 3; k++) {
+                memset(text, '7', n);
+                text[(c + 1) % n] = ',';
+                text[c] = hand_off[k];
+                text[n] = '\n';
+                memcpy(text + n + 1, "1,2\n", 4);
+                check_same(text, n + 5);
+            }
         }
     }
     assert_int_equal(failures, 0);
