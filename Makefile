@@ -34,7 +34,7 @@ CTEST_SRC := $(sort $(wildcard tests/c/test_*.c))
 CTEST_double := $(patsubst tests/c/%.c,$(BUILDDIR)/tests/double/%,$(CTEST_SRC))
 CTEST_float  := $(patsubst tests/c/%.c,$(BUILDDIR)/tests/float/%,$(CTEST_SRC))
 
-PLAN_SRC := $(sort $(wildcard examples/oi_plan/*.c))
+PLAN_SRC := $(sort $(wildcard planner/*.c))
 PLAN := $(BUILDDIR)/oi-plan
 QUICKSTART := $(BUILDDIR)/quickstart
 
@@ -63,7 +63,7 @@ $(LIB_float): $(OBJ_float)
 
 $(PLAN): $(PLAN_SRC) $(LIB_double)
 	@mkdir -p $(dir $@)
-	$(CC) $(HOST_CFLAGS) -Iexamples/oi_plan $(PLAN_SRC) $(LIB_double) -lm $(HOST_LDFLAGS) -o $@
+	$(CC) $(HOST_CFLAGS) -Iplanner $(PLAN_SRC) $(LIB_double) -lm $(HOST_LDFLAGS) -o $@
 
 $(QUICKSTART): examples/quickstart/quickstart.c $(LIB_double)
 	@mkdir -p $(dir $@)
@@ -74,9 +74,9 @@ demo: $(PLAN) ## run the exposure planner on its built-in scenario
 
 # ---- tests
 # test_numtext compiles the planner's number text into itself
-$(BUILDDIR)/tests/double/test_numtext $(BUILDDIR)/tests/float/test_numtext: examples/oi_plan/numtext.c examples/oi_plan/numtext.h
+$(BUILDDIR)/tests/double/test_numtext $(BUILDDIR)/tests/float/test_numtext: planner/numtext.c planner/numtext.h
 # test_csv_read compiles the planner's CSV reader into itself
-$(BUILDDIR)/tests/double/test_csv_read $(BUILDDIR)/tests/float/test_csv_read: examples/oi_plan/csv_read.c examples/oi_plan/csv_read.h
+$(BUILDDIR)/tests/double/test_csv_read $(BUILDDIR)/tests/float/test_csv_read: planner/csv_read.c planner/csv_read.h
 $(BUILDDIR)/tests/double/%: tests/c/%.c $(LIB_double) | deps-c
 	@mkdir -p $(dir $@)
 	$(CC) $(TEST_CFLAGS) $(DEF_double) $< $(LIB_double) -lcmocka -lm -o $@
@@ -95,8 +95,8 @@ include mk/analysis.mk mk/python.mk mk/generated.mk mk/report.mk mk/wasm.mk mk/m
 # The planner's CSV reader and number text take SSE2 paths where the compiler has them (every
 # x86-64): their tests again without it, so that the portable paths are tested too.
 CTEST_PORTABLE := $(BUILDDIR)/tests/portable/test_csv_read $(BUILDDIR)/tests/portable/test_numtext
-$(BUILDDIR)/tests/portable/test_csv_read: examples/oi_plan/csv_read.c examples/oi_plan/csv_read.h
-$(BUILDDIR)/tests/portable/test_numtext: examples/oi_plan/numtext.c examples/oi_plan/numtext.h
+$(BUILDDIR)/tests/portable/test_csv_read: planner/csv_read.c planner/csv_read.h
+$(BUILDDIR)/tests/portable/test_numtext: planner/numtext.c planner/numtext.h
 $(BUILDDIR)/tests/portable/%: tests/c/%.c $(LIB_double) | deps-c
 	@mkdir -p $(dir $@)
 	$(CC) $(TEST_CFLAGS) -U__SSE2__ $(DEF_double) $< $(LIB_double) -lcmocka -lm -o $@

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * fuzz_csv.c: libFuzzer target for the planner's CSV input
- * (examples/oi_plan/csv_read.c and batch.c).
+ * (planner/csv_read.c and batch.c).
  *
  * Two layers, both fed with the fuzzer's bytes:
  *   1. the record reader on a memory stream (fmemopen): every record's fields

@@ -25,7 +25,7 @@ FUZZ_CFLAGS := -std=c99 -g -O1 -fno-omit-frame-pointer -Iinclude -Isrc -Itables 
 FUZZ_TARGETS := api csv batch
 FUZZ_BINS := $(foreach t,$(FUZZ_TARGETS),$(FUZZ_DIR)/double/fuzz_$(t) $(FUZZ_DIR)/float/fuzz_$(t))
 # The planner's modules except its main(): the CSV target links the reader.
-PLAN_LIB_SRC := $(filter-out examples/oi_plan/main.c,$(PLAN_SRC))
+PLAN_LIB_SRC := $(filter-out planner/main.c,$(PLAN_SRC))
 
 .PHONY: fuzz fuzz-ci fuzz-replay fuzz-build sanitize analyze \
         analyze-cppcheck analyze-gcc analyze-clang
@@ -42,7 +42,7 @@ $(FUZZ_DIR)/$(1)/fuzz_api $(FUZZ_DIR)/$(1)/fuzz_batch: $(FUZZ_DIR)/$(1)/fuzz_%: 
 
 $(FUZZ_DIR)/$(1)/fuzz_csv: fuzz/fuzz_csv.c $(PLAN_SRC) $(RT_SRC) | deps-fuzz
 	@mkdir -p $$(dir $$@)
-	$$(FUZZ_CC) $$(FUZZ_CFLAGS) $(FUZZ_PREC_$(1)) -Iexamples/oi_plan -fsanitize=fuzzer $$< $$(PLAN_LIB_SRC) $$(RT_SRC) -lm -o $$@
+	$$(FUZZ_CC) $$(FUZZ_CFLAGS) $(FUZZ_PREC_$(1)) -Iplanner -fsanitize=fuzzer $$< $$(PLAN_LIB_SRC) $$(RT_SRC) -lm -o $$@
 endef
 $(foreach p,double float,$(eval $(call FUZZ_RULES,$(p))))
 

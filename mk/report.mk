@@ -127,7 +127,7 @@ plan-bench: $(PLAN) deps-py ## oi-plan --csv rows per CPU-second and instruction
 
 # The original planner, the baseline of the planner's speed goal: its sources as they were
 # before it had its own number text (the parent of the commit that added
-# examples/oi_plan/numtext.c), built against today's library. Needs the git history.
+# examples/oi_plan/numtext.c, where the planner then lived), built against today's library. Needs the git history.
 PLAN_BASELINE := $(BUILDDIR)/plan-baseline/oi-plan
 $(PLAN_BASELINE): $(LIB_double)
 	@rev=$$(git log --diff-filter=A --format=%H -- examples/oi_plan/numtext.c | tail -n 1); \

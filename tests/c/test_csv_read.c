@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* test_csv_read.c: the planner's CSV reader (examples/oi_plan/csv_read.c):
+/* test_csv_read.c: the planner's CSV reader (planner/csv_read.c):
  * its whole-line path gives, record for record, what its byte-by-byte path
  * gives (status, fields, line numbers, error positions) on random texts of
  * the bytes that matter (separators, blanks, quotes, CR, LF, NUL), on texts
@@ -14,7 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "../../examples/oi_plan/csv_read.c"
+#include "../../planner/csv_read.c"
 
 static uint64_t rng_state = 0x2545F4914F6CDD1DULL;
 

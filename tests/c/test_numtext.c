@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* test_numtext.c: the planner's number text (examples/oi_plan/numtext.c)
+/* test_numtext.c: the planner's number text (planner/numtext.c)
  * against the C library it replaces: num_format17 byte for byte against
  * snprintf "%.17g", num_parse bit for bit (and end pointer) against strtod, on
  * millions of random doubles of every exponent, random decimal strings, texts
@@ -18,7 +18,7 @@
 #include "orbillum.h"
 #include "oi_test_util.h"
 
-#include "../../examples/oi_plan/numtext.c"
+#include "../../planner/numtext.c"
 
 static uint64_t rng_state = 0x9E3779B97F4A7C15ULL;
 

@@ -3,7 +3,7 @@
 //
 // Structs are laid out in the module's scratch memory at the offsets the compiler reports
 // (web/wasm/oi_wasm.c exports them): no offset is typed here. planCsv() applies the planner's
-// batch rules (examples/oi_plan/batch.c) to a planner input CSV, row by row, so its numbers
+// batch rules (planner/batch.c) to a planner input CSV, row by row, so its numbers
 // are the ones `oi-plan --csv` prints for the same rows.
 
 const RAD_TO_DEG = 180.0 / 3.14159265358979323846;
@@ -600,14 +600,14 @@ export class Orbillum {
     }
     if (atm !== 0 && atm !== 1) return row;
     const model = { no_atmosphere: atm === 0 ? 1 : 0 };
-    // the band of sun_fraction_atm and e_sun, as examples/oi_plan/batch.c reads it
+    // the band of sun_fraction_atm and e_sun, as planner/batch.c reads it
     const bs = field('band');
     if (bs !== null && bs !== '') {
       const w = bs.toLowerCase();
       if (w === 'total') model.band = 1;
       else if (w !== 'v') return row;
     }
-    // the target's shape and attitude, as examples/oi_plan/batch.c reads them
+    // the target's shape and attitude, as planner/batch.c reads them
     const shapeName = field('target_shape');
     if (shapeName !== null) {
       const sh = this.findShape(shapeName);
@@ -644,7 +644,7 @@ export class Orbillum {
     return this.fillRow(row, this.compute(scene, model, camera));
   }
 
-  /** Planner fields of a row from compute()'s result (as examples/oi_plan/output.c prints them). */
+  /** Planner fields of a row from compute()'s result (as planner/output.c prints them). */
   fillRow(row, r) {
     row.result = r;
     row.status = this.statusName(r.status);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// scenario.js: the planner's built-in scenario (examples/oi_plan/scenario.c) as viewer rows: an
+// scenario.js: the planner's built-in scenario (planner/scenario.c) as viewer rows: an
 // inspector 1.5 km below and 8 km behind a target in a 500 km, 51.6 deg circular orbit, Sun and
 // Moon fixed, one orbit sampled every 10 s. Positions come from JavaScript's Math.cos/sin, not
 // the C library's: they may differ from the planner's in the last bits.
