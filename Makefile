@@ -18,8 +18,12 @@ HOST_CFLAGS := $(WARN) $(OPT) -g -Iinclude -Isrc -Itables -Itests/c
 TEST_CFLAGS := -std=c99 -Wall -Wextra -Wpedantic -Wshadow -Werror -O1 -g -Iinclude -Isrc -Itables -Itests/c
 HOST_LDFLAGS := -Wl,--gc-sections
 
-# Runtime sources: every src/*.c and tables/*.c (generated tables).
-RT_SRC := $(sort $(wildcard src/*.c) $(wildcard tables/*.c))
+# Runtime sources: src/<layer>/*.c, the layers from the bottom up (docs/architecture.md), and
+# tables/*.c (generated tables). Linked in the order of their file names, whatever their layer.
+RT_LAYERS := math model shadow sources target camera scene batch
+RT_LAYER_SRC := $(wildcard $(addprefix src/,$(addsuffix /*.c,$(RT_LAYERS))))
+RT_SRC := $(foreach b,$(sort $(notdir $(RT_LAYER_SRC))),$(filter %/$(b),$(RT_LAYER_SRC))) \
+  $(sort $(wildcard tables/*.c))
 
 # Precision variants: build/ (double, the contract) and build/float/.
 OBJ_double := $(patsubst %.c,$(BUILDDIR)/obj/double/%.o,$(RT_SRC))
@@ -38,7 +42,7 @@ PLAN_SRC := $(sort $(wildcard planner/*.c))
 PLAN := $(BUILDDIR)/oi-plan
 QUICKSTART := $(BUILDDIR)/quickstart
 
-.PHONY: all lib demo test test-c test-py clean help
+.PHONY: all lib demo test test-c test-py test-layers clean help
 .DEFAULT_GOAL := all
 
 all: lib $(PLAN) $(QUICKSTART) ## build the library (both precisions), the planner and the README example
@@ -107,6 +111,13 @@ test-c: $(CTEST_double) $(CTEST_float) $(CTEST_PORTABLE) $(PLAN) $(QUICKSTART) #
 
 test-py: deps-py all ## Python tests (baker, references, planner batch interface)
 	$(PY) -m pytest -q tests/python
+
+# The layer rule (docs/architecture.md): every include and call of src/<layer>/ goes down, no
+# two files need each other; on the objects of both precisions.
+test-layers: lib deps-py ## check that each layer of src/ calls only the layers below it
+	$(PY) tools/check_layers.py --layers "$(RT_LAYERS)" --objects $(BUILDDIR)/obj/double
+	$(PY) tools/check_layers.py --layers "$(RT_LAYERS)" --objects $(BUILDDIR)/obj/float
+TEST_TARGETS += test-layers
 
 # A mismatch of precision between a program and the archive fails at link time.
 test-precision-guard: lib ## link a program against the wrong-precision archive and expect the named failure

@@ -54,7 +54,7 @@ static void check_shadow(int st, const oi_shadow *s, oi_real moon_hidden)
 }
 
 /* Model constants pass through unchanged, NaN, inf, zero, negative,
- * subnormal and huge alike: the model validation (src/model.c, bounds
+ * subnormal and huge alike: the model validation (src/model/model.c, bounds
  * OI_MODEL_*) must reject what would overflow (docs/stability.md, findings
  * 7-8, fixed). */
 static oi_real fz_model_const(fz_in *in, double def)

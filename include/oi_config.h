@@ -22,15 +22,15 @@
  *                        table are removed.
  *   OI_NO_SKY            no zodiacal light and no starlight: removes
  *                        oi_zodiacal_radiance, oi_starlight_radiance,
- *                        oi_galactic_from_icrs, their tables (src/zodiacal.c,
- *                        src/starlight.c, src/galactic.c), OI_SKY_ZODIACAL
+ *                        oi_galactic_from_icrs, their tables (src/camera/zodiacal.c,
+ *                        src/camera/starlight.c, src/camera/galactic.c), OI_SKY_ZODIACAL
  *                        and OI_SKY_STARLIGHT (a goal with either bit gets
  *                        OI_ERR_FLAGS).
  *   OI_NO_LIMB_DARKENING no limb-darkened solar disc: removes its integral
- *                        (src/limb_darkening.c); oi_shadow.fraction_ld equals
+ *                        (src/shadow/limb_darkening.c); oi_shadow.fraction_ld equals
  *                        fraction (the uniform disc), and a model with
  *                        limb_darkening = OI_LIMB_DARKENED is rejected with
- *                        OI_ERR_MODEL (src/model.c): the one option whose
+ *                        OI_ERR_MODEL (src/model/model.c): the one option whose
  *                        declarations stay (the field and the constant
  *                        belong to the model's ABI), refused at run time
  *                        instead. docs/shadow.md.
@@ -39,33 +39,33 @@
  *                        the built-in shapes; oi_scene keeps its shape and
  *                        attitude_q fields (the layout does not change) and a
  *                        scene with a shape gets OI_ERR_SHAPE.
- *   OI_NO_OBLATE         no WGS-84 ellipsoid (src/oblate.c removed): a model
+ *   OI_NO_OBLATE         no WGS-84 ellipsoid (src/shadow/oblate.c removed): a model
  *                        with earth_shape = OI_EARTH_WGS84 is rejected with
- *                        OI_ERR_MODEL (src/model.c); the field and its
+ *                        OI_ERR_MODEL (src/model/model.c); the field and its
  *                        constants stay, as with OI_NO_LIMB_DARKENING.
  *   OI_NO_ALBEDO_MODELS  no albedo models but the uniform one: removes the
  *                        Knocke model, the albedo map and their cubature
- *                        (src/albedo_field.c, src/earthshine_albedo.c); a
+ *                        (src/sources/albedo_field.c, src/sources/earthshine_albedo.c); a
  *                        model with albedo_model other than OI_ALBEDO_UNIFORM
  *                        is rejected with OI_ERR_MODEL (the fields and
  *                        constants stay: they belong to the model's ABI, as
  *                        with OI_NO_LIMB_DARKENING). docs/earthshine-albedo.md.
  *   OI_NO_SKYLIGHT       no scattered sunlight: removes its lookup
- *                        (src/skylight.c), its default table (oi_sky_table_default()
+ *                        (src/sources/skylight.c), its default table (oi_sky_table_default()
  *                        returns NULL) and OI_TERM_SKY (a scene asking for it gets
  *                        OI_ERR_TERMS); the oi_illum and oi_model fields stay (ABI),
  *                        zero. Not OI_NO_SKY, which removes the camera's zodiacal light.
  *   OI_NO_TOTAL_BAND     no total-irradiance band: removes its atmosphere table
  *                        from the default (oi_atm_total_default() returns
  *                        NULL, so tables/oi_atm_total.c is not linked) and its
- *                        code in src/atmosphere.c; a model with band =
+ *                        code in src/shadow/atmosphere.c; a model with band =
  *                        OI_BAND_TOTAL is rejected with OI_ERR_MODEL (the
  *                        fields and constants stay: they belong to the
  *                        model's ABI, as with OI_NO_LIMB_DARKENING).
  *                        docs/atmosphere.md.
  *   OI_NO_TARGET_CLONES  no AVX2 copies of oi_sun_fraction_batch's two block
  *                        loops (GCC on x86-64 Linux builds them by default,
- *                        chosen at load time; src/batch.c): only the portable
+ *                        chosen at load time; src/batch/batch.c): only the portable
  *                        code. Results are the same bits either way.
  * An option that removes a feature removes its declarations too, so code that
  * still uses the feature fails to compile.

@@ -258,7 +258,7 @@ typedef struct oi_model {
  *   not used, nor atm_total_table with band V.
  *
  * Defaults: each is returned by a function of its own translation unit
- * (src/earth_table_default.c, src/atm_table_default.c), the only reference
+ * (src/model/earth_table_default.c, src/model/atm_table_default.c), the only reference
  * to the default table's bytes. The library's: oi_earth_diffuse (every
  * altitude) and oi_atm_vband; -DOI_EARTH_TABLE_DEFAULT=<table> /
  * -DOI_ATM_TABLE_DEFAULT=<table> at the library's build choose another.
@@ -275,7 +275,7 @@ const oi_atm_table *oi_atm_table_default(void);
 /* oi_atm_total_default: the total band's atmosphere table (oi_atm_total,
  * tables/oi_atm_total.c), used with band = OI_BAND_TOTAL when
  * atm_total_table is NULL; NULL with OI_NO_TOTAL_BAND or OI_NO_ATMOSPHERE.
- * Its own translation unit (src/atm_table_total_default.c), as the others;
+ * Its own translation unit (src/model/atm_table_total_default.c), as the others;
  * trusted. A caller's atm_total_table is checked as atm_table is, where it
  * would be used (band total, atmosphere on). */
 const oi_atm_table *oi_atm_total_default(void);
@@ -317,7 +317,7 @@ const oi_sky_table *oi_sky_table_default(void);
  *          atmosphere, point Sun, straight rays; lines of sight ending on the
  *          sunlit Earth left out (their light is the albedo's). The table is
  *          read with the target's distance r through x = R_t / r, R_t the
- *          table's Earth radius. src/skylight.c, docs/skylight.md.
+ *          table's Earth radius. src/sources/skylight.c, docs/skylight.md.
  */
 int oi_skylight(oi_real theta_rad, oi_real h_km, const oi_model *model, oi_real *e_over_sun,
                 oi_real *psi_rad);
@@ -482,7 +482,7 @@ int oi_earthshine_sphere(oi_real theta, oi_real h_km, const oi_real obs[3],
  * PASP 103, 1033, eq. 20, after Allen): in [2.8e-4, 1], relative error a few
  * epsilon against the formula. Returns 1 at alpha = 0; |alpha| is used,
  * clamped to [0, pi]; NaN gives 0. Beyond 150 degrees the law is an
- * extrapolation (src/moon.c). */
+ * extrapolation (src/sources/moon.c). */
 oi_real oi_moon_phase_law(oi_real alpha);
 #endif
 
@@ -502,7 +502,7 @@ oi_real oi_moon_phase_law(oi_real alpha);
  *          the 5772 K solar spectrum (7.6353e-9 W/m^2/sr per table unit).
  *          The table has no entries within ~15 deg of the Sun: those cells
  *          hold the nearest tabulated value of their latitude (a lower
- *          bound). src/zodiacal.c, docs/camera.md.
+ *          bound). src/camera/zodiacal.c, docs/camera.md.
  */
 oi_real oi_zodiacal_radiance(oi_real dlambda_rad, oi_real beta_rad);
 
@@ -519,7 +519,7 @@ oi_real oi_zodiacal_radiance(oi_real dlambda_rad, oi_real beta_rad);
  *          bilinear between its nodes; 8.9971e-9 W/m^2/sr per S10_sun (a
  *          V = 10 Sun per square degree). Beyond |b| = 80 deg, linear to the
  *          mean of the 80 deg row at the pole; 28 cells Pioneer did not map
- *          hold the interpolation of their row. src/starlight.c,
+ *          hold the interpolation of their row. src/camera/starlight.c,
  *          docs/camera.md.
  */
 oi_real oi_starlight_radiance(oi_real l_rad, oi_real b_rad);
@@ -535,7 +535,7 @@ oi_real oi_starlight_radiance(oi_real l_rad, oi_real b_rad);
  * Notes:   the rotation of the Hipparcos catalogue (ESA SP-1200, 1997,
  *          Vol. 1, Sect. 1.5.3): north galactic pole at RA 192.85948 deg,
  *          Dec 27.12825 deg, ascending node at l = 32.93192 deg.
- *          src/galactic.c.
+ *          src/camera/galactic.c.
  */
 int oi_galactic_from_icrs(const oi_real dir[3], oi_real *l_rad, oi_real *b_rad);
 #endif
@@ -596,7 +596,7 @@ int oi_shape_check(const oi_shape *shape);
 
 /* oi_shape_builtin: built-in shape number index (0 "plate", 1 "box-wing",
  * 2 "cylinder"); NULL for a negative index or past the last. Static storage;
- * dimensions and reflectances with their sources in src/shape_builtin.c and
+ * dimensions and reflectances with their sources in src/target/shape_builtin.c and
  * docs/shapes.md. The sphere is no shape: scene.shape NULL.
  *   plate     one one-sided Lambertian facet of 1 m^2, normal +z, diffuse
  *             albedo target_albedo (diffuse_from_scene), no specular part
@@ -805,7 +805,7 @@ typedef struct oi_illum {
  *          from the mean direction dir_earth. flux_sun, flux_earth and
  *          flux_moon are the facets' sums per source, flux_specular their
  *          specular part; target_radius_m is then used for the
- *          observer-at-target check only. src/illuminate.c, src/facet.c.
+ *          observer-at-target check only. src/scene/illuminate.c, src/target/facet.c.
  *          Albedo models (model albedo_model; docs/earthshine-albedo.md):
  *          with OI_ALBEDO_KNOCKE or OI_ALBEDO_MAP, e_earth = A TSI (AU /
  *          |sun|)^2 phi, A = earth_albedo_eff the earthshine-weighted mean
@@ -813,7 +813,7 @@ typedef struct oi_illum {
  *          angular distribution (flux_earth) carry the field's first-order
  *          change, all from a fixed cubature used as a control variate on the
  *          uniform tables (earth_phi, earth_psi stay the uniform sphere's).
- *          src/illuminate.c, src/earthshine_albedo.c.
+ *          src/scene/illuminate.c, src/sources/earthshine_albedo.c.
  */
 int oi_illuminate(const oi_scene *scene, const oi_model *model, oi_illum *out);
 
@@ -871,7 +871,7 @@ typedef struct oi_camera {
 
 /* oi_camera_builtin: built-in camera number index (0 is the default,
  * "star-tracker"); NULL for a negative index or past the last. Read-only,
- * static storage; sources of every value in src/camera_builtin.c and
+ * static storage; sources of every value in src/camera/camera_builtin.c and
  * docs/camera.md. */
 const oi_camera *oi_camera_builtin(int index);
 /* oi_camera_find: built-in camera by name (exact, case-sensitive); NULL when
@@ -1024,7 +1024,7 @@ typedef struct oi_exposure {
  *      bounds that, its Note 5).
  *   6. Exactness and cost: the choice is that of the full search over every
  *      (time, gain) pair, to the bit, made from O(log n_times + n_gains)
- *      evaluations (docs/camera.md, "Cost of the search"; src/expose.c).
+ *      evaluations (docs/camera.md, "Cost of the search"; src/camera/expose.c).
  *   7. Motion (in->rate_rad_s > 0; docs/camera.md, "Motion"): the trail of
  *      time t is L = rate t / (pitch / focal) pixels; the brightest pixel's
  *      signal is that at rest times trail_factor, the closed form for a
@@ -1163,7 +1163,7 @@ int oi_expose_scene(const oi_camera *camera, const oi_scene *scene,
  * model (and camera) validated once per batch. Row i of every output is, bit
  * for bit, what the single call returns for row i of the inputs (the fields
  * an outputs mask leaves out are 0). Arrays of the existing structures and
- * of oi_real (positions: 3 n values, x y z of row 0 first); src/batch.c.
+ * of oi_real (positions: 3 n values, x y z of row 0 first); src/batch/batch.c.
  *
  * Returned (function value): the number of rows whose status is an error
  * (0: every row computed; warnings do not count), or a batch error, every
@@ -1235,7 +1235,7 @@ int oi_illuminate_batch(long n, const oi_scene *scenes, const oi_model *model,
  * without OI_BATCH_OBSERVER the observer's term is not formed (its position
  * is still checked, with the single call's statuses; the observer inside
  * the target, OI_ERR_OBSERVER_AT_TARGET, is then not detected). With
- * OI_BATCH_SCENE_ALL every row is oi_illuminate's. src/illuminate_outputs.c,
+ * OI_BATCH_SCENE_ALL every row is oi_illuminate's. src/scene/illuminate_outputs.c,
  * docs/performance.md. */
 int oi_illuminate_batch_outputs(long n, const oi_scene *scenes, const oi_model *model,
                                 unsigned outputs, oi_illum *out, int *status);
@@ -1286,7 +1286,7 @@ int oi_expose_scene_batch(long n, const oi_camera *camera, const oi_scene *scene
  * sensor temperature, the camera and the model are formed once per batch.
  * In oi_expose_batch_outputs background_w_m2_sr and rate_rad_s are the
  * input's and OI_EXPOSE_SUN_ANGLE changes nothing (sun_angle_rad is 0).
- * With OI_EXPOSE_ALL every row is the single call's. src/expose_batch.c,
+ * With OI_EXPOSE_ALL every row is the single call's. src/batch/expose_batch.c,
  * docs/camera.md "Batches and their outputs mask". */
 int oi_expose_batch_outputs(long n, const oi_camera *camera, const oi_expose_in *in,
                             const oi_expose_goal *goal, unsigned outputs, oi_exposure *out,

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 # mk/python.mk: the shared library, the Python binding, real-use examples.
 #
-#   make shared        build/liborbillum.so (double) from src/*.c tables/*.c, -fPIC, strict flags
+#   make shared        build/liborbillum.so (double) from src/<layer>/*.c tables/*.c, -fPIC, strict flags
 #   make binding       install the binding (python/) into the venv (pip install ./python)
 #   make pass-example  a shipped TLE case -> planner CSV -> pass plan -> plot + rendered view,
 #                      in build/pass-example/ (PASS_CASE=geo-inspector-eclipse by default)
@@ -11,7 +11,7 @@
 #                      against time, plotted into build/light-curve/ (LC_CASE=leo-leo-pass)
 
 SHARED_LIB := $(BUILDDIR)/liborbillum.so
-RT_HDR := $(wildcard include/*.h src/*.h tables/*.h)
+RT_HDR := $(wildcard include/*.h include/*/*.h src/*.h src/*/*.h tables/*.h)
 PY_BINDING_SRC := python/pyproject.toml python/setup.py $(wildcard python/orbillum/*.py python/orbillum/catalog/*.py)
 PASS_CASE ?= geo-inspector-eclipse
 PASS_DIR := $(BUILDDIR)/pass-example
@@ -60,7 +60,7 @@ light-curve: all binding ## tumbling box-wing vs sphere over a shipped pass: V a
 # the double-precision runtime plus a struct-size probe. Not the public
 # binding's build/liborbillum.so.
 ORI_TEST_SO := $(BUILDDIR)/libori_test.so
-$(ORI_TEST_SO): $(RT_SRC) tests/stability/ori_test_abi.c $(wildcard include/*.h src/*.h tables/*.h)
+$(ORI_TEST_SO): $(RT_SRC) tests/stability/ori_test_abi.c $(RT_HDR)
 	@mkdir -p $(dir $@)
 	$(CC) $(RT_CFLAGS) -fPIC -shared $(RT_SRC) tests/stability/ori_test_abi.c -lm -o $@
 

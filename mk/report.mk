@@ -98,7 +98,7 @@ illum-bench: $(BENCH_DIR)/bench-double deps-py ## the full illumination goal: in
 
 # The illumination as it was before the batch interface, the baseline of the full
 # illumination's speed goal: the library, tables and bench of the parent of the commit that
-# added src/batch.c, built with the library's flags (double) and run over the same scene mix
+# added src/batch.c (now src/batch/batch.c), built with the library's flags (double) and run over the same scene mix
 # (bench/scenes.h is unchanged since). Needs the git history.
 ILLUM_BASELINE := $(BENCH_DIR)/illum-baseline/bench-double
 $(ILLUM_BASELINE):

@@ -21,7 +21,7 @@ WASM_TARGET := --target=wasm32-wasi
 WASM_MATH := -include web/wasm/oi_wasm_math.h -DOI_LOG10=oi_wasm_log10
 WASM_CFLAGS := $(WASM_TARGET) $(WARN) $(OPT) $(RT_MATH) -ffunction-sections -fdata-sections \
   $(WASM_MATH) -Iinclude -Isrc -Itables
-WASM_SRC := $(sort $(wildcard src/*.c) $(wildcard tables/*.c)) web/wasm/oi_wasm.c \
+WASM_SRC := $(RT_SRC) web/wasm/oi_wasm.c \
   web/wasm/oi_wasm_math.c
 WASM_OBJ := $(patsubst %.c,$(WASM_DIR)/obj/%.o,$(WASM_SRC))
 # What JavaScript calls: the public API (include/orbillum.h) and web/wasm/oi_wasm.c.

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""Build hook: compile the runtime (../src/*.c, ../tables/*.c) into orbillum/liborbillum.so.
+"""Build hook: compile the runtime (../src/<layer>/*.c, ../tables/*.c) into orbillum/liborbillum.so.
 
 The C sources live beside this directory in the repository, so install from a
 checkout: ``pip install ./python``. The flags are the repository Makefile's own,
@@ -33,8 +33,9 @@ def make_variable(name):
 class BuildWithLibrary(build_py):
     def run(self):
         super().run()
-        src = sorted(glob.glob(os.path.join(ROOT, "src", "*.c")) +
-                     glob.glob(os.path.join(ROOT, "tables", "*.c")))
+        # the runtime's layers (src/<layer>/), in the order of their file names as the Makefile links them
+        src = sorted(glob.glob(os.path.join(ROOT, "src", "*", "*.c")), key=os.path.basename) + \
+            sorted(glob.glob(os.path.join(ROOT, "tables", "*.c")))
         if not src:
             raise SystemExit("orbillum: the C sources (../src) are not beside python/: "
                              "install from a repository checkout with `pip install ./python`")

@@ -24,7 +24,7 @@
 #define OI_SQRT OI_FN(sqrt)
 #endif
 #ifndef OI_SIN
-/* the runtime's own (src/sincos.c): a small fixed frame (no huge-argument
+/* the runtime's own (src/math/sincos.c): a small fixed frame (no huge-argument
  * reduction), the same bits on every target; -DOI_SIN=sin (sinf) and
  * -DOI_COS=cos (cosf) select the libm's */
 #define OI_SIN oi__sin
@@ -59,7 +59,7 @@ void oi__sincos(oi_real x, oi_real *s, oi_real *c);
 #define OI_ATAN OI_FN(atan)
 #endif
 #ifndef OI_ATAN2
-/* the runtime's own (src/atan2.c): ~4x cheaper than a general libm's, the
+/* the runtime's own (src/math/atan2.c): ~4x cheaper than a general libm's, the
  * same bits on every target; -DOI_ATAN2=atan2 (atan2f) selects the libm's */
 #define OI_ATAN2 oi__atan2
 #endif

@@ -1,18 +1,18 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * oi_tables_internal.h: internal interface of the baked-table lookups: the
- * interpolation kernels every lookup shares (src/interp.c), the earthshine
- * table lookup (src/earthshine_table.c) and the check of a caller's
- * atmosphere table (src/atmosphere.c). Table layouts: include/oi_table.h.
+ * oi_tables_internal.h: what every baked-table lookup shares, whatever its
+ * layer: the interpolation kernels (src/math/interp.c) and the reading of a
+ * table's fields. The lookups themselves are declared in their layers'
+ * headers. Table layouts: include/oi_table.h.
  */
 #ifndef OI_TABLES_INTERNAL_H
 #define OI_TABLES_INTERNAL_H
 
-#include "oi_internal.h"
+#include "oi_vector.h"
 
 /* ---------------------------------------------------------------- interp kernels
  * C99 inline definitions, inlined where a lookup calls them (they are in
- * every lookup's inner loop); src/interp.c holds their one external
+ * every lookup's inner loop); src/math/interp.c holds their one external
  * definition, for calls the compiler does not inline. */
 
 /* Catmull-Rom (cubic convolution, a = -1/2) weights of the four nodes
@@ -105,31 +105,5 @@ static inline oi_real oi__real_of(double d, double c, oi_real c_r)
 #endif
     return (oi_real)d;
 }
-
-/* ---------------------------------------------------------------- earthshine_table.c */
-
-/* 1 when a caller's earthshine table has a format, kind and grid the lookup
- * can use (include/orbillum.h, oi_model.earth_table), else 0. No double
- * arithmetic: the single-precision build pulls in no software double. */
-int oi__earth_table_valid(const oi_earth_table *t);
-
-/*
- * phi and psi from table t (valid, or the trusted default) at theta in
- * [0, pi - w) inside the table's altitude range: x = R / r, w = acos(x),
- * fw the fractional altitude index (w - w_min) / (w_max - w_min) (n_alt -
- * 1); cos_theta, sin_theta as for oi__earthshine (cos_theta > 1: not
- * given). Sets *phi >= 0 and *psi.
- */
-void oi__earth_interp(const oi_earth_table *t, oi_real theta, oi_real cos_theta,
-                      oi_real sin_theta, oi_real x, oi_real w, oi_real fw, oi_real *phi,
-                      oi_real *psi);
-
-/* ---------------------------------------------------------------- atm_table_check.c */
-#ifndef OI_NO_ATMOSPHERE
-/* 1 when a caller's atmosphere table has the format, kind, sizes and grid
- * constants the lookup can use (include/orbillum.h, oi_model.atm_table),
- * else 0. Called by oi__model_resolve (src/model.c). */
-int oi__atm_table_valid(const oi_atm_table *t);
-#endif
 
 #endif /* OI_TABLES_INTERNAL_H */

@@ -3,7 +3,7 @@
 (tools/sphere_cubature_orders.py, tools/facet_cubature_orders.py,
 tools/facet_specular_orders.py): the Earth's radius, the runtime's mapped
 Gauss-Legendre rule in the polar angle, its break points over the visible
-cap (a rendering of src/cap_breaks.c), and the error in units of the goal."""
+cap (a rendering of src/math/cap_breaks.c), and the error in units of the goal."""
 import math
 
 import numpy as np

@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: MIT
 """facet_cubature_orders.py: error against cost of the facets' earthshine cubature.
 
-The runtime (src/facet_earth.c) integrates a facet's earthshine exactly in
+The runtime (src/target/facet_earth.c) integrates a facet's earthshine exactly in
 azimuth and with a fixed Gauss-Legendre rule of order 8 per piece in the
 polar angle (docs/shapes.md). This script measures, against the
 quadrature of bake/earthshine/angular.py (which shares nothing with the

@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: MIT
 """facet_specular_orders.py: the facets' specular earthshine against a quadrature.
 
-The runtime (src/facet_earth.c, oi__plate_earth_specular) integrates the
+The runtime (src/target/facet_earth.c, oi__plate_earth_specular) integrates the
 Phong lobe of a facet over the visible sunlit Earth: below shininess
 OI_LOBE_RULE_SHININESS (64) on the cap cubature's rings (6 nodes per arc in
 azimuth), from it up by 4 x 8 nodes about the lobe's axis (docs/shapes.md).

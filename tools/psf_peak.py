@@ -96,7 +96,7 @@ def camera_fraction(aperture_m, focal_m, pitch_m, sigma_px, band=(400e-9, 900e-9
     return total
 
 
-# The built-in cameras' optics (src/camera_builtin.c) and the stated blur:
+# The built-in cameras' optics (src/camera/camera_builtin.c) and the stated blur:
 # sigma in pixels of the Gaussian for defocus, aberrations and jitter.
 CAMERAS = {
     # star tracker: a deliberate defocus spreading a star over about 3 x 3

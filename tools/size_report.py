@@ -191,7 +191,7 @@ def main():
                 ok = False
                 goals.append("goal.zero_data_bss.%s.%s missed (%d bytes of .data/.bss in the library)"
                              % (cfg, s, data + bss))
-            # the runtime's own math functions (src/atan2.c, src/sincos.c: what
+            # the runtime's own math functions (src/math/atan2.c, src/math/sincos.c: what
             # libm provides, in the library), listed apart
             math = sum(members.get(k, 0) for k in MATH_MEMBERS)
             print("%s.lib.math_kernels %d bytes  # %s" % (p, math, " ".join(MATH_MEMBERS)))

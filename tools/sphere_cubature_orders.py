@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: MIT
 """sphere_cubature_orders.py: error against cost of the sphere's earthshine cubature.
 
-The runtime (src/earthshine_angular.c) sends a Lambertian sphere's earthshine
+The runtime (src/sources/earthshine_angular.c) sends a Lambertian sphere's earthshine
 to the observer by a cubature over the visible sunlit cap: the mapped
 Gauss-Legendre rule of order N_A per piece in the polar angle a and the plain
 rule of order N_B over the lit arc in the azimuth b, with the Lambert phase

@@ -15,7 +15,7 @@ three rules:
     electrons: SNR 5 of the PSF-weighted sum over 9 x 9 pixels,
     SNR^2 = sum_i (S p_i)^2 / (S p_i + B + R^2), p_i the pixel fractions of
     the Gaussian with the camera's centred peak fraction (the runtime's
-    own PSF model, src/trail.c), S the whole PSF's electrons
+    own PSF model, src/camera/trail.c), S the whole PSF's electrons
     (signal_e / psf_peak_fraction), B the background electrons per pixel,
     R the read noise: what a detection that uses the whole PSF reaches.
 Prints the Markdown tables docs/camera.md quotes (the second: the star
@@ -101,7 +101,7 @@ EPS = 84381.406 / 3600.0 * math.pi / 180.0  # IAU 2006 obliquity of J2000, as th
 
 
 def galactic_of(v):
-    """Galactic (l, b) of an ICRS direction, by the runtime (src/galactic.c)."""
+    """Galactic (l, b) of an ICRS direction, by the runtime (src/camera/galactic.c)."""
     l, b = L.real(), L.real()
     assert LIB.oi_galactic_from_icrs((L.real * 3)(*v), ctypes.byref(l), ctypes.byref(b)) == 0
     return l.value, b.value
@@ -201,7 +201,7 @@ def goal_table():
     return "\n".join(lines)
 
 
-S10_SUN_W_M2_SR = 8.9971174530390225e-09  # src/starlight.c
+S10_SUN_W_M2_SR = 8.9971174530390225e-09  # src/camera/starlight.c
 ARCSEC2_SR = (math.pi / 180.0 / 3600.0) ** 2
 
 

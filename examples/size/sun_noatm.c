@@ -4,7 +4,7 @@
  * atmosphere off (oi_model.no_atmosphere) and the library's default
  * atmosphere tables left out: this program defines oi_atm_table_default
  * and oi_atm_total_default itself, returning NULL, so neither
- * src/atm_table_default.c, src/atm_table_total_default.c nor
+ * src/model/atm_table_default.c, src/model/atm_table_total_default.c nor
  * tables/oi_atm_vband.c, tables/oi_atm_total.c is linked (make size: no
  * table symbol in it).
  */

@@ -102,7 +102,7 @@ function maxUlpOf(column, run) {
 }
 
 /* [name, file, ulp allowed beyond the run's]: the facets' earthshine calls libm's acos and asin
- * (src/facet_earth.c), which glibc and wasi-libc round differently for some arguments: a facet
+ * (src/target/facet_earth.c), which glibc and wasi-libc round differently for some arguments: a facet
  * target's flux_obs then differs by an ulp, its V magnitude by a few (docs/viewer.md). */
 const FACET_LIBM_ULP = 8n;
 const INPUTS = [...CASES.map((name) => [name, path.join(ROOT, 'tests/golden', name), 0n]),

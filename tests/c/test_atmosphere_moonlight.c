@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * test_atmosphere_moonlight.c: the Moon's light through the atmosphere near
- * the Earth's limb seen from a target (src/atmosphere_moonlight.c, through
+ * the Earth's limb seen from a target (src/shadow/atmosphere_moonlight.c, through
  * oi__moon_disc_visible and oi_illuminate).
  *
  * References: the ring quadrature against a brute-force 2-D sum over the
@@ -24,7 +24,7 @@
 
 #if !defined(OI_NO_ATMOSPHERE) && !defined(OI_NO_MOON)
 
-/* internal, src/atmosphere_moonlight.c (for tests) */
+/* internal, src/shadow/atmosphere_moonlight.c (for tests) */
 oi_real oi__atm_los_transmission(oi_real h);
 
 #define R_E 6378.137

@@ -697,7 +697,7 @@ static double agree_tol(oi_real th, oi_real h, oi_real R, const oi_earth_table *
 /* New lookup (oi_earthshine with model m) against the old one over npts
  * random points, h log-uniform in [hlo, hhi] km, theta uniform in [0, pi]
  * or, for a quarter each, in the terminator band pi/2 +- w and next to its
- * far edge pi/2 + w (the arctangent-free test of src/earthshine_table.c); returns the
+ * far edge pi/2 + w (the arctangent-free test of src/sources/earthshine_table.c); returns the
  * number of disagreements (printed); *worst = max |new - old| / tol. */
 static int agreement(const oi_earth_table *t, const oi_model *m, oi_real R, double hlo,
                      double hhi, int npts, double *worst)
@@ -796,7 +796,7 @@ static void test_default_same_as_caller_table(void **state)
     }
 }
 
-/* A caller's table is validated field by field (src/earthshine_table.c compares the
+/* A caller's table is validated field by field (src/sources/earthshine_table.c compares the
  * double fields by their bit patterns): boundaries of every check. */
 static void test_table_validation(void **state)
 {

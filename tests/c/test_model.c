@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* test_model.c: oi__model_resolve (src/model.c), the validation every public
+/* test_model.c: oi__model_resolve (src/model/model.c), the validation every public
  * function that takes an oi_model goes through. Expected statuses and values
  * are written from the contract in include/orbillum.h (oi_model: zero means
  * default; non-finite, negative or out-of-bounds gives OI_ERR_MODEL, for a

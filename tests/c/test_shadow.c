@@ -55,7 +55,7 @@ static double cap_area(double r)
 }
 
 /* the geometric shadow only: fraction_atm then equals the model's disc
- * choice (the atmosphere's refraction is tested with src/atmosphere.c) */
+ * choice (the atmosphere's refraction is tested with src/shadow/atmosphere.c) */
 static const oi_model *geo_model(void)
 {
     static oi_model m;
@@ -329,7 +329,7 @@ static void test_sun_fraction_atm_choice(void **state)
         set3(sun, r->sun[0], r->sun[1], r->sun[2]);
         set3(pt, r->point[0], r->point[1], r->point[2]);
 #ifdef OI_NO_LIMB_DARKENING
-        /* compiled out: the model asking for it is refused (src/model.c),
+        /* compiled out: the model asking for it is refused (src/model/model.c),
          * outputs zeroed */
         memset(&s, 0x5a, sizeof s);
         assert_int_equal(oi_sun_fraction(sun, pt, &m, &s), OI_ERR_MODEL);

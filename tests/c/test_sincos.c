@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* test_sincos.c: the runtime's own sine and cosine (src/sincos.c) against a
+/* test_sincos.c: the runtime's own sine and cosine (src/math/sincos.c) against a
  * higher-precision reference: sinl/cosl (long double: 64-bit or 113-bit
  * significand on the hosts we test on) for the double build, sin/cos in
  * double for the float build. Errors in units in the last place of the
@@ -16,7 +16,7 @@
 #include "orbillum.h"
 #include "oi_test_util.h"
 
-oi_real oi__sin(oi_real x); /* internal, src/sincos.c */
+oi_real oi__sin(oi_real x); /* internal, src/math/sincos.c */
 oi_real oi__cos(oi_real x);
 void oi__sincos(oi_real x, oi_real *s, oi_real *c);
 

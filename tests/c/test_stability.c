@@ -86,11 +86,11 @@ typedef struct known_issue {
 static const known_issue KNOWN[] = {
     /* No known deviation. The vectors keep guarding, as regressions: a
      * fraction formed as 1 - overlap/cap cancelling near the umbra edge
-     * (src/sun_fraction.c), a coarse limb-darkening quadrature
-     * (src/limb_darkening.c), the overlap of two hemispheres and of caps
-     * beyond a hemisphere (src/cap_overlap.c), and rate_s = flux * area * k *
+     * (src/shadow/sun_fraction.c), a coarse limb-darkening quadrature
+     * (src/shadow/limb_darkening.c), the overlap of two hemispheres and of caps
+     * beyond a hemisphere (src/math/cap_overlap.c), and rate_s = flux * area * k *
      * psf underflowing for the smallest subnormal fluxes when flux * area is
-     * formed first (src/expose.c: every SNR 0, the tie-break choosing the
+     * formed first (src/camera/expose.c: every SNR 0, the tie-break choosing the
      * shortest time). */
     {"", NULL, "", 0, 0, "no entry: matches no table"}
 };
@@ -258,7 +258,7 @@ static void test_illum(void **state)
  * At grid nodes the lookup returns the stored float32 value: error 1e-6
  * relative (3e-6 in single precision, where the node's coordinates are
  * themselves rounded) plus the conditioning term. Elsewhere the table's
- * documented goal (src/earthshine.c note 2): 1e-3 relative where phi >= 1% of
+ * documented goal (src/sources/earthshine.c note 2): 1e-3 relative where phi >= 1% of
  * phi(0, h), 1e-5 phi(0, h) absolute elsewhere (+1e-6 relative in single);
  * psi within 1e-6 rad (nodes) / 1e-3 rad (elsewhere) where phi >= 1% phi(0, h).
  * If the table was re-baked on another grid, the node vectors are checked
@@ -563,7 +563,7 @@ static void test_hostile_scaled_vectors(void **state)
             }
             st = oi_illuminate(&s, NULL, &o);
             /* once a KNOWN issue (range_km = inf with OK): fixed by
-             * OI_POSITION_MAX_KM in src/illuminate.c */
+             * OI_POSITION_MAX_KM in src/scene/illuminate.c */
             CHECK(st < 0 ? (o.e_sun == 0 && o.mag_v == 0) : illum_ok(&o),
                   "oi_illuminate vector %zu scaled %g: status %d e_sun %g e_earth %g h %g flux "
                   "%g mag %g\n",

@@ -2,7 +2,7 @@
 /*
  * test_table_default.c: a program that defines oi_earth_table_default and
  * oi_atm_table_default itself (returning NULL) links and runs without the
- * library's defaults (src/earth_table_default.c, src/atm_table_default.c are
+ * library's defaults (src/model/earth_table_default.c, src/model/atm_table_default.c are
  * archive members pulled only for an undefined symbol), and the NULL default
  * behaves as the header says: earthshine the Lambert far field with
  * OI_WARN_TABLE_RANGE, a caller's table still used; the atmosphere adds

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 """Brute-force earthshine under a non-uniform albedo field, for the tests.
 
-Independent of the runtime's cubature (src/earthshine_albedo.c: Gauss rules
+Independent of the runtime's cubature (src/sources/earthshine_albedo.c: Gauss rules
 in the emission angle and the azimuth about the nadir, 8 x 32 nodes): here
 the surface integral over the central angle alpha from the sub-target point
 (composite 8-point Gauss on 96 panels, graded towards the nadir by an

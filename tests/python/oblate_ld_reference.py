@@ -3,7 +3,7 @@
 and limb-darkened disc, in numpy double precision: a reference cheap enough for
 random points in `make test` (tests/python/test_oblate_ld.py).
 
-Independent of the library (src/oblate.c integrates chords of the gnomonic
+Independent of the library (src/shadow/oblate.c integrates chords of the gnomonic
 projection, the limb-darkened law in closed form along each chord) and, for
 its two integrals, of tests/ref/oblate.py:
 

@@ -227,7 +227,7 @@ def test_table_lookup_against_reference(rays_default):
 
 
 def test_uniform_disc_shift_coefficients():
-    """src/atmosphere.c's shift coefficients are the fit of bake/atmosphere/disc_shift.py,
+    """src/shadow/atmosphere.c's shift coefficients are the fit of bake/atmosphere/disc_shift.py,
     and the fit's straight-edge error is the documented 7.0e-4."""
     import re
     from bake.atmosphere import disc_shift
@@ -347,7 +347,7 @@ def test_eclipse_distances_against_published():
 
 
 def test_moonlight_optical_depth_nodes():
-    """src/atmosphere_moonlight.c's optical depths are the ray reference's
+    """src/shadow/atmosphere_moonlight.c's optical depths are the ray reference's
     (bake/atmosphere/moonlight.py) at the nodes, its clouds the profile's, and
     its interpolation stays within 1e-3 of the reference's transmission midway
     between the nodes."""

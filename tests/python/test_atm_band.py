@@ -11,7 +11,7 @@
   reproduces its published 490 km levels, and the runtime's total band is
   within 5 km of them at 10 / 50 / 90 % (docs/atmosphere.md);
 * the uniform disc's shift coefficients of the total band in
-  src/atmosphere.c are the fit of bake/atmosphere/disc_shift.py for the
+  src/shadow/atmosphere.c are the fit of bake/atmosphere/disc_shift.py for the
   band's disc.
 """
 import os

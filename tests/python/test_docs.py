@@ -38,7 +38,7 @@ DOCS = _files(["README.md", "docs/*.md"])
 PROSE = [f for f in DOCS + _files(["python/**/*.py", "python/*.md", "python/*.toml",
                                    "examples/**/*.py", "examples/**/*.c", "examples/**/*.h",
                                    "tools/**/*.py",
-                                   "include/*.h", "src/*.[ch]", "tables/*.[ch]", "tables/*.json",
+                                   "include/*.h", "src/**/*.[ch]", "tables/*.[ch]", "tables/*.json",
                                    "bake/**/*.py", "bake/**/*.json", "tests/**/*.py",
                                    "tests/**/*.[ch]", "tests/**/*.sh", "tests/**/*.mjs",
                                    "mk/*.mk", "Makefile", ".ci/*", "target/*.[ch]", "target/*.ld",
@@ -83,7 +83,7 @@ def test_physics_sections_cited_exist():
     assert sections == set(range(1, max(sections) + 1)), "sections numbered 1..N"
     cite = re.compile(r"physics\.md\)?,?\s+(?:sections?|sec\.)\s+(\d+)(?:\s*(?:-|and|,|to)\s*(\d+))?")
     bad = []
-    for path in _files(["README.md", "docs/*.md", "include/*.h", "src/*.[ch]", "tables/*.[ch]",
+    for path in _files(["README.md", "docs/*.md", "include/*.h", "src/**/*.[ch]", "tables/*.[ch]",
                         "bake/**/*.py", "tests/**/*.py", "tests/**/*.[ch]", "tools/**/*.py",
                         "examples/**/*.[ch]", "examples/**/*.py", "python/**/*.py"]):
         with open(os.path.join(ROOT, path), errors="replace") as f:

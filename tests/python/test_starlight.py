@@ -46,7 +46,7 @@ def test_rotation_against_astropy():
 
 
 def test_rows_from_the_definition():
-    """The rotation's rows (src/galactic.c) are the galactic axes built from
+    """The rotation's rows (src/camera/galactic.c) are the galactic axes built from
     the north galactic pole (RA 192.85948, Dec 27.12825 deg) and the node's
     longitude 32.93192 deg, evaluated here in 30 digits: the axes' images
     are their (l, b) within 1e-15 rad."""

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""The C runtime's lookup (src/earthshine.c, build/liborbillum.a) equals the
+"""The C runtime's lookup (src/sources/earthshine.c, build/liborbillum.a) equals the
 numpy mirror (bake/earthshine/lookup.py) that the bake's error measurement uses, so
 the measured errors in the provenance hold for the runtime."""
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
-"""Derived constants src/ holds as literals (src/phase.c, src/shadow.c,
-src/illuminate.c), from mpmath and include/oi_constants.h.
+"""Derived constants src/ holds as literals (src/sources/phase.c, src/shadow.c,
+src/scene/illuminate.c), from mpmath and include/oi_constants.h.
 
   .venv/bin/python -m tools.coeffs.derived     # prints the C constants
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
-"""Constants of src/sincos.c (the runtime's own sine and cosine), from mpmath.
+"""Constants of src/math/sincos.c (the runtime's own sine and cosine), from mpmath.
 
   .venv/bin/python -m tools.coeffs.sincos      # prints the C constants
 
@@ -79,7 +79,7 @@ def _chebyfit_ascending(f, z, n):
 
 
 def constants(single):
-    """{C name: value} in src/sincos.c's order, each rounded as the C literal
+    """{C name: value} in src/math/sincos.c's order, each rounded as the C literal
     stores it, and {comment name: text} of the measured bounds."""
     with mp.workdps(DPS):
         half_pi, z = _half_pi(), _z()
