@@ -46,5 +46,12 @@ assert EXPOSURE_DTYPE.itemsize == ctypes.sizeof(L.oi_exposure)
 
 
 def library_path():
-    """Path of the loaded liborbillum.so."""
+    """Path of the loaded liborbillum.so.
+
+    Example:
+
+    >>> import orbillum
+    >>> orbillum.library_path()
+    '...liborbillum.so'
+    """
     return _lib._orbillum_path

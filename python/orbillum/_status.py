@@ -7,7 +7,14 @@ from ._runtime import _lib
 
 
 def status_name(status):
-    """Name of a status code ("OK", "ERR_NONFINITE", ...), as oi_status_name."""
+    """Name of a status code ("OK", "ERR_NONFINITE", ...), as oi_status_name.
+
+    Example:
+
+    >>> import orbillum
+    >>> orbillum.status_name(orbillum.OI_OK), orbillum.status_name(orbillum.OI_ERR_NONFINITE)
+    ('OK', 'ERR_NONFINITE')
+    """
     return _lib.oi_status_name(int(status)).decode()
 
 
@@ -35,7 +42,16 @@ def _status_names(status):
 
 
 def flag_names(flags):
-    """Names of the OI_FLAG_* bits set in ``flags``, '+'-joined ('' for none)."""
+    """Names of the OI_FLAG_* bits set in ``flags``, '+'-joined ('' for none).
+
+    Example:
+
+    >>> import orbillum
+    >>> orbillum.flag_names(orbillum.OI_FLAG_ECLIPSED | orbillum.OI_FLAG_OCCULTED)
+    'eclipsed+occulted'
+    >>> orbillum.flag_names(0)
+    ''
+    """
     out = []
     bit = 1
     f = int(flags)

@@ -127,6 +127,31 @@ def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None
     (oi_expose_scene_batch_outputs: OI_EXPOSE_SETTING, FAINT, DETECT, SUN_ANGLE,
     BACKGROUND, RATE; docs/camera.md, "Batches and their outputs mask"): the
     fields left out are 0 and not computed, the others the same bits.
+
+    Example: the scene of illuminate()'s example, seen by the 15 cm telescope:
+
+    >>> import numpy as np, orbillum
+    >>> sun, moon = [1.496e8, 0, 0], [0, 384400.0, 0]
+    >>> observer = [0, 6380.0, 0]
+    >>> target = [[0, 6880.0, 0], [-7000.0, 0, 0]]
+    >>> x = orbillum.expose("telescope-15cm", sun, moon, target, observer)
+    >>> x["exposure_s"].tolist(), x["gain"].tolist(), np.round(x["snr"], 1).tolist()
+    ([0.03, 0.01], [1.0, 1.0], [122.8, 0.0])
+    >>> x["flag_names"].tolist()
+    ['', 'earth_in_fov+eclipsed+too_faint+occulted']
+    >>> x["row_status_name"].tolist()
+    ['OK', 'OK']
+
+    A facet target (the README's call), and a mask of outputs:
+
+    >>> b = orbillum.expose("telescope-15cm", sun, moon, target[0], observer,
+    ...                     target_shape="box-wing", attitude_q=[1, 0, 0, 0])
+    >>> b["exposure_s"].tolist(), np.round(b["snr"], 1).tolist(), b["flag_names"].tolist()
+    ([1.0], [210.9], [''])
+    >>> s = orbillum.expose("telescope-15cm", sun, moon, target, observer,
+    ...                     outputs=orbillum.OI_EXPOSE_SETTING)
+    >>> s["exposure_s"].tolist(), s["sun_angle_rad"].tolist()
+    ([0.03, 0.01], [0.0, 0.0])
     """
     if observer is None:
         raise ValueError("observer: expose needs the observer's position, (N, 3) or (3,) km "
@@ -177,7 +202,18 @@ def expose_flux(camera, flux_w_m2, background_w_m2_sr=0.0, flags=0, *, fill=None
                 snr_min=None, sensor_temp_c=None):
     """oi_expose per row from a flux at the aperture (W/m^2), a background
     radiance (W/m^2/sr) and known flags; sensor_temp_c as in expose().
-    Returns the oi_exposure fields."""
+    Returns the oi_exposure fields.
+
+    Example: two fluxes at the aperture, no background; the fainter one is
+    below the camera's detection limit (flag too_faint):
+
+    >>> import numpy as np, orbillum
+    >>> x = orbillum.expose_flux("telescope-15cm", [1e-14, 1e-16])
+    >>> x["exposure_s"].tolist(), np.round(x["snr"], 2).tolist(), x["flag_names"].tolist()
+    ([100.0, 100.0], [44.69, 1.69], ['', 'too_faint'])
+    >>> np.round(x["signal_e"], 3).tolist()   # in proportion to the flux
+    [2125.015, 21.25]
+    """
     cp, _ = _camera_ptr(camera)
     flux = np.atleast_1d(_floats(flux_w_m2, "flux_w_m2"))
     if flux.ndim != 1:
@@ -201,7 +237,14 @@ def expose_flux(camera, flux_w_m2, background_w_m2_sr=0.0, flags=0, *, fill=None
 
 
 def cameras():
-    """Names of the built-in cameras, in index order."""
+    """Names of the built-in cameras, in index order.
+
+    Example:
+
+    >>> import orbillum
+    >>> orbillum.cameras()
+    ['star-tracker', 'telescope-15cm']
+    """
     out = []
     i = 0
     while True:
@@ -213,7 +256,25 @@ def cameras():
 
 
 def camera(name):
-    """A built-in camera's parameters as a dict (times_s, gains, read_noise_e as lists)."""
+    """A built-in camera's parameters as a dict (times_s, gains, read_noise_e as lists).
+
+    Example:
+
+    >>> import orbillum
+    >>> c = orbillum.camera("telescope-15cm")
+    >>> c["aperture_m"], c["times_s"][:3], c["gains"]
+    (0.15, [0.01, 0.03, 0.1], [1.0])
+
+    The dict, changed, is a custom camera for expose() and expose_flux():
+
+    >>> c["aperture_m"] = 0.30
+    >>> x = orbillum.expose_flux(c, 1e-14)
+    >>> x["exposure_s"].tolist(), round(float(x["signal_e"][0]), 2)
+    ([100.0], 8500.06)
+    >>> x0 = orbillum.expose_flux("telescope-15cm", 1e-14)   # twice the aperture: 4x the signal
+    >>> round(float(x["signal_e"][0] / x0["signal_e"][0]), 9)
+    4.0
+    """
     _, c = _camera_ptr(name)
     d = {}
     for f, _t in L.oi_camera._fields_:

@@ -18,7 +18,14 @@ _FACET_RULES = ("a nonzero finite normal, area_m2 in (0, 1e8], albedos in [0, 1]
 
 def shapes():
     """Names of the built-in shapes (oi_shape_builtin), "sphere" first (the
-    scene's Lambertian sphere: no shape)."""
+    scene's Lambertian sphere: no shape).
+
+    Example:
+
+    >>> import orbillum
+    >>> orbillum.shapes()
+    ['sphere', 'plate', 'box-wing', 'cylinder']
+    """
     out = ["sphere"]
     i = 0
     while True:
@@ -46,6 +53,21 @@ class Shape:
     (oi_shape_check): a facet it rejects raises ValueError naming it.
     Attributes: name, facets (a read-only FACET_DTYPE array), n_facets,
     diffuse_from_scene, address (of the oi_shape, for the scene's shape field).
+
+    Example: a built-in shape, and one of two facets:
+
+    >>> import orbillum
+    >>> orbillum.Shape("box-wing")
+    Shape('box-wing', 8 facets)
+    >>> sat = orbillum.Shape([{"normal": [0, 0, 1], "area_m2": 1.0, "albedo_diffuse": 0.3},
+    ...                       {"normal": [1, 0, 0], "area_m2": 2.0, "albedo_diffuse": 0.2,
+    ...                        "albedo_specular": 0.5, "shininess": 50}], name="sat")
+    >>> sat.n_facets, sat.facets["area_m2"].tolist()
+    (2, [1.0, 2.0])
+    >>> orbillum.Shape([{"normal": [0, 0, 0], "area_m2": 1.0, "albedo_diffuse": 0.3}])
+    Traceback (most recent call last):
+    ...
+    ValueError: target_shape[0]: the library rejects this facet (ERR_SHAPE): ...
     """
 
     def __init__(self, facets, *, diffuse_from_scene=False, name=None):
@@ -93,7 +115,14 @@ class Shape:
 
 
 def shape(facets, *, diffuse_from_scene=False, name=None):
-    """A Shape (see Shape): a built-in name or facets."""
+    """A Shape (see Shape): a built-in name or facets.
+
+    Example: the built-in plate, whose albedo is the scene's target_albedo:
+
+    >>> import orbillum
+    >>> orbillum.shape("plate")
+    Shape('plate', 1 facets, diffuse_from_scene)
+    """
     return Shape(facets, diffuse_from_scene=diffuse_from_scene, name=name)
 
 
@@ -217,7 +246,18 @@ def _is_per_row(spec):
 def facet_brdf(facet, to_source, to_observer):
     """oi_facet_brdf (1/sr) of one facet (a dict as for Shape, or a
     FACET_DTYPE record) for directions to the source and the observer (body
-    frame, any length), elementwise over (N, 3) or (3,) directions."""
+    frame, any length), elementwise over (N, 3) or (3,) directions.
+
+    Example: a Lambertian facet's BRDF is albedo / pi, wherever the light
+    comes from and goes to on its front:
+
+    >>> import numpy as np, orbillum
+    >>> f = {"normal": [0, 0, 1], "area_m2": 1.0, "albedo_diffuse": 0.3}
+    >>> np.round(orbillum.facet_brdf(f, [0, 0, 1], [[0, 0, 1], [1, 0, 1]]), 6).tolist()
+    [0.095493, 0.095493]
+    >>> round(0.3 / np.pi, 6)
+    0.095493
+    """
     arr = _facet_array([facet] if isinstance(facet, dict) else np.atleast_1d(facet)[:1])
     c = L.oi_facet.from_buffer_copy(arr.tobytes())
     s = _vec(to_source, "to_source")

@@ -19,7 +19,16 @@ _TERM_BITS = {"sun": L.OI_TERM_SUN, "earth": L.OI_TERM_EARTH, "moon": L.OI_TERM_
 
 def terms_mask(terms):
     """'sun+earth+moon+sky' (any subset, any order, '+'-joined; 'all' = sun+earth+moon,
-    sky is opt-in; '' = none) -> mask."""
+    sky is opt-in; '' = none) -> mask.
+
+    Example:
+
+    >>> import orbillum
+    >>> orbillum.terms_mask("sun+earth") == orbillum.OI_TERM_SUN | orbillum.OI_TERM_EARTH
+    True
+    >>> orbillum.terms_mask("all") == orbillum.OI_TERM_ALL, orbillum.terms_mask("")
+    (True, 0)
+    """
     if isinstance(terms, (int, np.integer)):
         return int(terms)
     s = str(terms).strip().lower()
@@ -207,6 +216,36 @@ def illuminate(sun, moon, target, observer=None, *, terms=None, earth_albedo=Non
       shadow_*; aliases sun_fraction, sun_fraction_ld, sun_fraction_atm;
       dir_* of shape (N, 3); flux_specular, the facets' specular part of
       flux_obs), plus status (int32) and status_name.
+
+    Example: the Sun along +x, an observer on the terminator (the Sun on
+    its horizon), a target 500 km above it in sunlight and one behind the
+    Earth in its shadow, in one batch call (one row each):
+
+    >>> import numpy as np, orbillum
+    >>> sun, moon = [1.496e8, 0, 0], [0, 384400.0, 0]
+    >>> observer = [0, 6380.0, 0]
+    >>> target = [[0, 6880.0, 0], [-7000.0, 0, 0]]
+    >>> r = orbillum.illuminate(sun, moon, target, observer)
+    >>> r["sun_fraction"].tolist(), r["status_name"].tolist()
+    ([1.0, 0.0], ['OK', 'OK'])
+    >>> np.round(r["e_sun"], 1).tolist(), np.round(r["e_earth"], 2).tolist()
+    ([1361.0, 0.0], [16.88, 0.0])
+    >>> np.round(r["mag_v"], 2).tolist(), np.round(r["range_km"], 1).tolist()
+    ([5.16, 27.3], [500.0, 9471.2])
+
+    outputs: the fields left out are 0, the others the same bits (here the
+    observer's fields without the limb-darkened fraction):
+
+    >>> q = orbillum.illuminate(sun, moon, target, observer, outputs=orbillum.OI_BATCH_OBSERVER)
+    >>> bool((q["mag_v"] == r["mag_v"]).all()), q["sun_fraction_ld"].tolist()
+    (True, [0.0, 0.0])
+
+    A facet target (a built-in shape, attitude quaternions w, x, y, z):
+
+    >>> b = orbillum.illuminate(sun, moon, target[0], observer, target_shape="box-wing",
+    ...                         attitude_q=[1, 0, 0, 0])
+    >>> np.round(b["mag_v"], 2).tolist(), b["status_name"].tolist()
+    ([7.79], ['OK'])
     """
     mask = _outputs_mask(outputs)
     m = _model(model)
@@ -220,7 +259,24 @@ def illuminate(sun, moon, target, observer=None, *, terms=None, earth_albedo=Non
 
 def earthshine(theta, h_km, *, model=None):
     """oi_earthshine per element (one oi_earthshine_batch call): (phi, psi,
-    status) arrays of the broadcast shape of theta and h_km."""
+    status) arrays of the broadcast shape of theta and h_km.
+
+    Example: phi and psi 500 km up, at three angles from the Sun:
+
+    >>> import numpy as np, orbillum
+    >>> phi, psi, st = orbillum.earthshine([0.0, 0.5, 1.0], 500.0)
+    >>> np.round(phi, 2).tolist(), np.round(psi, 3).tolist(), st.tolist()
+    ([1.24, 1.09, 0.67], [0.0, 0.033, 0.093], [0, 0, 0])
+
+    theta and h_km broadcast; 1 m up phi is near 2 cos(theta), a flat
+    Lambertian plane's; a point below the surface is a status, not an exception:
+
+    >>> phi, psi, st = orbillum.earthshine([0.0, 1.0], np.array([[1e-3], [36000.0]]))
+    >>> phi.shape, np.round(phi[0], 2).tolist(), np.round(2 * np.cos([0.0, 1.0]), 2).tolist()
+    ((2, 2), [2.0, 1.08], [2.0, 1.08])
+    >>> orbillum.status_name(orbillum.earthshine(0.0, -1.0)[2])
+    'ERR_BELOW_SURFACE'
+    """
     try:
         th, h = np.broadcast_arrays(_floats(theta, "theta"), _floats(h_km, "h_km"))
     except ValueError as e:

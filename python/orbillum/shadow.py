@@ -14,7 +14,28 @@ def sun_fraction(sun, point, *, model=None, outputs=None):
     oi_shadow fields and status. outputs: None (every field) or a mask of
     OI_BATCH_* bits (fraction and region always; the fields left out are 0,
     and cost nothing: OI_BATCH_FRACTION_LD, OI_BATCH_ATMOSPHERE,
-    OI_BATCH_GEOMETRY)."""
+    OI_BATCH_GEOMETRY).
+
+    Example: the Sun along +x; a point on the day side, one behind the Earth
+    (umbra) and one at the shadow's edge (penumbra), in one batch call:
+
+    >>> import numpy as np, orbillum
+    >>> s = orbillum.sun_fraction([1.496e8, 0, 0],
+    ...                           [[7000, 0, 0], [-7000, 0, 0], [-7000, 6398, 0]])
+    >>> np.round(s["fraction"], 4).tolist(), s["status"].tolist()
+    ([1.0, 0.0, 0.858], [0, 0, 0])
+    >>> s["region"].tolist() == [orbillum.OI_SHADOW_LIT, orbillum.OI_SHADOW_UMBRA,
+    ...                          orbillum.OI_SHADOW_PENUMBRA]
+    True
+    >>> np.round(s["fraction_ld"], 4).tolist()   # limb-darkened Sun
+    [1.0, 0.0, 0.8776]
+
+    With outputs=0 only fraction and region are computed (the others are 0):
+
+    >>> s = orbillum.sun_fraction([1.496e8, 0, 0], [-7000, 6398, 0], outputs=0)
+    >>> np.round(s["fraction"], 4).tolist(), s["fraction_ld"].tolist()
+    ([0.858], [0.0])
+    """
     sun = _vec(sun, "sun")
     point = _vec(point, "point")
     n = _n_rows(sun, point)
