@@ -21,7 +21,8 @@ set -- include/orbillum/*.h
 for h in "$@" orbillum.h; do
     inc=${h#include/}
     # a declaration of its own: a header emptied by an option leaves no empty unit
-    printf '#include "%s"\n#include "%s"\nint header_sections_probe(void);\n' "$inc" "$inc" >"$T/probe.c"
+    printf '#include "%s"\n#include "%s"\nint header_sections_probe(void);\n' "$inc" "$inc" \
+        >"$T/probe.c"
     for defs in "" "-DOI_SINGLE_PRECISION" "$NO" "-DOI_SINGLE_PRECISION $NO"; do
         n=$((n + 1))
         # shellcheck disable=SC2086

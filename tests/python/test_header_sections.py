@@ -137,7 +137,8 @@ def test_section_includes_what_it_uses(name):
         if other in siblings or other == name:
             continue
         names = set(_declared(os.path.join(INCLUDE, "orbillum", other)))
-        assert not used & names, f"{name} uses {sorted(used & names)} of {other} without including it"
+        assert not used & names, \
+            f"{name} uses {sorted(used & names)} of {other} without including it"
 
 
 def test_no_include_cycle_and_the_umbrella_order():
