@@ -186,3 +186,14 @@ def test_section_alone_has_the_precision_guard(cc, name):
             assert want and got == want, f"{name} alone declares {got}, orbillum.h {want}"
             renamed += bool(defs) and got == fn + "_sp"
     assert renamed or not functions, f"{name}: no function renamed _sp"
+
+
+def test_every_function_has_its_single_precision_name(cc):
+    """Every public function is named fn_sp in a single-precision build (oi_config.h),
+    so that float code never links a double archive's function silently."""
+    functions = sorted(n for path in PUBLIC for n, kind in _declared(path).items()
+                       if kind == "function")
+    float_text = _preprocessed(cc, "orbillum.h", ["-DOI_SINGLE_PRECISION"])
+    plain = [fn for fn in functions if _called(float_text, fn) != fn + "_sp"]
+    assert len(functions) >= 40
+    assert not plain, f"no _sp name in a single-precision build: {plain}"
