@@ -36,3 +36,21 @@ def test_existing_cluster_by_address_equals_one_process():
         s, got = _plan(objects_per_block=11, scheduler=cluster.scheduler_address)
     assert s.workers == 2
     assert got.equals(one)
+
+
+def test_workers_write_the_parts_the_same_bytes(tmp_path):
+    """On a cluster the workers write the blocks' parts themselves (plan.run_part): the
+    Parquet file, the CSV and the dataset are the bytes of the one-process run."""
+    out = {}
+    for name, kw in (("one", {}), ("two", {"workers": 2})):
+        d = tmp_path / name
+        d.mkdir()
+        s, _ = plan.plan(synthetic.generate(30, seed=3), [tle.from_elements(OBSERVER, 99000)],
+                         START, STOP, 120.0, objects_per_block=4, progress=False,
+                         parquet=str(d / "p.parquet"), csv=str(d / "p.csv"),
+                         dataset=str(d / "ds"), **kw)
+        out[name] = {str(p.relative_to(d)): p.read_bytes() for p in sorted(d.rglob("*"))
+                     if p.is_file()}
+        assert s.blocks == 8 and s.worker_written == (8 if kw else 0)
+    assert out["one"] == out["two"]
+    assert len(out["one"]) == 2 + 8 + 1

@@ -55,6 +55,7 @@ class Summary:
     workers: int = 1
     statuses: dict = field(default_factory=dict)
     resumed_blocks: int = 0    # blocks taken from an interrupted run's parts (resume=True)
+    worker_written: int = 0    # blocks whose parts a Dask worker wrote (run_part)
     old_epochs: int = 0        # element sets farther than epoch_warn_days from an epoch
 
     def add(self, st: dict) -> None:
@@ -322,12 +323,16 @@ def _plan(client, sets, observers, start, stop, step_s, camera, max_range_km, al
 
     def take(i, result):
         c0 = time.thread_time()
-        cols, costs = result
-        st = block_stats(cols, costs)
+        if isinstance(result, dict):  # a worker wrote the parts itself: its stats
+            st = result
+            summary.worker_written += 1
+        else:
+            cols, costs = result
+            st = block_stats(cols, costs)
+            table = to_table(cols, object_ids, object_names, observer_names, epochs_ms, schema)
+            files.write(i, table, st)
+            sink.write(table)
         summary.add(st)
-        table = to_table(cols, object_ids, object_names, observer_names, epochs_ms, schema)
-        files.write(i, table, st)
-        sink.write(table)
         if bar is not None:
             bar.update(1)
         summary.client_cpu_s += time.thread_time() - c0
@@ -346,7 +351,12 @@ def _plan(client, sets, observers, start, stop, step_s, camera, max_range_km, al
                 take(i, block.run(sets[a:b], a, ctx))
             summary.run_s = time.perf_counter() - r0
         else:
-            _run_dask(todo, sets, ctx, take, workers, client, summary)
+            # the workers write the parts straight to the outputs (a folder they share with
+            # this process) unless the rows must come here (a stream, keep)
+            writer = None
+            if files and csv_stream is None and not keep:
+                writer = PartWriter(files.targets, observer_names, epochs_ms, schema)
+            _run_dask(todo, sets, ctx, take, workers, client, summary, writer)
         sink.close()
         files.finish()
         finished = True
@@ -396,9 +406,33 @@ def _connect(scheduler, timeout_s):
         log.setLevel(level)
 
 
-def _run_dask(todo, sets, ctx, take, workers, client, summary):
+@dataclass
+class PartWriter:
+    """What a worker needs to write a block's parts itself (run_part)."""
+    targets: list
+    observer_names: np.ndarray
+    epochs_ms: np.ndarray
+    schema: pa.Schema
+
+
+def run_part(sets, first_index, ctx, i, writer: PartWriter) -> dict:
+    """block.run on a worker, its rows written as part i of every output there: only
+    the block's stats (block_stats) go back to the client."""
+    cols, costs = block.run(sets, first_index, ctx)
+    st = block_stats(cols, costs)
+    # the block's own objects, indexed from 0
+    local = dict(cols, object_index=cols["object_index"] - np.int32(first_index))
+    ids = np.array([s.number for s in sets], dtype=np.int32)
+    names = np.array([s.name for s in sets], dtype=object)
+    table = to_table(local, ids, names, writer.observer_names, writer.epochs_ms, writer.schema)
+    for t in writer.targets:
+        t.write(i, table, st)
+    return st
+
+
+def _run_dask(todo, sets, ctx, take, workers, client, summary, writer=None):
     """The blocks todo on a local cluster of workers processes (client None) or on the
-    cluster of client."""
+    cluster of client; with writer, the workers write the parts (run_part)."""
     from dask.distributed import Client, LocalCluster
     cluster = own = None
     if client is None:
@@ -409,6 +443,7 @@ def _run_dask(todo, sets, ctx, take, workers, client, summary):
         summary.workers = max(1, len(client.scheduler_info().get("workers", {})))
         client.wait_for_workers(summary.workers)
         shared = client.scatter(ctx, broadcast=True)
+        shared_writer = client.scatter(writer, broadcast=True) if writer is not None else None
         r0 = time.perf_counter()
         token = uuid.uuid4().hex
         window = max(2, 3 * summary.workers)  # blocks in flight: keeps workers busy, bounds memory
@@ -419,8 +454,13 @@ def _run_dask(todo, sets, ctx, take, workers, client, summary):
             nxt = next(pending, None)
             if nxt is not None:
                 i, (a, b) = nxt
-                queue.append((i, client.submit(block.run, sets[a:b], a, shared,
-                                               key=f"orbillum-block-{token}-{i}")))
+                key = f"orbillum-block-{token}-{i}"
+                if shared_writer is None:
+                    fut = client.submit(block.run, sets[a:b], a, shared, key=key)
+                else:
+                    fut = client.submit(run_part, sets[a:b], a, shared, i, shared_writer,
+                                        key=key)
+                queue.append((i, fut))
         for _ in range(window):
             submit_next()
         while queue:
