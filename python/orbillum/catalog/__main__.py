@@ -116,6 +116,9 @@ def _parser() -> argparse.ArgumentParser:
     ex.add_argument("--scheduler-timeout", type=float, metavar="S",
                     help=f"seconds to try to reach --scheduler (default "
                          f"{plan.SCHEDULER_TIMEOUT_S:g})")
+    ex.add_argument("--client-writes", action="store_true",
+                    help="on Dask, the rows come to this process, which writes them (default: "
+                         "the workers write their parts: the output folder must be shared)")
     ex.add_argument("--objects-per-block", type=int,
                     help=f"objects per task (default: about {plan.SCENES_PER_BLOCK} scenes)")
     return p
@@ -223,7 +226,8 @@ def _run(a) -> int:
                 progress=a.progress, target_albedo=a.target_albedo,
                 target_radius_m=a.target_radius_m, earth_albedo=a.earth_albedo,
                 resume=a.resume, epoch_warn_days=a.epoch_warn_days,
-                epoch_limit_days=a.epoch_limit_days, scheduler_timeout_s=a.scheduler_timeout)
+                epoch_limit_days=a.epoch_limit_days, scheduler_timeout_s=a.scheduler_timeout,
+                workers_write=not a.client_writes)
     except (tle.CatalogueError, ValueError, TypeError) as e:
         print(f"orbillum.catalog: {e}", file=sys.stderr)
         return 2

@@ -239,7 +239,7 @@ def plan(sets, observers, start, stop, step_s, *, camera="telescope-15cm",
          workers=None, scheduler=None, parquet=None, csv=None, dataset=None, keep=False,
          progress=None, target_albedo=None, target_radius_m=None, earth_albedo=None,
          resume=False, epoch_warn_days=None, epoch_limit_days=None,
-         scheduler_timeout_s=None):
+         scheduler_timeout_s=None, workers_write=True):
     """Plan the catalogue sets for the observers every step_s seconds from start to stop.
 
     workers: None or 0 (this process), N (a local dask.distributed cluster of N
@@ -253,7 +253,10 @@ def plan(sets, observers, start, stop, step_s, *, camera="telescope-15cm",
     parts of an interrupted run of the same inputs (not with keep=True: a kept
     run computes every block). epoch_warn_days, epoch_limit_days: the element
     epoch checks (elements.check_epochs; defaults EPOCH_WARN_DAYS,
-    EPOCH_LIMIT_DAYS). Returns (Summary, tables or None).
+    EPOCH_LIMIT_DAYS). On Dask, workers_write: the workers write the blocks' parts
+    into the outputs' work directories themselves (a folder every worker and this
+    process reach at the same path); False: the rows come to this process, which
+    writes them. Returns (Summary, tables or None).
     """
     from . import elements
     w0 = time.perf_counter()
@@ -269,7 +272,7 @@ def plan(sets, observers, start, stop, step_s, *, camera="telescope-15cm",
         return _plan(client, sets, observers, start, stop, step_s, camera, max_range_km,
                      all_rows, positions, objects_per_block, workers, parquet, csv, dataset,
                      keep, progress, target_albedo, target_radius_m, earth_albedo, resume,
-                     epoch_warn_days, epoch_limit_days, w0)
+                     epoch_warn_days, epoch_limit_days, w0, workers_write)
     finally:
         if client is not None:
             client.close()
@@ -278,7 +281,7 @@ def plan(sets, observers, start, stop, step_s, *, camera="telescope-15cm",
 def _plan(client, sets, observers, start, stop, step_s, camera, max_range_km, all_rows,
           positions, objects_per_block, workers, parquet, csv, dataset, keep, progress,
           target_albedo, target_radius_m, earth_albedo, resume, epoch_warn_days,
-          epoch_limit_days, w0):
+          epoch_limit_days, w0, workers_write=True):
     from . import elements
     setup_bar = _progress(len(SETUP_STEPS), progress, "set-up", "step")
 
@@ -326,6 +329,12 @@ def _plan(client, sets, observers, start, stop, step_s, camera, max_range_km, al
         if isinstance(result, dict):  # a worker wrote the parts itself: its stats
             st = result
             summary.worker_written += 1
+            if not files.done(i):
+                raise tle.CatalogueError(
+                    f"a worker wrote block {i} but its part is not in "
+                    f"{', '.join(files.work_dirs())} here: the output folder must be one every "
+                    "worker and this process reach at the same path (a shared file system), "
+                    "or let this process write (--client-writes)")
         else:
             cols, costs = result
             st = block_stats(cols, costs)
@@ -354,7 +363,7 @@ def _plan(client, sets, observers, start, stop, step_s, camera, max_range_km, al
             # the workers write the parts straight to the outputs (a folder they share with
             # this process) unless the rows must come here (a stream, keep)
             writer = None
-            if files and csv_stream is None and not keep:
+            if files and csv_stream is None and not keep and workers_write:
                 writer = PartWriter(files.targets, observer_names, epochs_ms, schema)
             _run_dask(todo, sets, ctx, take, workers, client, summary, writer)
         sink.close()
