@@ -86,14 +86,15 @@ def block_stats(cols: dict, costs: dict) -> dict:
 def _schema(positions: bool) -> pa.Schema:
     f = [pa.field("object_id", pa.int32()), pa.field("object", pa.string()),
          pa.field("observer", pa.string()), pa.field("epoch", pa.timestamp("ms", tz="UTC")),
-         pa.field("visible", pa.bool_()), pa.field("observable", pa.bool_()),
+         pa.field("visible", pa.bool_()),
          pa.field("status", pa.string()),
          pa.field("range_km", pa.float64())]
     f += [pa.field(n, pa.float64()) for n in block.NUMBERS]
-    f += [pa.field("flags", pa.string()), pa.field("flags_mask", pa.uint32()),
-          pa.field("flag_names", pa.string())]
+    f += [pa.field("flags", pa.string()), pa.field("flags_mask", pa.uint32())]
     if positions:
         f += [pa.field(n, pa.float64()) for n in block.POSITIONS]
+    # columns added later go last, so a reader by position keeps its columns
+    f += [pa.field("observable", pa.bool_()), pa.field("flag_names", pa.string())]
     return pa.schema(f)
 
 
