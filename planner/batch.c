@@ -361,28 +361,23 @@ int batch_run_map(const char *path, const oi_camera *default_camera, const plan_
         st = csv_next(&r);
         if (st == CSV_END) break;
         rows++;
-        if (b.rules.col[PLAN_C_ID] < 0) snprintf(idbuf, sizeof idbuf, "%lu", rows);
         if (st == CSV_IO || st == CSV_NOMEM) {
             flush_pending(&b);
             fprintf(stderr, "oi-plan: %s: line %lu: %s\n", b.path, r.line, csv_result_text(st));
             result = PLAN_EXIT_INPUT;
             break;
         }
+        id = plan_row_id(&b.rules, &r, st, rows, idbuf);
         if (st != CSV_RECORD) {
-            char where[48];
-            snprintf(where, sizeof where, "(at character %lu of the line)", r.err_col);
-            row_error(&b, r.err_line, -1, csv_result_text(st), where);
+            plan_csv_error(&r, st, &msg);
+            row_msg(&b, &msg);
             memset(&row, 0, sizeof row);
             row.status_name = PLAN_STATUS_PARSE;
-            id = b.rules.col[PLAN_C_ID] >= 0 ? "" : idbuf;
             len = strlen(id) + 1;
             room_for_id(&b, len);
             add_pending(&b, id, len, &row, r.err_line, 0);
             continue;
         }
-        id = b.rules.col[PLAN_C_ID] < 0 ? idbuf
-             : (size_t)b.rules.col[PLAN_C_ID] < csv_nfields(&r) ? csv_field(&r, (size_t)b.rules.col[PLAN_C_ID])
-                                                                : "";
         len = strlen(id) + 1;
         room_for_id(&b, len);
         if (plan_row_extra(&b.rules, &r) && !b.warned_extra) {

@@ -528,6 +528,24 @@ int plan_row_finish(const oi_scene *sc, const oi_illum *illum, int st, const oi_
     row->has_numbers = 1;
     return 1;
 }
+const char *plan_row_id(const plan_rules *rules, const csv_reader *r, int st, unsigned long rows,
+                        char *idbuf)
+{
+    const long c = rules->col[PLAN_C_ID];
+    if (c < 0) {
+        snprintf(idbuf, 32, "%lu", rows);
+        return idbuf;
+    }
+    return st == CSV_RECORD && (size_t)c < csv_nfields(r) ? csv_field(r, (size_t)c) : "";
+}
+
+void plan_csv_error(const csv_reader *r, int st, plan_msg *msg)
+{
+    char where[48];
+    snprintf(where, sizeof where, "(at character %lu of the line)", r->err_col);
+    fail(msg, r->err_line, -1, csv_result_text(st), where);
+}
+
 /* A line appended to plan_header's notes (dropped when it does not fit). */
 static void note(char *notes, size_t size, size_t *len, const char *fmt, ...)
 {

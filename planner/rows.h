@@ -103,6 +103,16 @@ static inline int plan_row_extra(const plan_rules *rules, const csv_reader *r)
     return csv_nfields(r) > rules->header_fields;
 }
 
+/* The id of record r, the rows-th after the header, read with csv_next's
+ * result st: its id field ("" when the row is short or could not be read),
+ * or, without an id column, rows in decimal (written at idbuf, 32 bytes). */
+const char *plan_row_id(const plan_rules *rules, const csv_reader *r, int st, unsigned long rows,
+                        char *idbuf);
+
+/* The message of a record csv_next could not read (st, neither CSV_END,
+ * CSV_IO nor CSV_NOMEM): the row is then PLAN_STATUS_PARSE. */
+void plan_csv_error(const csv_reader *r, int st, plan_msg *msg);
+
 /* Record r (the header's columns) into *sc, *model, *goal, *camera: returns
  * 1 when the row is to be computed, 0 when it failed (row then holds its
  * status; msg, when msg->line is nonzero, the message to print). */
