@@ -18,8 +18,9 @@ import { WASI } from 'node:wasi';
 
 const ROOT = path.resolve(path.dirname(new URL(import.meta.url).pathname), '../..');
 const BUILD = process.env.BUILDDIR ? path.resolve(ROOT, process.env.BUILDDIR) : path.join(ROOT, 'build');
-const { loadOrbillum, parseCsv, PLAN_COLUMNS } = await import(path.join(BUILD, 'wasm/orbillum.js'));
+const { loadOrbillum, PLAN_COLUMNS } = await import(path.join(BUILD, 'wasm/orbillum.js'));
 const oi = await loadOrbillum(fs.readFileSync(path.join(BUILD, 'wasm/orbillum.wasm')));
+const parseCsv = (text) => oi.readCsv(text); // the planner's own reader, in the module
 
 const f64 = new Float64Array(1);
 const u64 = new BigUint64Array(f64.buffer);
