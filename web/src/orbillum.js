@@ -20,7 +20,7 @@ export async function loadOrbillum(source) {
   return new Orbillum(instance);
 }
 
-/** The planner's output columns, in its order. */
+/** The planner's output columns, in its order (checked against the module's at load). */
 export const PLAN_COLUMNS = ['id', 'status', 'sun_fraction', 'sun_fraction_atm', 'e_sun',
   'e_earth', 'e_moon', 'earth_theta_deg', 'earth_h_km', 'flux_obs', 'mag_v', 'exposure_s',
   'gain', 'snr', 'flags', 'detect_margin_mag', 'e_sky'];
@@ -57,6 +57,9 @@ export class Orbillum {
     // the rest: the batch calls' arrays (batchRows)
     this.p.batch = at;
     this.batchBytes = base + this.x.oi_wasm_scratch_bytes() - at;
+    // the planner's output columns, as planner/output_text.c prints them
+    this.planColumns = this.cString(this.x.oi_plan_wasm_csv_header()).split(',');
+    if (this.planColumns.join() !== PLAN_COLUMNS.join()) throw new Error('PLAN_COLUMNS is not the planner\'s header');
     this.cameraList = [];
     for (let i = 0; ; i++) {
       const ptr = this.x.oi_camera_builtin(i);
@@ -124,22 +127,6 @@ export class Orbillum {
     return ptr === 0 ? null : this.cameraList.find((c) => c.ptr === ptr);
   }
 
-  /**
-   * The shape of a target_shape name as the planner reads it: {ptr} with ptr 0 for '' and
-   * 'sphere' (the scene's sphere), a built-in shape's address (oi_shape_find); null if unknown.
-   * (The planner's --shapes files are not read here.)
-   */
-  findShape(name) {
-    if (name === '' || name === 'sphere') return { ptr: 0 };
-    const bytes = new TextEncoder().encode(name);
-    if (bytes.length > 255) return null;
-    const b = new Uint8Array(this.memory.buffer);
-    b.set(bytes, this.p.name);
-    b[this.p.name + bytes.length] = 0;
-    const ptr = this.x.oi_shape_find(this.p.name);
-    return ptr === 0 ? null : { ptr };
-  }
-
   statusName(st) { return this.cString(this.x.oi_status_name(st)); }
 
   /** Flag names of a mask, lowest bit first, joined by '+' (as the planner prints them). */
@@ -166,7 +153,8 @@ export class Orbillum {
     for (const f of ['earth_albedo', 'target_albedo', 'target_radius_m']) {
       if (scene[f] !== undefined) this.setR(p, S, f, scene[f]);
     }
-    // a shape: the address findShape() gives (wasm32 pointers are 32-bit); its attitude (w, x, y, z)
+    // a shape: an address in the module (oi_shape_find's, or a planned row's; wasm32 pointers are
+    // 32-bit); its attitude (w, x, y, z)
     if (scene.shape_ptr) this.setU(p, S, 'shape', scene.shape_ptr);
     if (scene.attitude_q) for (let k = 0; k < 4; k++) this.setR(p, S, 'attitude_q', scene.attitude_q[k], k);
     return p;
@@ -494,7 +482,7 @@ export class Orbillum {
     // the text oi-plan prints after the status: ",n1,...,n12,flags,n13,n14\n" (%.17g)
     const fields = this.cString(X.oi_plan_wasm_row_ptr(2)).slice(1, -1).split(',');
     const hasNumbers = X.oi_plan_wasm_row_int(10) !== 0;
-    PLAN_COLUMNS.slice(2).forEach((c, k) => {
+    this.planColumns.slice(2).forEach((c, k) => {
       const t = fields[k];
       if (c === 'flags') row.flags = hasNumbers ? t : null;
       else row[c] = t === '' ? null : NUMBER_TEXT[t] ?? Number(t);
@@ -539,7 +527,7 @@ export class Orbillum {
       return { error: `line ${X.oi_plan_wasm_row_int(8)}, character ${X.oi_plan_wasm_row_int(9)}: cannot read the header`, rows: [] };
     }
     if (st < 0) return { error: notes.trim().split('\n').pop(), notes, rows: [] };
-    const columns = this.cString(X.oi_plan_wasm_csv_header()).split(',');
+    const columns = this.planColumns;
     const rows = [];
     while (X.oi_plan_wasm_next()) {
       const row = this.readPlanned({ id: this.cString(X.oi_plan_wasm_row_ptr(0)) });
