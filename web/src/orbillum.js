@@ -25,6 +25,8 @@ export const PLAN_COLUMNS = ['id', 'status', 'sun_fraction', 'sun_fraction_atm',
   'e_earth', 'e_moon', 'earth_theta_deg', 'earth_h_km', 'flux_obs', 'mag_v', 'exposure_s',
   'gain', 'snr', 'flags', 'detect_margin_mag', 'e_sky'];
 
+const UTF8 = new TextDecoder();
+
 /* %.17g's texts that are no JavaScript number literals. */
 const NUMBER_TEXT = { inf: Infinity, '-inf': -Infinity, nan: NaN, '-nan': NaN };
 
@@ -79,7 +81,7 @@ export class Orbillum {
     const b = new Uint8Array(this.memory.buffer);
     let e = ptr;
     while (b[e] !== 0) e++;
-    return new TextDecoder().decode(b.subarray(ptr, e));
+    return UTF8.decode(b.subarray(ptr, e));
   }
 
   off(struct, field) {
