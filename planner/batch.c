@@ -1,8 +1,11 @@
 /* SPDX-License-Identifier: MIT */
-/* batch.c: the batch interface of the planner (see batch.h, docs/planner.md).
- * Columns are matched by name (case-insensitive), in any order; unknown
- * columns are ignored with a note. A row that cannot be parsed or computed
- * gets its status and empty numbers; the batch goes on. */
+/* batch.c: the batch interface of the planner (see batch.h, docs/planner.md):
+ * the input file, the blocks of rows and the library's batch calls on them,
+ * the output and the messages on stderr. What a record means (the columns,
+ * by name in any order, the row's errors, its status and flags) is the row
+ * rules' (rows.c), which the viewer's wasm module runs too. A row that
+ * cannot be parsed or computed gets its status and empty numbers; the batch
+ * goes on. */
 #define _POSIX_C_SOURCE 200809L /* isatty, fileno: progress only on a terminal */
 
 #include "batch.h"
@@ -62,7 +65,7 @@ typedef struct batch {
 #define PLAN_EXPOSE_OUTPUTS (OI_EXPOSE_SETTING | OI_EXPOSE_FAINT | OI_EXPOSE_DETECT)
 
 typedef struct pending_row {
-    plan_row_state state;     /* what a row's output takes besides its numbers (rows.h) */         /* status when parsing failed; else filled by the flush */
+    plan_row_state state;     /* status when parsing failed; else filled by the flush */
     oi_model model;
     oi_expose_goal goal;
     const oi_camera *camera;

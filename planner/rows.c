@@ -69,11 +69,11 @@ static int same_nocase(const char *a, const char *b)
 /* Text of column k in the current record: NULL when the column is absent
  * from the header, "" when empty. *short_row is set when the header has the
  * column but the row is too short. */
-static const char *field_of(const plan_rules *b, const csv_reader *r, int k, int *short_row)
+static const char *field_of(const plan_rules *ru, const csv_reader *r, int k, int *short_row)
 {
     const char *s;
-    if (b->col[k] < 0) return NULL;
-    s = csv_field(r, (size_t)b->col[k]);
+    if (ru->col[k] < 0) return NULL;
+    s = csv_field(r, (size_t)ru->col[k]);
     if (s == NULL) {
         *short_row = 1;
         return "";
@@ -166,9 +166,9 @@ static int parse_sky(const char *s, unsigned *sky)
 /* Column k's field as a plain decimal alone (num_parse_plain, then the
  * field's end): 1 with *x, what parse_real gives for it; 0 for any other
  * field (absent, empty, blanks, another form), which parse_real then reads. */
-static int plain_field(const plan_rules *b, const csv_reader *r, int k, double *x)
+static int plain_field(const plan_rules *ru, const csv_reader *r, int k, double *x)
 {
-    const long c = b->col[k];
+    const long c = ru->col[k];
     const char *s;
     char *end;
     if (c < 0 || (size_t)c >= csv_nfields(r)) return 0;
@@ -178,28 +178,28 @@ static int plain_field(const plan_rules *b, const csv_reader *r, int k, double *
 
 /* Read a group of three coordinates; returns 1 given, 0 all empty or the
  * columns absent, -1 after reporting a parse error. */
-static int parse_vec(const plan_rules *b, const csv_reader *r, int k0, oi_real v[3], int required,
+static int parse_vec(const plan_rules *ru, const csv_reader *r, int k0, oi_real v[3], int required,
                      plan_msg *msg)
 {
     int i, given = 0, first_empty = -1, short_row = 0;
     double x0, x1, x2;
-    if (plain_field(b, r, k0, &x0) && plain_field(b, r, k0 + 1, &x1) &&
-        plain_field(b, r, k0 + 2, &x2)) { /* the common row */
+    if (plain_field(ru, r, k0, &x0) && plain_field(ru, r, k0 + 1, &x1) &&
+        plain_field(ru, r, k0 + 2, &x2)) { /* the common row */
         v[0] = (oi_real)x0;
         v[1] = (oi_real)x1;
         v[2] = (oi_real)x2;
         return 1;
     }
     for (i = 0; i < 3; i++) {
-        const char *s = field_of(b, r, k0 + i, &short_row);
+        const char *s = field_of(ru, r, k0 + i, &short_row);
         double x = 0;
         int st;
         if (s == NULL) return 0;
-        st = parse_real(s, csv_field_avail(r, (size_t)b->col[k0 + i]), &x);
+        st = parse_real(s, csv_field_avail(r, (size_t)ru->col[k0 + i]), &x);
         if (st < 0) {
             char detail[96];
             snprintf(detail, sizeof detail, "for %s, got \"%.60s\"", plan_column_name[k0 + i], s);
-            fail(msg, r->rec_line, b->col[k0 + i], "expected a number", detail);
+            fail(msg, r->rec_line, ru->col[k0 + i], "expected a number", detail);
             return -1;
         }
         if (st == 1) {
@@ -211,28 +211,28 @@ static int parse_vec(const plan_rules *b, const csv_reader *r, int k0, oi_real v
     }
     if (given == 3) return 1;
     if (given == 0 && !required) return 0;
-    fail(msg, r->rec_line, b->col[k0 + first_empty],
-              required ? "empty field for a required column:"
-                       : "empty field (give all three coordinates or none):",
-              plan_column_name[k0 + first_empty]);
+    fail(msg, r->rec_line, ru->col[k0 + first_empty],
+         required ? "empty field for a required column:"
+                  : "empty field (give all three coordinates or none):",
+         plan_column_name[k0 + first_empty]);
     return -1;
 }
 
 /* Optional scalar column: 0 absent or empty (value untouched), 1 given,
  * -1 parse error (reported). */
-static int parse_opt(const plan_rules *b, const csv_reader *r, int k, double *value, plan_msg *msg)
+static int parse_opt(const plan_rules *ru, const csv_reader *r, int k, double *value, plan_msg *msg)
 {
     int sr = 0, st;
     const char *s;
-    if (plain_field(b, r, k, value)) return 1;
-    s = field_of(b, r, k, &sr);
+    if (plain_field(ru, r, k, value)) return 1;
+    s = field_of(ru, r, k, &sr);
     if (s == NULL) return 0;
-    st = parse_real(s, csv_field_avail(r, (size_t)b->col[k]), value);
+    st = parse_real(s, csv_field_avail(r, (size_t)ru->col[k]), value);
     if (st == 1) return 0;
     if (st < 0) {
         char detail[96];
         snprintf(detail, sizeof detail, "for %s, got \"%.60s\"", plan_column_name[k], s);
-        fail(msg, r->rec_line, b->col[k], "expected a number", detail);
+        fail(msg, r->rec_line, ru->col[k], "expected a number", detail);
         return -1;
     }
     return 1;
@@ -246,23 +246,23 @@ static int parse_opt(const plan_rules *b, const csv_reader *r, int k, double *va
  * columns into sc. Returns 0, -1 after a parse error (reported: ERR_PARSE),
  * or OI_ERR_SHAPE after reporting an unknown name or, for a facet shape, a
  * quaternion that is not of unit norm. */
-static int parse_target(const plan_rules *b, const csv_reader *r, oi_scene *sc, plan_msg *msg)
+static int parse_target(const plan_rules *ru, const csv_reader *r, oi_scene *sc, plan_msg *msg)
 {
     int short_row = 0, i, given = 0, first_empty = -1;
     double q[4] = {1.0, 0.0, 0.0, 0.0}, norm2 = 0.0;
-    const char *s = field_of(b, r, PLAN_C_TARGET_SHAPE, &short_row);
-    if (s != NULL && shapes_lookup(b->shapes, s, &sc->shape) != 0) {
+    const char *s = field_of(ru, r, PLAN_C_TARGET_SHAPE, &short_row);
+    if (s != NULL && shapes_lookup(ru->shapes, s, &sc->shape) != 0) {
         char names[640], detail[760];
-        shapes_names(b->shapes, names, sizeof names);
+        shapes_names(ru->shapes, names, sizeof names);
         snprintf(detail, sizeof detail, "\"%.60s\"; known: %s%s", s, names,
-                 b->shapes == NULL ? " (more with --shapes FILE)" : "");
-        fail(msg, r->rec_line, b->col[PLAN_C_TARGET_SHAPE], "unknown target_shape", detail);
+                 ru->shapes == NULL ? " (more with --shapes FILE)" : "");
+        fail(msg, r->rec_line, ru->col[PLAN_C_TARGET_SHAPE], "unknown target_shape", detail);
         return OI_ERR_SHAPE;
     }
-    if (b->col[PLAN_C_Q_W] < 0) return 0; /* attitude: identity (oi_scene_defaults) */
+    if (ru->col[PLAN_C_Q_W] < 0) return 0; /* attitude: identity (oi_scene_defaults) */
     for (i = 0; i < 4; i++) {
         double x = 0.0;
-        int st = parse_opt(b, r, PLAN_C_Q_W + i, &x, msg);
+        int st = parse_opt(ru, r, PLAN_C_Q_W + i, &x, msg);
         if (st < 0) return -1;
         if (st == 0 && first_empty < 0) first_empty = i;
         if (st == 1) {
@@ -272,9 +272,9 @@ static int parse_target(const plan_rules *b, const csv_reader *r, oi_scene *sc, 
     }
     if (given == 0) return 0;
     if (given != 4) {
-        fail(msg, r->rec_line, b->col[PLAN_C_Q_W + first_empty],
-                  "empty field (give all four of q_w, q_x, q_y, q_z or none):",
-                  plan_column_name[PLAN_C_Q_W + first_empty]);
+        fail(msg, r->rec_line, ru->col[PLAN_C_Q_W + first_empty],
+             "empty field (give all four of q_w, q_x, q_y, q_z or none):",
+             plan_column_name[PLAN_C_Q_W + first_empty]);
         return -1;
     }
     for (i = 0; i < 4; i++) norm2 += q[i] * q[i];
@@ -282,19 +282,19 @@ static int parse_target(const plan_rules *b, const csv_reader *r, oi_scene *sc, 
     if (sc->shape != NULL && !(fabs(sqrt(norm2) - 1.0) <= Q_NORM_TOLERANCE)) {
         char detail[96];
         snprintf(detail, sizeof detail, "(norm %.17g; off 1 by more than 1e-6)", sqrt(norm2));
-        fail(msg, r->rec_line, b->col[PLAN_C_Q_W], "the attitude quaternion is not a unit one",
-                  detail);
+        fail(msg, r->rec_line, ru->col[PLAN_C_Q_W], "the attitude quaternion is not a unit one",
+             detail);
         return OI_ERR_SHAPE;
     }
     for (i = 0; i < 4; i++) sc->attitude_q[i] = (oi_real)q[i]; /* the library normalises */
     return 0;
 }
 
-int plan_row_read(plan_rules *b, const csv_reader *r, oi_scene *sc, oi_model *model,
+int plan_row_read(plan_rules *ru, const csv_reader *r, oi_scene *sc, oi_model *model,
                   oi_expose_goal *goal, const oi_camera **camera, plan_row_state *row,
                   plan_msg *msg)
 {
-    const oi_camera *cam = b->default_camera;
+    const oi_camera *cam = ru->default_camera;
     int has_moon, st, short_row = 0;
     double x;
     const char *s;
@@ -304,42 +304,42 @@ int plan_row_read(plan_rules *b, const csv_reader *r, oi_scene *sc, oi_model *mo
     row->status_name = PLAN_STATUS_PARSE;
     msg->line = 0;
 
-    if (csv_nfields(r) < b->header_fields) {
+    if (csv_nfields(r) < ru->header_fields) {
         size_t k;
         for (k = 0; k < PLAN_C_COUNT; k++) {
-            if (b->col[k] >= 0 && (size_t)b->col[k] >= csv_nfields(r)) {
+            if (ru->col[k] >= 0 && (size_t)ru->col[k] >= csv_nfields(r)) {
                 char detail[96];
                 snprintf(detail, sizeof detail, "(row has %lu fields, the header %lu): %s",
-                         (unsigned long)csv_nfields(r), (unsigned long)b->header_fields,
+                         (unsigned long)csv_nfields(r), (unsigned long)ru->header_fields,
                          plan_column_name[k]);
-                fail(msg, r->rec_line, b->col[k], "missing field", detail);
+                fail(msg, r->rec_line, ru->col[k], "missing field", detail);
                 return 0;
             }
         }
     }
-    *sc = b->scene_defaults;
+    *sc = ru->scene_defaults;
     memset(model, 0, sizeof *model); /* bytes: blocks are split where they differ */
 
-    if (parse_vec(b, r, PLAN_C_SUN_X, sc->sun_km, 1, msg) < 0) return 0;
-    if (parse_vec(b, r, PLAN_C_TARGET_X, sc->target_km, 1, msg) < 0) return 0;
-    has_moon = parse_vec(b, r, PLAN_C_MOON_X, sc->moon_km, 0, msg);
+    if (parse_vec(ru, r, PLAN_C_SUN_X, sc->sun_km, 1, msg) < 0) return 0;
+    if (parse_vec(ru, r, PLAN_C_TARGET_X, sc->target_km, 1, msg) < 0) return 0;
+    has_moon = parse_vec(ru, r, PLAN_C_MOON_X, sc->moon_km, 0, msg);
     if (has_moon < 0) return 0;
     sc->has_moon = has_moon; /* the Moon occults the Sun whatever the terms */
-    st = parse_vec(b, r, PLAN_C_OBSERVER_X, sc->observer_km, 0, msg);
+    st = parse_vec(ru, r, PLAN_C_OBSERVER_X, sc->observer_km, 0, msg);
     if (st < 0) return 0;
     sc->has_observer = st;
     /* velocities (km/s): absent or empty, at rest (oi_scene_defaults) */
-    if (parse_vec(b, r, PLAN_C_TARGET_VX, sc->target_vel_km_s, 0, msg) < 0) return 0;
-    if (parse_vec(b, r, PLAN_C_OBSERVER_VX, sc->observer_vel_km_s, 0, msg) < 0) return 0;
+    if (parse_vec(ru, r, PLAN_C_TARGET_VX, sc->target_vel_km_s, 0, msg) < 0) return 0;
+    if (parse_vec(ru, r, PLAN_C_OBSERVER_VX, sc->observer_vel_km_s, 0, msg) < 0) return 0;
 
     terms = OI_TERM_SUN | OI_TERM_EARTH | (has_moon ? OI_TERM_MOON : 0u);
-    s = field_of(b, r, PLAN_C_TERMS, &short_row);
+    s = field_of(ru, r, PLAN_C_TERMS, &short_row);
     if (s != NULL && s[0] != '\0') {
         if (parse_terms(s, &terms) != 0) {
             char detail[128];
             snprintf(detail, sizeof detail, "got \"%.60s\"; expected sun, earth, moon, sky "
                                             "joined by '+', or all", s);
-            fail(msg, r->rec_line, b->col[PLAN_C_TERMS], "bad terms:", detail);
+            fail(msg, r->rec_line, ru->col[PLAN_C_TERMS], "bad terms:", detail);
             return 0;
         }
         if (terms & TERMS_ALL_AVAILABLE) {
@@ -347,60 +347,61 @@ int plan_row_read(plan_rules *b, const csv_reader *r, oi_scene *sc, oi_model *mo
                     (has_moon ? OI_TERM_MOON : 0u);
         }
         if ((terms & OI_TERM_MOON) && !has_moon) {
-            fail(msg, r->rec_line, b->col[PLAN_C_TERMS],
-                      "terms include moon but moon_x, moon_y, moon_z are not given", NULL);
+            fail(msg, r->rec_line, ru->col[PLAN_C_TERMS],
+                 "terms include moon but moon_x, moon_y, moon_z are not given", NULL);
             return 0;
         }
     }
     sc->terms = terms;
 
     x = (double)sc->earth_albedo;
-    if ((st = parse_opt(b, r, PLAN_C_EARTH_ALBEDO, &x, msg)) < 0) return 0;
+    if ((st = parse_opt(ru, r, PLAN_C_EARTH_ALBEDO, &x, msg)) < 0) return 0;
     sc->earth_albedo = (oi_real)x;
     x = (double)sc->target_albedo;
-    if ((st = parse_opt(b, r, PLAN_C_TARGET_ALBEDO, &x, msg)) < 0) return 0;
+    if ((st = parse_opt(ru, r, PLAN_C_TARGET_ALBEDO, &x, msg)) < 0) return 0;
     sc->target_albedo = (oi_real)x;
     x = (double)sc->target_radius_m;
-    if ((st = parse_opt(b, r, PLAN_C_TARGET_RADIUS, &x, msg)) < 0) return 0;
+    if ((st = parse_opt(ru, r, PLAN_C_TARGET_RADIUS, &x, msg)) < 0) return 0;
     sc->target_radius_m = (oi_real)x;
     x = 1;
-    if ((st = parse_opt(b, r, PLAN_C_ATMOSPHERE, &x, msg)) < 0) return 0;
+    if ((st = parse_opt(ru, r, PLAN_C_ATMOSPHERE, &x, msg)) < 0) return 0;
     if (x != 0 && x != 1) {
-        fail(msg, r->rec_line, b->col[PLAN_C_ATMOSPHERE],
-                  "atmosphere must be 1 (default) or 0 (as if the Earth had none)", NULL);
+        fail(msg, r->rec_line, ru->col[PLAN_C_ATMOSPHERE],
+             "atmosphere must be 1 (default) or 0 (as if the Earth had none)", NULL);
         return 0;
     }
     model->no_atmosphere = x == 0;
 
     /* the Earth's shape: sphere (default, also an empty field) or wgs84 */
-    s = field_of(b, r, PLAN_C_EARTH_SHAPE, &short_row);
+    s = field_of(ru, r, PLAN_C_EARTH_SHAPE, &short_row);
     if (s != NULL && s[0] != '\0') {
         if (same_nocase(s, "wgs84")) {
             model->earth_shape = OI_EARTH_WGS84;
         } else if (same_nocase(s, "sphere")) {
             model->earth_shape = OI_EARTH_SPHERE;
         } else {
-            fail(msg, r->rec_line, b->col[PLAN_C_EARTH_SHAPE],
-                      "earth_shape must be sphere (default) or wgs84; got", s);
+            fail(msg, r->rec_line, ru->col[PLAN_C_EARTH_SHAPE],
+                 "earth_shape must be sphere (default) or wgs84; got", s);
             return 0;
         }
     }
 
     /* the band of sun_fraction_atm and e_sun: V (default, also an empty
      * field) or total (total solar irradiance) */
-    s = field_of(b, r, PLAN_C_BAND, &short_row);
+    s = field_of(ru, r, PLAN_C_BAND, &short_row);
     if (s != NULL && s[0] != '\0') {
         if (same_nocase(s, "total")) {
             model->band = OI_BAND_TOTAL;
         } else if (same_nocase(s, "v")) {
             model->band = OI_BAND_V;
         } else {
-            fail(msg, r->rec_line, b->col[PLAN_C_BAND], "band must be V (default) or total; got", s);
+            fail(msg, r->rec_line, ru->col[PLAN_C_BAND], "band must be V (default) or total; got",
+                 s);
             return 0;
         }
     }
 
-    st = parse_target(b, r, sc, msg);
+    st = parse_target(ru, r, sc, msg);
     if (st == -1) return 0;
     if (st < 0) {
         row->status = st;
@@ -410,7 +411,7 @@ int plan_row_read(plan_rules *b, const csv_reader *r, oi_scene *sc, oi_model *mo
 
     /* the albedo model: uniform (default), knocke (needs epoch_jd) or map
      * (needs --albedo-map, epoch_jd and earth_rotation_deg) */
-    s = field_of(b, r, PLAN_C_ALBEDO_MODEL, &short_row);
+    s = field_of(ru, r, PLAN_C_ALBEDO_MODEL, &short_row);
     if (s != NULL && s[0] != '\0' && !same_nocase(s, "uniform")) {
         int has_epoch, has_rotation;
         double jd = 0, rot = 0;
@@ -419,62 +420,62 @@ int plan_row_read(plan_rules *b, const csv_reader *r, oi_scene *sc, oi_model *mo
         } else if (same_nocase(s, "map")) {
             model->albedo_model = OI_ALBEDO_MAP;
         } else {
-            fail(msg, r->rec_line, b->col[PLAN_C_ALBEDO_MODEL],
-                      "albedo_model must be uniform, knocke or map; got", s);
+            fail(msg, r->rec_line, ru->col[PLAN_C_ALBEDO_MODEL],
+                 "albedo_model must be uniform, knocke or map; got", s);
             return 0;
         }
-        if ((has_epoch = parse_opt(b, r, PLAN_C_EPOCH_JD, &jd, msg)) < 0) return 0;
-        if ((has_rotation = parse_opt(b, r, PLAN_C_EARTH_ROTATION_DEG, &rot, msg)) < 0) return 0;
+        if ((has_epoch = parse_opt(ru, r, PLAN_C_EPOCH_JD, &jd, msg)) < 0) return 0;
+        if ((has_rotation = parse_opt(ru, r, PLAN_C_EARTH_ROTATION_DEG, &rot, msg)) < 0) return 0;
         if (!has_epoch) {
-            fail(msg, r->rec_line, b->col[PLAN_C_ALBEDO_MODEL],
-                      "albedo_model knocke and map need epoch_jd (Julian date, UTC)", NULL);
+            fail(msg, r->rec_line, ru->col[PLAN_C_ALBEDO_MODEL],
+                 "albedo_model knocke and map need epoch_jd (Julian date, UTC)", NULL);
             return 0;
         }
         sc->epoch_jd = (oi_real)jd;
         if (model->albedo_model == OI_ALBEDO_MAP) {
-            if (b->albedo_map == NULL) {
-                fail(msg, r->rec_line, b->col[PLAN_C_ALBEDO_MODEL],
-                          "albedo_model map needs --albedo-map FILE", NULL);
+            if (ru->albedo_map == NULL) {
+                fail(msg, r->rec_line, ru->col[PLAN_C_ALBEDO_MODEL],
+                     "albedo_model map needs --albedo-map FILE", NULL);
                 return 0;
             }
             if (!has_rotation) {
-                fail(msg, r->rec_line, b->col[PLAN_C_ALBEDO_MODEL],
-                          "albedo_model map needs earth_rotation_deg (the Greenwich "
-                          "meridian's angle from the frame's x axis)", NULL);
+                fail(msg, r->rec_line, ru->col[PLAN_C_ALBEDO_MODEL],
+                     "albedo_model map needs earth_rotation_deg (the Greenwich "
+                     "meridian's angle from the frame's x axis)", NULL);
                 return 0;
             }
             /* degrees to radians: the range check is the library's */
             sc->earth_rotation_rad = (oi_real)(rot * (3.14159265358979323846 / 180.0));
-            model->albedo_map = b->albedo_map->values;
-            model->albedo_map_n_lat = b->albedo_map->n_lat;
-            model->albedo_map_n_lon = b->albedo_map->n_lon;
+            model->albedo_map = ru->albedo_map->values;
+            model->albedo_map_n_lat = ru->albedo_map->n_lat;
+            model->albedo_map_n_lon = ru->albedo_map->n_lon;
         }
     }
 
     memset(goal, 0, sizeof *goal);
-    s = field_of(b, r, PLAN_C_SKY, &short_row);
+    s = field_of(ru, r, PLAN_C_SKY, &short_row);
     if (s != NULL && parse_sky(s, &goal->sky) < 0) {
-        fail(msg, r->rec_line, b->col[PLAN_C_SKY],
-                  "sky must be none, zodiacal, moon or all, joined by +; got", s);
+        fail(msg, r->rec_line, ru->col[PLAN_C_SKY],
+             "sky must be none, zodiacal, moon or all, joined by +; got", s);
         return 0;
     }
     /* sensor temperature (deg C): absent or empty, the camera's dark current as it stands */
-    if ((st = parse_opt(b, r, PLAN_C_SENSOR_TEMP, &x, msg)) < 0) return 0;
+    if ((st = parse_opt(ru, r, PLAN_C_SENSOR_TEMP, &x, msg)) < 0) return 0;
     if (st == 1) {
         goal->has_sensor_temp = 1u;
         goal->sensor_temp_c = (oi_real)x;
     }
 
-    s = field_of(b, r, PLAN_C_CAMERA, &short_row);
+    s = field_of(ru, r, PLAN_C_CAMERA, &short_row);
     if (s != NULL && s[0] != '\0') {
         /* rows of one pass name one camera: the last name's look-up again */
-        if (b->last_camera != NULL && strcmp(s, b->last_camera_name) == 0) {
-            cam = b->last_camera;
+        if (ru->last_camera != NULL && strcmp(s, ru->last_camera_name) == 0) {
+            cam = ru->last_camera;
         } else {
             cam = oi_camera_find(s);
-            if (cam != NULL && strlen(s) < sizeof b->last_camera_name) {
-                memcpy(b->last_camera_name, s, strlen(s) + 1);
-                b->last_camera = cam;
+            if (cam != NULL && strlen(s) < sizeof ru->last_camera_name) {
+                memcpy(ru->last_camera_name, s, strlen(s) + 1);
+                ru->last_camera = cam;
             }
         }
         if (cam == NULL) {
@@ -485,7 +486,7 @@ int plan_row_read(plan_rules *b, const csv_reader *r, oi_scene *sc, oi_model *mo
                 n += (size_t)snprintf(detail + n, sizeof detail - n, " %s",
                                       oi_camera_builtin(i)->name);
             }
-            fail(msg, r->rec_line, b->col[PLAN_C_CAMERA], "unknown camera", detail);
+            fail(msg, r->rec_line, ru->col[PLAN_C_CAMERA], "unknown camera", detail);
             row->status = OI_ERR_CAMERA;
             row->status_name = oi_status_name(OI_ERR_CAMERA);
             return 0;
@@ -562,7 +563,7 @@ static void note(char *notes, size_t size, size_t *len, const char *fmt, ...)
     }
 }
 
-int plan_header(plan_rules *b, const csv_reader *r, char *notes, size_t note_size)
+int plan_header(plan_rules *ru, const csv_reader *r, char *notes, size_t note_size)
 {
     size_t i, len = 0;
     int k, missing = 0;
@@ -574,21 +575,21 @@ int plan_header(plan_rules *b, const csv_reader *r, char *notes, size_t note_siz
                                     {PLAN_C_OBSERVER_VX, PLAN_C_OBSERVER_VY, PLAN_C_OBSERVER_VZ}};
 
     if (note_size > 0) notes[0] = '\0';
-    for (k = 0; k < PLAN_C_COUNT; k++) b->col[k] = -1;
-    b->header_fields = csv_nfields(r);
+    for (k = 0; k < PLAN_C_COUNT; k++) ru->col[k] = -1;
+    ru->header_fields = csv_nfields(r);
     for (i = 0; i < csv_nfields(r); i++) {
         const char *name = csv_field(r, i);
         int found = 0;
         for (k = 0; k < PLAN_C_COUNT; k++) {
             if (!same_nocase(name, plan_column_name[k])) continue;
             found = 1;
-            if (b->col[k] >= 0) {
+            if (ru->col[k] >= 0) {
                 note(notes, note_size, &len, "line %lu: column '%s' appears twice "
                                               "(columns %ld and %lu)\n",
-                     r->rec_line, plan_column_name[k], b->col[k] + 1, (unsigned long)i + 1);
+                     r->rec_line, plan_column_name[k], ru->col[k] + 1, (unsigned long)i + 1);
                 return -1;
             }
-            b->col[k] = (long)i;
+            ru->col[k] = (long)i;
         }
         if (!found) {
             note(notes, note_size, &len, "note: ignoring unknown column %lu '%.60s'\n",
@@ -596,15 +597,15 @@ int plan_header(plan_rules *b, const csv_reader *r, char *notes, size_t note_siz
         }
     }
     for (k = 0; k < (int)(sizeof required / sizeof required[0]); k++) {
-        if (b->col[required[k]] < 0) {
+        if (ru->col[required[k]] < 0) {
             note(notes, note_size, &len, "line %lu: missing required column '%s'\n",
                  r->rec_line, plan_column_name[required[k]]);
             missing = 1;
         }
     }
     for (k = 0; k < (int)(sizeof groups / sizeof groups[0]); k++) {
-        int n = (b->col[groups[k][0]] >= 0) + (b->col[groups[k][1]] >= 0) +
-                (b->col[groups[k][2]] >= 0);
+        int n = (ru->col[groups[k][0]] >= 0) + (ru->col[groups[k][1]] >= 0) +
+                (ru->col[groups[k][2]] >= 0);
         if (n != 0 && n != 3) {
             note(notes, note_size, &len, "line %lu: columns %s, %s, %s must come together\n",
                  r->rec_line, plan_column_name[groups[k][0]], plan_column_name[groups[k][1]],
@@ -614,7 +615,7 @@ int plan_header(plan_rules *b, const csv_reader *r, char *notes, size_t note_siz
     }
     {
         int n = 0;
-        for (k = PLAN_C_Q_W; k <= PLAN_C_Q_Z; k++) n += b->col[k] >= 0;
+        for (k = PLAN_C_Q_W; k <= PLAN_C_Q_Z; k++) n += ru->col[k] >= 0;
         if (n != 0 && n != 4) {
             note(notes, note_size, &len, "line %lu: columns q_w, q_x, q_y, q_z must come "
                                           "together\n", r->rec_line);
