@@ -5,7 +5,8 @@
 #   make test-wasm     the wasm module against the native build, bit for bit: the shipped
 #                      cases (through the JavaScript module, vs build/oi-plan --csv) and every
 #                      double-precision stability vector (the same evaluators, both builds; and
-#                      through the JavaScript module); the page's picture against the runtime's flux
+#                      through the JavaScript module); the page's picture against the runtime's flux;
+#                      the planner's CSV reader over a text in memory against it over a file
 #   make viewer        build/viewer/: the static page (three.js bundled, no network at run time)
 #   make test-viewer   the page in headless Chromium (Playwright); skips, saying so, when no
 #                      browser can be installed
@@ -95,7 +96,15 @@ $(WASM_DIR)/stab_dump.wasm: $(STAB_DUMP_SRC) $(WASM_OBJ) $(wildcard tests/stabil
 	  -Iinclude -Isrc -Itables -Itests $(STAB_DUMP_SRC) \
 	  $(WASM_OBJ) -lm -o $@
 
-test-wasm: wasm $(PLAN) $(WASM_DIR)/stab_dump $(WASM_DIR)/stab_dump.wasm ## wasm vs native, bit for bit
+# The planner's CSV reader over a text in memory (planCsv's) against the same reader over a file
+# (oi-plan's), natively: web/wasm/csv_mem_check.c.
+CSV_MEM_CHECK_SRC := web/wasm/csv_mem_check.c planner/csv_read.c planner/csv_mem.c
+$(WASM_DIR)/csv_mem_check: $(CSV_MEM_CHECK_SRC) planner/csv_read.h
+	@mkdir -p $(dir $@)
+	$(CC) $(TEST_CFLAGS) -Iplanner $(CSV_MEM_CHECK_SRC) -o $@
+
+test-wasm: wasm $(PLAN) $(WASM_DIR)/stab_dump $(WASM_DIR)/stab_dump.wasm $(WASM_DIR)/csv_mem_check ## wasm vs native, bit for bit
+	$(WASM_DIR)/csv_mem_check
 	$(NODE) --test tests/browser/test_wasm.mjs tests/browser/test_render.mjs
 
 # ---- the page
