@@ -172,7 +172,9 @@ function update() {
   if (!row) return;
   $('time-label').textContent = `${row.id}   (row ${state.index + 1} of ${state.rows.length})`;
   if (!row.scene) {
-    $('message').textContent = `row ${state.index + 1}: ${row.planned ? row.planned.status : 'no scene'}`;
+    // the planner's status and, where oi-plan prints one, its message for the row
+    const p = row.planned;
+    $('message').textContent = `row ${state.index + 1}: ${p ? p.status + (p.message ? ` (${p.message})` : '') : 'no scene'}`;
     return;
   }
   const c = compute(row);
