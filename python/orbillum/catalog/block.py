@@ -19,7 +19,7 @@ import orbillum
 
 from . import sky
 
-#: the planner's degrees (planner/output.c): the same double product
+#: the planner's degrees (OUT_RAD_TO_DEG, planner/output.h): the same double product
 RAD_TO_DEG = 180.0 / 3.14159265358979323846
 
 #: status of a row whose object sgp4 could not propagate (decayed, or too far from its epoch)
