@@ -114,21 +114,33 @@ static int put(csv_reader *r, char c)
     return CSV_RECORD;
 }
 
+/* Room for n bytes of record text and nf field starts (defined below). */
+static int reserve(csv_reader *r, size_t n, size_t nf);
+
 /* The run of plain bytes (none of , LF CR NUL) that follows in the block,
- * appended to the record when the record buffer holds it without growing:
- * what put would do byte by byte, in one copy. Returns 1 if copied. */
+ * appended to the record in one
+ * copy: what put would do byte by byte. The record buffer grows to hold it,
+ * up to its limit (the bytes past the limit are left for put, which reports
+ * CSV_TOO_LONG at the same byte). Each byte is scanned once: the reader's
+ * time is linear in the record's length. Returns 1 if bytes were copied. */
 static int plain_run(csv_reader *r)
 {
     const unsigned char *p = r->in;
     size_t i = r->in_pos, k;
-    if (p == NULL) return 0;
+    if (p == NULL || r->byte_by_byte) return 0;
     while (i < r->in_len && p[i] != ',' && p[i] != '\n' && p[i] != '\r' && p[i] != 0) i++;
     k = i - r->in_pos;
-    if (k == 0 || r->len + k > r->cap) return 0;
+    if (k == 0) return 0;
+    if (r->len + k > r->cap) {
+        const size_t max = CSV_MAX_RECORD + 16;
+        (void)reserve(r, r->len + k < max ? r->len + k : max, 0);
+        if (r->len + k > r->cap) k = r->cap > r->len ? r->cap - r->len : 0;
+        if (k == 0) return 0;
+    }
     memcpy(r->buf + r->len, p + r->in_pos, k);
     r->len += k;
     r->col += k;
-    r->in_pos = i;
+    r->in_pos += k;
     return 1;
 }
 

@@ -3,7 +3,8 @@
  * its whole-line path gives, record for record, what its byte-by-byte path
  * gives (status, fields, line numbers, error positions) on random texts of
  * the bytes that matter (separators, blanks, quotes, CR, LF, NUL), on texts
- * longer than one read block, and on hand-written cases. */
+ * longer than one read block, and on hand-written cases; a record near the
+ * record limit read in linear time. */
 #define _POSIX_C_SOURCE 200809L /* fmemopen */
 #include <stdarg.h>
 #include <stddef.h>
@@ -13,6 +14,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "../../planner/csv_read.c"
 
@@ -174,6 +176,79 @@ static void test_chunk_edges(void **state)
     assert_int_equal(failures, 0);
 }
 
+/* Reads text (n bytes) to its end in the given mode; returns the CPU
+ * seconds taken and, in st[] (up to 8), the results, in lines[] each
+ * record's rec_line, in f0[] its first field's first byte ('-' for none). */
+static double read_all(const char *text, size_t n, int byte_by_byte, int *st,
+                       unsigned long *lines, char *f0, int *count)
+{
+    FILE *fp = fmemopen((void *)text, n, "rb");
+    csv_reader r;
+    clock_t t0;
+    int k = 0, s;
+    assert_non_null(fp);
+    csv_init(&r, fp);
+    r.byte_by_byte = byte_by_byte;
+    t0 = clock();
+    while ((s = csv_next(&r)) != CSV_END && s != CSV_IO && s != CSV_NOMEM && k < 8) {
+        st[k] = s;
+        lines[k] = r.rec_line;
+        f0[k] = s == CSV_RECORD && r.nfields > 0 ? csv_field(&r, 0)[0] : '-';
+        k++;
+    }
+    *count = k;
+    t0 = clock() - t0;
+    csv_free(&r);
+    fclose(fp);
+    return (double)t0 / CLOCKS_PER_SEC;
+}
+
+static void test_long_records_in_linear_time(void **state)
+{
+    /* records of 1 MiB less a little, one field or many, unquoted or
+     * quoted, then a short one: each read in well under a second (the reader
+     * rescanned the rest of its block per byte past the first 64 KiB: 1 to
+     * 5 s), the same fields both ways */
+    const size_t n = CSV_MAX_RECORD - 64;
+    char *text = malloc(n + 16);
+    int shape;
+    (void)state;
+    failures = 0;
+    assert_non_null(text);
+    for (shape = 0; shape < 4; shape++) {
+        int st[8], count, way;
+        unsigned long lines[8];
+        char f0[8];
+        size_t i;
+        for (i = 0; i < n; i++) text[i] = (char)('0' + (char)(i % 10));
+        if (shape == 1)
+            for (i = 100; i < n; i += 1000) text[i] = ',';
+        if (shape == 2) {
+            text[0] = '"';
+            text[n - 2] = '"';
+        }
+        if (shape == 3)
+            for (i = 5; i < n; i += 7) text[i] = ' ';
+        text[n - 1] = '\n';
+        memcpy(text + n, "7,8\n", 4);
+        for (way = 0; way < 2; way++) {
+            const double sec = read_all(text, n + 4, way, st, lines, f0, &count);
+            if (sec > 0.25) {
+                print_error("shape %d (byte by byte %d): %.3f s\n", shape, way, sec);
+                failures++;
+            }
+            assert_int_equal(count, 2);
+            assert_int_equal(st[0], CSV_RECORD);
+            assert_int_equal(st[1], CSV_RECORD);
+            assert_int_equal(lines[1], 2);
+            assert_int_equal(f0[1], '7');
+        }
+        check_same(text, n + 4);
+    }
+    free(text);
+    assert_int_equal(failures, 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -181,6 +256,7 @@ int main(void)
         cmocka_unit_test(test_random_texts),
         cmocka_unit_test(test_across_read_blocks),
         cmocka_unit_test(test_chunk_edges),
+        cmocka_unit_test(test_long_records_in_linear_time),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,0 +1,37 @@
+# SPDX-License-Identifier: MIT
+"""The planner's reader on hostile input (issue 28): a record near the 1 MiB
+limit read in linear time."""
+import re
+import resource
+import subprocess
+
+import pytest
+
+from _oi_plan import PLAN, ROOT, run
+from test_planner import AU, LIT, parse, run_csv, table
+
+HEAD = "id,sun_x,sun_y,sun_z,target_x,target_y,target_z\n"
+GOOD = f"ok,{AU},0,0,0,7000,0\n"
+LIMIT = (1 << 20) + 16  # the reader's record buffer (CSV_MAX_RECORD + 16)
+
+
+def _cpu_seconds(data):
+    """oi-plan --csv - on data: (return code, stdout, child CPU seconds)."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    p = subprocess.run([str(PLAN), "--csv", "-"], input=data, capture_output=True, timeout=60)
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    return p.returncode, p.stdout.decode(), cpu
+
+
+def test_record_of_a_mebibyte_is_read_in_linear_time():
+    """An id of 1 MiB less a little (a record longer than the 64 KiB read
+    block): planned with the next row in well under a second (the reader
+    rescanned the rest of its block per byte: about a second to five)."""
+    big = "A" * ((1 << 20) - 200)
+    code, out, cpu = _cpu_seconds((HEAD + big + GOOD[2:] + GOOD).encode())
+    assert code == 0
+    lines = out.splitlines()
+    assert len(lines) == 3
+    assert lines[1].startswith(big + ",OK,") and lines[2].startswith("ok,OK,")
+    assert cpu < 0.4, f"{cpu:.2f} s of CPU"
