@@ -164,13 +164,40 @@ static int end_field(csv_reader *r, size_t field_start, size_t keep)
     return CSV_RECORD;
 }
 
-/* Skip to the end of the current physical line. */
-static void skip_line(csv_reader *r)
+/* Where skip_record starts: at a field's start, in unquoted text (or text
+ * after a closing quote), inside a quoted field's quotes. */
+enum { SKIP_FIELD_START, SKIP_TEXT, SKIP_QUOTED };
+
+/* After an error inside a record: the rest of the record read as
+ * read_record reads it, without keeping it, to the line end that ends the
+ * record (a line break inside quotes does not): the next record starts
+ * there, never inside a quoted field. */
+static void skip_record(csv_reader *r, int where)
 {
     int c;
-    do {
-        c = get(r);
-    } while (c != '\n' && c != END_OF_INPUT);
+    for (;;) {
+        if (where == SKIP_QUOTED) {
+            c = get(r);
+            if (c == END_OF_INPUT) return;
+            if (c != '"') continue;
+            c = get(r);
+            if (c == '"') continue; /* "" is a quote */
+            /* closing quote: c follows it */
+        } else if (where == SKIP_FIELD_START) {
+            do {
+                c = get(r);
+            } while (c == ' ' || c == '\t');
+            if (c == '"') {
+                where = SKIP_QUOTED;
+                continue;
+            }
+        } else {
+            c = get(r);
+        }
+        while (c != ',' && c != '\n' && c != END_OF_INPUT) c = get(r);
+        if (c != ',') return;
+        where = SKIP_FIELD_START;
+    }
 }
 
 static void mark(csv_reader *r)
@@ -217,7 +244,7 @@ static int read_record(csv_reader *r, int *blank)
                 }
                 if ((st = put(r, (char)c)) != CSV_RECORD) {
                     mark(r);
-                    if (st == CSV_TOO_LONG && c != '\n') skip_line(r);
+                    if (st == CSV_TOO_LONG) skip_record(r, SKIP_QUOTED);
                     return st;
                 }
             }
@@ -225,7 +252,7 @@ static int read_record(csv_reader *r, int *blank)
             while (c == ' ' || c == '\t') c = get(r);
             if (c != ',' && c != '\n' && c != END_OF_INPUT) {
                 mark(r);
-                skip_line(r);
+                skip_record(r, SKIP_TEXT);
                 return CSV_BAD_QUOTE;
             }
         } else {
@@ -237,7 +264,7 @@ static int read_record(csv_reader *r, int *blank)
                 }
                 if ((st = put(r, (char)c)) != CSV_RECORD) {
                     mark(r);
-                    if (st == CSV_TOO_LONG) skip_line(r);
+                    if (st == CSV_TOO_LONG) skip_record(r, SKIP_TEXT);
                     return st;
                 }
                 (void)plain_run(r);
@@ -246,7 +273,7 @@ static int read_record(csv_reader *r, int *blank)
         }
         if ((st = end_field(r, field_start, keep)) != CSV_RECORD) {
             mark(r);
-            if (st == CSV_TOO_LONG && c != '\n' && c != END_OF_INPUT) skip_line(r);
+            if (st == CSV_TOO_LONG && c == ',') skip_record(r, SKIP_FIELD_START);
             return st;
         }
         if (c == ',') {
@@ -414,7 +441,7 @@ int csv_next(csv_reader *r)
             int c2 = c1 == 0xBB ? next_byte(r) : EOF;
             if (!(c1 == 0xBB && c2 == 0xBF)) {
                 /* not a BOM: only one byte can be pushed back; reject */
-                r->err_line = 1;
+                r->rec_line = r->err_line = 1;
                 r->err_col = 1;
                 return CSV_BAD_BYTE;
             }

@@ -5,7 +5,8 @@
  * for a quote and line breaks allowed inside quotes, LF, CRLF or CR line
  * ends, a UTF-8 byte-order mark skipped, empty or blank lines skipped,
  * spaces and tabs around unquoted fields trimmed. A record longer than
- * CSV_MAX_RECORD bytes is rejected (and skipped) instead of exhausting
+ * CSV_MAX_RECORD bytes is rejected (and skipped to its end, quotes
+ * honoured) instead of exhausting
  * memory. Time linear in the input's length, whatever the records' lengths.
  */
 #ifndef OI_PLAN_CSV_READ_H
@@ -21,7 +22,8 @@
 enum csv_result {
     CSV_RECORD = 0,   /* a record was read */
     CSV_END = 1,      /* end of input, no record */
-    CSV_TOO_LONG = 2, /* record longer than CSV_MAX_RECORD: skipped to its line end */
+    CSV_TOO_LONG = 2, /* record longer than CSV_MAX_RECORD: skipped to its end (the line
+                         end outside quotes) */
     CSV_BAD_QUOTE = 3,/* text after a closing quote, or a quote never closed */
     CSV_BAD_BYTE = 4, /* a NUL byte in the record */
     CSV_IO = 5,       /* read error */
@@ -32,8 +34,8 @@ typedef struct csv_reader {
     FILE *fp;
     unsigned long line;       /* physical line of the next byte (1-based) */
     unsigned long col;        /* column (byte in line, 1-based) of the next byte */
-    unsigned long rec_line;   /* line where the last record started */
-    unsigned long err_line;   /* where the last error was found */
+    unsigned long rec_line;   /* line where the last record (or failed record) started */
+    unsigned long err_line;   /* where the last error was found (rec_line or after) */
     unsigned long err_col;
     char *buf;                /* field text, each NUL-terminated */
     size_t len, cap;

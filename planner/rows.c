@@ -542,9 +542,13 @@ const char *plan_row_id(const plan_rules *rules, const csv_reader *r, int st, un
 
 void plan_csv_error(const csv_reader *r, int st, plan_msg *msg)
 {
-    char where[48];
-    snprintf(where, sizeof where, "(at character %lu of the line)", r->err_col);
-    fail(msg, r->err_line, -1, csv_result_text(st), where);
+    /* the line where the record began; where the problem is, if later */
+    char where[80];
+    if (r->err_line == r->rec_line)
+        snprintf(where, sizeof where, "(at character %lu of the line)", r->err_col);
+    else
+        snprintf(where, sizeof where, "(at line %lu, character %lu)", r->err_line, r->err_col);
+    fail(msg, r->rec_line, -1, csv_result_text(st), where);
 }
 
 /* A line appended to plan_header's notes (dropped when it does not fit). */

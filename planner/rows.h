@@ -110,7 +110,8 @@ const char *plan_row_id(const plan_rules *rules, const csv_reader *r, int st, un
                         char *idbuf);
 
 /* The message of a record csv_next could not read (st, neither CSV_END,
- * CSV_IO nor CSV_NOMEM): the row is then PLAN_STATUS_PARSE. */
+ * CSV_IO nor CSV_NOMEM), at the line where the record began: the row is then
+ * PLAN_STATUS_PARSE. */
 void plan_csv_error(const csv_reader *r, int st, plan_msg *msg);
 
 /* Record r (the header's columns) into *sc, *model, *goal, *camera: returns

@@ -4,7 +4,8 @@
  * gives (status, fields, line numbers, error positions) on random texts of
  * the bytes that matter (separators, blanks, quotes, CR, LF, NUL), on texts
  * longer than one read block, and on hand-written cases; a record near the
- * record limit read in linear time. */
+ * record limit read in linear time; after a record too long or a bad quote
+ * the next record read from its own start (never inside quotes). */
 #define _POSIX_C_SOURCE 200809L /* fmemopen */
 #include <stdarg.h>
 #include <stddef.h>
@@ -82,7 +83,9 @@ static void test_hand_written(void **state)
         "",
         "\n",
         "a",
-        "1,2\n3,4\n5,6"};
+        "1,2\n3,4\n5,6",
+        "\"x\"y,\"a\nb\",1\n3,4\n",
+        "\"x\"y\"a\nb\",1\n3,4\n"};
     size_t i;
     (void)state;
     failures = 0;
@@ -249,6 +252,76 @@ static void test_long_records_in_linear_time(void **state)
     assert_int_equal(failures, 0);
 }
 
+static void test_too_long_resumes_after_the_record(void **state)
+{
+    /* a quoted field that reaches the record limit at, just before or just
+     * after a line break inside its quotes, and the same unquoted (limit
+     * hit at a comma): the record is skipped to its end (quotes honoured)
+     * and reported at the line where it began; the next record is the one
+     * after it (the reader resumed inside the quotes: rows that are not
+     * records) */
+    const size_t lim = CSV_MAX_RECORD + 16; /* the record buffer's bytes */
+    char *text = malloc(lim + 64);
+    int d, quoted;
+    (void)state;
+    failures = 0;
+    assert_non_null(text);
+    for (quoted = 0; quoted < 2; quoted++) {
+        for (d = -6; d <= 3; d++) {
+            int st[8], count, way;
+            unsigned long lines[8];
+            char f0[8];
+            size_t len = 0, k = (size_t)((long)lim + d);
+            memcpy(text, "a,b\n", 4);
+            len = 4;
+            if (quoted) text[len++] = '"';
+            memset(text + len, 'x', k);
+            len += k;
+            {
+                const char *tail = quoted ? "\ny\n\"\"z,\n\",2\n3,4\n" : ",y,\"q\nr\"\n3,4\n";
+                memcpy(text + len, tail, strlen(tail));
+                len += strlen(tail);
+            }
+            for (way = 0; way < 2; way++) {
+                (void)read_all(text, len, way, st, lines, f0, &count);
+                if (count != 3)
+                    print_error("quoted %d, d %d, way %d: %d %d %d %d, lines %lu %lu %lu %lu\n",
+                                quoted, d, way, st[0], st[1], st[2], st[3], lines[0], lines[1],
+                                lines[2], lines[3]);
+                assert_int_equal(count, 3);
+                assert_int_equal(st[0], CSV_RECORD);
+                assert_int_equal(st[1], CSV_TOO_LONG);
+                assert_int_equal(lines[1], 2);
+                assert_int_equal(st[2], CSV_RECORD);
+                assert_int_equal(f0[2], '3');
+                assert_int_equal(lines[2], quoted ? 6 : 4);
+            }
+        }
+    }
+    free(text);
+    assert_int_equal(failures, 0);
+}
+
+static void test_bad_quote_resumes_after_the_record(void **state)
+{
+    /* text after a closing quote, then a quoted field with a line break: the
+     * record ends after that field, not at the line break */
+    static const char text[] = "\"x\"y,\"a\nb,c\",1\n3,4\n";
+    int st[8], count, way;
+    unsigned long lines[8];
+    char f0[8];
+    (void)state;
+    for (way = 0; way < 2; way++) {
+        (void)read_all(text, sizeof text - 1, way, st, lines, f0, &count);
+        assert_int_equal(count, 2);
+        assert_int_equal(st[0], CSV_BAD_QUOTE);
+        assert_int_equal(lines[0], 1);
+        assert_int_equal(st[1], CSV_RECORD);
+        assert_int_equal(f0[1], '3');
+        assert_int_equal(lines[1], 3);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -257,6 +330,8 @@ int main(void)
         cmocka_unit_test(test_across_read_blocks),
         cmocka_unit_test(test_chunk_edges),
         cmocka_unit_test(test_long_records_in_linear_time),
+        cmocka_unit_test(test_too_long_resumes_after_the_record),
+        cmocka_unit_test(test_bad_quote_resumes_after_the_record),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
