@@ -117,8 +117,8 @@ static int put(csv_reader *r, char c)
 /* Room for n bytes of record text and nf field starts (defined below). */
 static int reserve(csv_reader *r, size_t n, size_t nf);
 
-/* The run of plain bytes (none of , LF CR NUL) that follows in the block,
- * appended to the record in one
+/* The run of plain bytes (none of , LF CR NUL, nor 0xEF, which may begin a
+ * byte-order mark) that follows in the block, appended to the record in one
  * copy: what put would do byte by byte. The record buffer grows to hold it,
  * up to its limit (the bytes past the limit are left for put, which reports
  * CSV_TOO_LONG at the same byte). Each byte is scanned once: the reader's
@@ -128,7 +128,9 @@ static int plain_run(csv_reader *r)
     const unsigned char *p = r->in;
     size_t i = r->in_pos, k;
     if (p == NULL || r->byte_by_byte) return 0;
-    while (i < r->in_len && p[i] != ',' && p[i] != '\n' && p[i] != '\r' && p[i] != 0) i++;
+    while (i < r->in_len && p[i] != ',' && p[i] != '\n' && p[i] != '\r' && p[i] != 0 &&
+           p[i] != 0xEF)
+        i++;
     k = i - r->in_pos;
     if (k == 0) return 0;
     if (r->len + k > r->cap) {
@@ -206,10 +208,37 @@ static void mark(csv_reader *r)
     r->err_col = r->col > 1 ? r->col - 1 : 1;
 }
 
+/* A NUL byte or a byte of a possible byte-order mark (EF BB BF) in a
+ * record's text: *bad set to the first problem found (CSV_BAD_BYTE at a
+ * NUL, CSV_BAD_BOM at a mark's first byte), *bom to the mark's bytes seen
+ * so far (0 to 2). Called for a NUL, for 0xEF and while *bom is not 0. */
+static void odd_byte(csv_reader *r, int c, int *bom, int *bad)
+{
+    if (c == 0xEF) {
+        *bom = 1;
+        return;
+    }
+    if (c == 0xBB && *bom == 1) {
+        *bom = 2;
+        return;
+    }
+    if (c == 0xBF && *bom == 2 && !*bad) {
+        /* the mark's three bytes are on this line, its first at col - 3 */
+        r->err_line = r->line;
+        r->err_col = r->col - 3;
+        *bad = CSV_BAD_BOM;
+    }
+    *bom = 0;
+    if (c == '\0' && !*bad) {
+        mark(r);
+        *bad = CSV_BAD_BYTE;
+    }
+}
+
 /* Read one record (possibly blank). *blank is set when it held nothing. */
 static int read_record(csv_reader *r, int *blank)
 {
-    int c, st, content = 0, bad_byte = 0;
+    int c, st, content = 0, bad = 0, bom;
     size_t field_start, keep;
 
     r->len = 0;
@@ -225,6 +254,7 @@ static int read_record(csv_reader *r, int *blank)
         /* start of a field: leading blanks */
         field_start = r->len;
         keep = field_start;
+        bom = 0;
         while (c == ' ' || c == '\t') c = get(r);
         if (c == '"') {
             content = 1;
@@ -238,10 +268,7 @@ static int read_record(csv_reader *r, int *blank)
                     c = get(r);
                     if (c != '"') break; /* closing quote */
                 }
-                if (c == '\0') {
-                    if (!bad_byte) mark(r);
-                    bad_byte = 1;
-                }
+                if (c == '\0' || c == 0xEF || bom != 0) odd_byte(r, c, &bom, &bad);
                 if ((st = put(r, (char)c)) != CSV_RECORD) {
                     mark(r);
                     if (st == CSV_TOO_LONG) skip_record(r, SKIP_QUOTED);
@@ -258,16 +285,13 @@ static int read_record(csv_reader *r, int *blank)
         } else {
             while (c != ',' && c != '\n' && c != END_OF_INPUT) {
                 content = 1;
-                if (c == '\0') {
-                    if (!bad_byte) mark(r);
-                    bad_byte = 1;
-                }
+                if (c == '\0' || c == 0xEF || bom != 0) odd_byte(r, c, &bom, &bad);
                 if ((st = put(r, (char)c)) != CSV_RECORD) {
                     mark(r);
                     if (st == CSV_TOO_LONG) skip_record(r, SKIP_TEXT);
                     return st;
                 }
-                (void)plain_run(r);
+                if (bom == 0) (void)plain_run(r);
                 c = get(r);
             }
         }
@@ -284,7 +308,7 @@ static int read_record(csv_reader *r, int *blank)
         break; /* '\n' or end of input */
     }
     if (c == END_OF_INPUT && read_failed(r)) return CSV_IO;
-    if (bad_byte) return CSV_BAD_BYTE;
+    if (bad) return bad;
     *blank = !content;
     return CSV_RECORD;
 }
@@ -354,15 +378,16 @@ static int quick_done(csv_reader *r, size_t nf, size_t len, int content, int *bl
 
 #ifdef CSV_SSE2
 /* quick_record's split of the line p[0..len) (p[len] the LF, in the block)
- * sixteen bytes at a time: each chunk copied, its commas and its quotes, CRs
- * and NULs found by compares (the loads reach at most 15 bytes past the LF:
- * the block has CSV_BLOCK_SLACK bytes more), the fields cut at the commas
- * and trimmed as quick_record does. Returns -1 (nothing consumed) for a line
- * with a quote, CR or NUL. */
+ * sixteen bytes at a time: each chunk copied, its commas and its quotes, CRs,
+ * NULs and 0xEF bytes found by compares (the loads reach at most 15 bytes
+ * past the LF: the block has CSV_BLOCK_SLACK bytes more), the fields cut at
+ * the commas and trimmed as quick_record does. Returns -1 (nothing consumed)
+ * for a line with a quote, CR, NUL or 0xEF. */
 static int quick_split16(csv_reader *r, const unsigned char *p, size_t len, int *blank)
 {
     const __m128i comma = _mm_set1_epi8(','), quote = _mm_set1_epi8('"');
     const __m128i cr = _mm_set1_epi8('\r'), zero = _mm_setzero_si128();
+    const __m128i ef = _mm_set1_epi8((char)0xEF);
     size_t i, a = 0, nf = 0;
     int content = 0;
     if (!reserve(r, len + 16, r->fcap > 0 ? r->fcap : 32)) return -1;
@@ -371,7 +396,7 @@ static int quick_split16(csv_reader *r, const unsigned char *p, size_t len, int 
         unsigned cm = (unsigned)_mm_movemask_epi8(_mm_cmpeq_epi8(v, comma));
         unsigned bad = (unsigned)_mm_movemask_epi8(
             _mm_or_si128(_mm_or_si128(_mm_cmpeq_epi8(v, quote), _mm_cmpeq_epi8(v, cr)),
-                         _mm_cmpeq_epi8(v, zero)));
+                         _mm_or_si128(_mm_cmpeq_epi8(v, zero), _mm_cmpeq_epi8(v, ef))));
         _mm_storeu_si128((__m128i *)(void *)(r->buf + i), v);
         if (len - i < 16) { /* the last chunk: the line's end closes the last field */
             const unsigned end_bit = 1u << (len - i);
@@ -392,7 +417,8 @@ static int quick_split16(csv_reader *r, const unsigned char *p, size_t len, int 
 #endif
 
 /* The common record at once: a whole line in the block, ended by LF, with
- * no quote, CR or NUL. Copied in one piece, split at its commas, each field
+ * no quote, CR, NUL or 0xEF (the first byte of a byte-order mark, which
+ * read_record checks). Copied in one piece, split at its commas, each field
  * trimmed of blanks and NUL-terminated in place: the fields read_record
  * gives, without its per-byte steps. Returns -1 when the line is not such a
  * one (nothing consumed: read_record takes it). */
@@ -413,7 +439,7 @@ static int quick_record(csv_reader *r, int *blank)
     size_t q, nf = 0;
     int content = 0;
     if (memchr(p, '"', len) != NULL || memchr(p, '\r', len) != NULL ||
-        memchr(p, '\0', len) != NULL)
+        memchr(p, '\0', len) != NULL || memchr(p, 0xEF, len) != NULL)
         return -1;
     if (!reserve(r, len + 1, r->fcap > 0 ? r->fcap : 32)) return -1;
     memcpy(r->buf, p, len);
@@ -470,6 +496,8 @@ const char *csv_result_text(int result)
     case CSV_TOO_LONG: return "record longer than 1 MiB (skipped)";
     case CSV_BAD_QUOTE: return "malformed quoted field (text after the closing quote, or a quote never closed)";
     case CSV_BAD_BYTE: return "NUL byte or invalid byte in the record";
+    case CSV_BAD_BOM:
+        return "a UTF-8 byte-order mark (EF BB BF) after the start of the input (files joined?)";
     case CSV_IO: return "read error";
     case CSV_NOMEM: return "out of memory";
     default: return "unknown";

@@ -3,11 +3,12 @@
  * csv_read.h: a streaming CSV record reader (RFC 4180 and the usual
  * deviations): comma separator, fields optionally in double quotes with ""
  * for a quote and line breaks allowed inside quotes, LF, CRLF or CR line
- * ends, a UTF-8 byte-order mark skipped, empty or blank lines skipped,
- * spaces and tabs around unquoted fields trimmed. A record longer than
- * CSV_MAX_RECORD bytes is rejected (and skipped to its end, quotes
- * honoured) instead of exhausting
- * memory. Time linear in the input's length, whatever the records' lengths.
+ * ends, a UTF-8 byte-order mark skipped at the start of the input (one
+ * anywhere else is CSV_BAD_BOM), empty or blank lines skipped, spaces and
+ * tabs around unquoted fields trimmed. A record longer than CSV_MAX_RECORD
+ * bytes is rejected (and skipped to its end, quotes honoured) instead of
+ * exhausting memory. Time linear in the input's length, whatever the
+ * records' lengths.
  */
 #ifndef OI_PLAN_CSV_READ_H
 #define OI_PLAN_CSV_READ_H
@@ -27,7 +28,9 @@ enum csv_result {
     CSV_BAD_QUOTE = 3,/* text after a closing quote, or a quote never closed */
     CSV_BAD_BYTE = 4, /* a NUL byte in the record */
     CSV_IO = 5,       /* read error */
-    CSV_NOMEM = 6     /* out of memory */
+    CSV_NOMEM = 6,    /* out of memory */
+    CSV_BAD_BOM = 7   /* a UTF-8 byte-order mark (EF BB BF) in the record: only the
+                         input's first bytes may be one (two files joined?) */
 };
 
 typedef struct csv_reader {

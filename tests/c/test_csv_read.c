@@ -5,7 +5,8 @@
  * the bytes that matter (separators, blanks, quotes, CR, LF, NUL), on texts
  * longer than one read block, and on hand-written cases; a record near the
  * record limit read in linear time; after a record too long or a bad quote
- * the next record read from its own start (never inside quotes). */
+ * the next record read from its own start (never inside quotes); a
+ * byte-order mark only at the input's start. */
 #define _POSIX_C_SOURCE 200809L /* fmemopen */
 #include <stdarg.h>
 #include <stddef.h>
@@ -84,6 +85,11 @@ static void test_hand_written(void **state)
         "\n",
         "a",
         "1,2\n3,4\n5,6",
+        "\xEF\xBB\xBF" "\xEF\xBB\xBF" "a,b\n1,2\n",
+        "a,b\n1,2\n\xEF\xBB\xBF" "a,b\n3,4\n",
+        "1,\"x\xEF\xBB\xBFy\"\n2,3\n",
+        "1,x\xEF\xBB\xBF\n\xEF\xEF\xBB\xBF,\xEF\xBB\n",
+        "\xEF\xBC\x8C,\xEF\xBB\xBE,\"\xEF\"\"\xBB\xBF\"\n",
         "\"x\"y,\"a\nb\",1\n3,4\n",
         "\"x\"y\"a\nb\",1\n3,4\n"};
     size_t i;
@@ -99,7 +105,7 @@ static void test_hand_written(void **state)
 
 static void test_random_texts(void **state)
 {
-    static const char alphabet[] = "0123456789.e-,,,,   \t\n\n\n\"\r\0ab";
+    static const char alphabet[] = "0123456789.e-,,,,   \t\n\n\n\"\r\0ab\xEF\xBB\xBF";
     char text[400];
     long k;
     (void)state;
@@ -322,6 +328,51 @@ static void test_bad_quote_resumes_after_the_record(void **state)
     }
 }
 
+/* The first result of text after its records "ok,...": want, the mark at
+ * line and col of the record begun at line rec, then the record "next". */
+static void check_bom(const char *text, int want, unsigned long rec, unsigned long line,
+                      unsigned long col)
+{
+    int way;
+    for (way = 0; way < 2; way++) {
+        FILE *fp = fmemopen((void *)text, strlen(text), "rb");
+        csv_reader r;
+        int st;
+        assert_non_null(fp);
+        csv_init(&r, fp);
+        r.byte_by_byte = way;
+        do {
+            st = csv_next(&r);
+        } while (st == CSV_RECORD && strcmp(csv_field(&r, 0), "ok") == 0);
+        if (st != want) print_error("\"%s\" way %d\n", text, way);
+        assert_int_equal(st, want);
+        if (want == CSV_BAD_BOM) {
+            assert_int_equal(r.err_line, line);
+            assert_int_equal(r.err_col, col);
+            assert_int_equal(r.rec_line, rec);
+            assert_int_equal(csv_next(&r), CSV_RECORD);
+            assert_string_equal(csv_field(&r, 0), "next");
+        }
+        csv_free(&r);
+        fclose(fp);
+    }
+}
+
+static void test_bom_only_at_the_start(void **state)
+{
+    (void)state;
+    /* the first three bytes: skipped */
+    check_bom("\xEF\xBB\xBF" "id,b\n", CSV_RECORD, 0, 0, 0);
+    /* a second mark (a header saved twice), files joined, in a field, in quotes */
+    check_bom("\xEF\xBB\xBF\xEF\xBB\xBF" "id,b\nnext\n", CSV_BAD_BOM, 1, 1, 1);
+    check_bom("ok,1\n\xEF\xBB\xBF" "id,b\nnext\n", CSV_BAD_BOM, 2, 2, 1);
+    check_bom("ok,1\r\nx,  \xEF\xBB\xBF" "id\r\nnext\n", CSV_BAD_BOM, 2, 2, 5);
+    check_bom("ok,1\n1,\"a\nb\xEF\xBB\xBF\"\nnext\n", CSV_BAD_BOM, 2, 3, 2);
+    check_bom("ok,1\n\"\xEF\xBB\xBF\",1\nnext\n", CSV_BAD_BOM, 2, 2, 2);
+    /* other 0xEF sequences are text (U+FF0C, U+FEFE) */
+    check_bom("ok,1\n\xEF\xBC\x8C,\xEF\xBB\xBE\n", CSV_RECORD, 0, 0, 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -332,6 +383,7 @@ int main(void)
         cmocka_unit_test(test_long_records_in_linear_time),
         cmocka_unit_test(test_too_long_resumes_after_the_record),
         cmocka_unit_test(test_bad_quote_resumes_after_the_record),
+        cmocka_unit_test(test_bom_only_at_the_start),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: MIT
 """The planner's reader on hostile input (issue 28): a record near the 1 MiB
 limit read in linear time, a record too long skipped to its own end (never
-resumed inside its quotes) and reported at the line where it began."""
+resumed inside its quotes) and reported at the line where it began, a
+byte-order mark only at the start of the file."""
 import re
 import resource
 import subprocess
@@ -61,3 +62,33 @@ def test_bad_quote_resumes_after_the_record():
     assert code == 1
     assert [r["status"] for r in parse(out)] == ["ERR_PARSE", "OK"]
     assert "line 2" in err and "quote" in err
+
+
+def test_second_bom_in_the_header_is_refused():
+    """A header saved with two byte-order marks: the id column was an unknown
+    column and the ids row numbers; now the header is refused, naming the line."""
+    code, out, err = run_csv(b"\xef\xbb\xbf\xef\xbb\xbf" + (HEAD + GOOD).encode())
+    assert code == 2 and out == ""
+    assert "line 1: cannot read the header: a UTF-8 byte-order mark" in err
+    assert "unknown column" not in err
+
+
+def test_bom_of_a_second_file_joined_is_an_error():
+    """Two files joined: the second file's mark (and header) is a failed row
+    naming its line; the rows around it keep their ids."""
+    one = b"\xef\xbb\xbf" + (HEAD + GOOD).encode()
+    code, out, err = run_csv(one + one)
+    assert code == 1
+    rows = parse(out)
+    assert [r["status"] for r in rows] == ["OK", "ERR_PARSE", "OK"]
+    assert [r["id"] for r in rows] == ["ok", "", "ok"]
+    assert "line 3: a UTF-8 byte-order mark" in err
+
+
+def test_first_bom_and_other_ef_text_still_read():
+    """The mark at the start is skipped; other text with the byte 0xEF (U+FF0C,
+    U+FEFE) is text."""
+    code, out, err = run_csv(b"\xef\xbb\xbf" + HEAD.encode() +
+                             f"\uff0c\ufefe,{AU},0,0,0,7000,0\n".encode())
+    assert code == 0, err
+    assert [r["id"] for r in parse(out)] == ["\uff0c\ufefe"]
