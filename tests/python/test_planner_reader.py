@@ -1,8 +1,8 @@
 # SPDX-License-Identifier: MIT
 """The planner's reader on hostile input (issue 28): a record near the 1 MiB
 limit read in linear time, a record too long skipped to its own end (never
-resumed inside its quotes) and reported at the line where it began, a
-byte-order mark only at the start of the file."""
+resumed inside its quotes) and reported at the line where it began, numbers
+in decimal only, a byte-order mark only at the start of the file."""
 import re
 import resource
 import subprocess
@@ -62,6 +62,25 @@ def test_bad_quote_resumes_after_the_record():
     assert code == 1
     assert [r["status"] for r in parse(out)] == ["ERR_PARSE", "OK"]
     assert "line 2" in err and "quote" in err
+
+
+@pytest.mark.parametrize("text", ["0x1B58", "0X1b58", "-0x1B58", "+0x1B58", "0x1p3", "0x1.8p1",
+                                  "0x", "1e3x"])
+def test_hexadecimal_numbers_are_parse_errors(text):
+    """Decimal only: strtod's hexadecimal forms are no number (0x1B58 was read
+    as 7000, a plausible radius)."""
+    code, out, err = run_csv(HEAD + f"h,{AU},0,0,0,{text},0\n" + GOOD)
+    assert code == 1
+    assert [r["status"] for r in parse(out)] == ["ERR_PARSE", "OK"]
+    assert f'line 2, column 6: expected a number for target_y, got "{text}"' in err
+
+
+@pytest.mark.parametrize("text", ["inf", "-Infinity", "nan", "NAN"])
+def test_inf_and_nan_words_are_numbers(text):
+    """docs/planner.md: nan and inf are read as numbers, the library refuses them."""
+    code, out, err = run_csv(HEAD + f"w,{AU},0,0,0,{text},0\n")
+    assert code == 1
+    assert [r["status"] for r in parse(out)] == ["ERR_NONFINITE"]
 
 
 def test_second_bom_in_the_header_is_refused():
