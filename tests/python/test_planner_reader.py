@@ -1,8 +1,10 @@
 # SPDX-License-Identifier: MIT
-"""The planner's reader on hostile input (issue 28): a record near the 1 MiB
-limit read in linear time, a record too long skipped to its own end (never
-resumed inside its quotes) and reported at the line where it began, numbers
-in decimal only, a byte-order mark only at the start of the file."""
+"""The planner's reader and words on hostile input (issue 28): a record near
+the 1 MiB limit read in linear time, a record too long skipped to its own end
+(never resumed inside its quotes) and reported at the line where it began,
+numbers in decimal only, a byte-order mark only at the start of the file, and
+the sky words of --help, of docs/planner.md and of the library's header the
+same as the words the planner accepts."""
 import re
 import resource
 import subprocess
@@ -111,3 +113,63 @@ def test_first_bom_and_other_ef_text_still_read():
                              f"\uff0c\ufefe,{AU},0,0,0,7000,0\n".encode())
     assert code == 0, err
     assert [r["id"] for r in parse(out)] == ["\uff0c\ufefe"]
+
+
+# ------------------------------------------------------------ the sky words
+
+def _help_sky_words():
+    code, out, _ = run(["--help"])
+    assert code == 0
+    m = re.search(r"sky \(the camera's background behind the target, not e_sky:\s*(.*?)"
+                  r" joined by '\+',\s*or all = ([a-z+]+);", out, re.S)
+    assert m, out
+    return out, [w.strip() for w in m.group(1).split(",")], m.group(2).split("+")
+
+
+def _docs_sky_words():
+    doc = (ROOT / "docs" / "planner.md").read_text()
+    row = next(line for line in doc.splitlines() if line.startswith("| `sky` |"))
+    listed = row.split("):", 1)[1].split("; default")[0]
+    return doc, set(re.findall(r"`(\w+)`", listed))
+
+
+def _header_sky_flags():
+    h = (ROOT / "include" / "orbillum.h").read_text()
+    return {m.lower() for m in re.findall(r"#define OI_SKY_(\w+)\s+\(\d+u\)", h)}
+
+
+def test_help_lists_every_sky_word_the_planner_accepts():
+    """The sky words of --help are the planner's (each accepted, `all` as
+    listed), the docs' and every OI_SKY_* flag's of the library header (today
+    `starlight` was missing from --help); a word in none of them is refused."""
+    _, words, all_is = _help_sky_words()
+    assert "starlight" in words
+    assert _header_sky_flags() <= set(words), (words, _header_sky_flags())
+    _, doc_words = _docs_sky_words()
+    assert doc_words == set(words) | {"all"}, doc_words
+    up = dict(LIT, observer_x=0, observer_y=6990, observer_z=0, camera="telescope-15cm",
+              moon_x=0, moon_y=-384400, moon_z=0)
+    rows = ([dict(up, id=w, sky=w) for w in words] + [dict(up, id="all", sky="all"),
+            dict(up, id="all_is", sky="+".join(all_is)), dict(up, id="stars", sky="stars")])
+    code, out, err = run_csv(table(rows))
+    got = {r["id"]: r for r in parse(out)}
+    for w in words + ["all"]:
+        assert got[w]["status"] == "OK", (w, err)
+    assert dict(got["all_is"], id="all") == got["all"]
+    assert got["stars"]["status"] == "ERR_PARSE"
+
+
+def test_help_and_docs_tell_e_sky_from_the_sky_column():
+    """One sentence each: e_sky is scattered sunlight on the target (terms
+    ...+sky); the sky column is the camera's background."""
+    out, _, _ = _help_sky_words()
+    flat = " ".join(out.split())
+    assert re.search(r"e_sky: the sunlight the atmosphere scatters onto the target "
+                     r"\(W/m\^2, terms=\.\.\.\+sky\)[^.]*not the sky column", flat), flat
+    assert "sky (the camera's background behind the target, not e_sky" in flat
+    doc, _ = _docs_sky_words()
+    flat = " ".join(doc.split())
+    assert re.search(r"`e_sky` \(after `detect_margin_mag`\): the sunlight the atmosphere "
+                     r"scatters onto the target.{0,200}?not the `sky` column", flat)
+    assert re.search(r"\| `sky` \| no \| the camera's background behind the target[^|]*"
+                     r"not `e_sky`", flat)
