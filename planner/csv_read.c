@@ -378,32 +378,38 @@ static int quick_done(csv_reader *r, size_t nf, size_t len, int content, int *bl
 
 #ifdef CSV_SSE2
 /* quick_record's split of the line p[0..len) (p[len] the LF, in the block)
- * sixteen bytes at a time: each chunk copied, its commas and its quotes, CRs,
- * NULs and 0xEF bytes found by compares (the loads reach at most 15 bytes
- * past the LF: the block has CSV_BLOCK_SLACK bytes more), the fields cut at
- * the commas and trimmed as quick_record does. Returns -1 (nothing consumed)
- * for a line with a quote, CR, NUL or 0xEF. */
+ * sixteen bytes at a time: each chunk copied, its commas found by a compare
+ * and the fields cut there and trimmed as quick_record does; its quotes, CRs,
+ * NULs and bytes above 0x7F (their sign bits) gathered in one vector, tested
+ * once at the last chunk (the loads reach at most 15 bytes past the LF: the
+ * block has CSV_BLOCK_SLACK bytes more). Returns -1 (nothing consumed: the
+ * fields cut are scratch that read_record overwrites) for a line with a
+ * quote, CR, NUL or a byte above 0x7F (0xEF may begin a byte-order mark,
+ * which read_record checks; a line of UTF-8 text is read there too). */
 static int quick_split16(csv_reader *r, const unsigned char *p, size_t len, int *blank)
 {
     const __m128i comma = _mm_set1_epi8(','), quote = _mm_set1_epi8('"');
     const __m128i cr = _mm_set1_epi8('\r'), zero = _mm_setzero_si128();
-    const __m128i ef = _mm_set1_epi8((char)0xEF);
+    __m128i odd_seen = zero;
     size_t i, a = 0, nf = 0;
     int content = 0;
     if (!reserve(r, len + 16, r->fcap > 0 ? r->fcap : 32)) return -1;
     for (i = 0;; i += 16) {
         const __m128i v = _mm_loadu_si128((const __m128i *)(const void *)(p + i));
-        unsigned cm = (unsigned)_mm_movemask_epi8(_mm_cmpeq_epi8(v, comma));
-        unsigned bad = (unsigned)_mm_movemask_epi8(
+        const __m128i odd =
             _mm_or_si128(_mm_or_si128(_mm_cmpeq_epi8(v, quote), _mm_cmpeq_epi8(v, cr)),
-                         _mm_or_si128(_mm_cmpeq_epi8(v, zero), _mm_cmpeq_epi8(v, ef))));
+                         _mm_or_si128(_mm_cmpeq_epi8(v, zero), v));
+        unsigned cm = (unsigned)_mm_movemask_epi8(_mm_cmpeq_epi8(v, comma));
         _mm_storeu_si128((__m128i *)(void *)(r->buf + i), v);
         if (len - i < 16) { /* the last chunk: the line's end closes the last field */
             const unsigned end_bit = 1u << (len - i);
-            bad &= end_bit - 1u;
+            if (((unsigned)_mm_movemask_epi8(odd_seen) |
+                 ((unsigned)_mm_movemask_epi8(odd) & (end_bit - 1u))) != 0u)
+                return -1;
             cm = (cm & (end_bit - 1u)) | end_bit;
+        } else {
+            odd_seen = _mm_or_si128(odd_seen, odd);
         }
-        if (bad != 0u) return -1;
         while (cm != 0u) {
             const size_t e = i + (size_t)__builtin_ctz(cm);
             cm &= cm - 1u;
@@ -418,7 +424,7 @@ static int quick_split16(csv_reader *r, const unsigned char *p, size_t len, int 
 
 /* The common record at once: a whole line in the block, ended by LF, with
  * no quote, CR, NUL or 0xEF (the first byte of a byte-order mark, which
- * read_record checks). Copied in one piece, split at its commas, each field
+ * read_record checks; the SSE2 split: no byte above 0x7F). Copied in one piece, split at its commas, each field
  * trimmed of blanks and NUL-terminated in place: the fields read_record
  * gives, without its per-byte steps. Returns -1 when the line is not such a
  * one (nothing consumed: read_record takes it). */

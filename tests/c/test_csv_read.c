@@ -166,13 +166,13 @@ static void test_chunk_edges(void **state)
             memcpy(text + n + 1, "1,2\n", 4);
             check_same(text, n + 5);
         }
-        /* a quote, CR or NUL at each place: the split's masks hand the line to
-         * the byte by byte reader, the last chunk's too (a CR before the LF is
-         * every CRLF file) */
+        /* a quote, CR, NUL or byte above 0x7F at each place: the split's masks
+         * hand the line to the byte by byte reader, the last chunk's too (a CR
+         * before the LF is every CRLF file) */
         for (c = 0; c < n; c++) {
-            static const char hand_off[3] = {'"', '\r', '\0'};
+            static const char hand_off[5] = {'"', '\r', '\0', '\xEF', '\x80'};
             int k;
-            for (k = 0; k < 3; k++) {
+            for (k = 0; k < 5; k++) {
                 memset(text, '7', n);
                 text[(c + 1) % n] = ',';
                 text[c] = hand_off[k];
