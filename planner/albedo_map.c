@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "batch.h"
+#include "numtext.h"
 
 static int fail(const char *path, unsigned long line, const char *why, const char *detail)
 {
@@ -116,7 +117,7 @@ int albedo_map_load(const char *path, plan_albedo_map *map)
                     break;
                 }
                 errno = 0;
-                v = strtod(tok, &end);
+                v = num_parse(tok, &end); /* strtod's double, decimal only (numtext.h) */
                 if (end == tok || *end != '\0') {
                     char detail[80];
                     snprintf(detail, sizeof detail, "\"%.40s\" (value %d)", tok, j + 1);

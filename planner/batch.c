@@ -130,8 +130,10 @@ static int read_header(batch *b, csv_reader *r)
         return PLAN_EXIT_INPUT;
     }
     if (st != CSV_RECORD) {
-        fprintf(stderr, "oi-plan: %s: line %lu, character %lu: cannot read the header: %s%s\n",
-                b->path, r->err_line, r->err_col, csv_result_text(st),
+        /* the line where the header began, and where the problem is */
+        fprintf(stderr, "oi-plan: %s: line %lu: cannot read the header: %s (at line %lu, "
+                        "character %lu)%s\n",
+                b->path, r->rec_line, csv_result_text(st), r->err_line, r->err_col,
                 st == CSV_BAD_BYTE ? " (save the file as UTF-8 or ASCII CSV, not UTF-16)" : "");
         return PLAN_EXIT_INPUT;
     }
@@ -378,7 +380,7 @@ int batch_run_map(const char *path, const oi_camera *default_camera, const plan_
             row.status_name = PLAN_STATUS_PARSE;
             len = strlen(id) + 1;
             room_for_id(&b, len);
-            add_pending(&b, id, len, &row, r.err_line, 0);
+            add_pending(&b, id, len, &row, r.rec_line, 0);
             continue;
         }
         len = strlen(id) + 1;

@@ -114,21 +114,35 @@ static int put(csv_reader *r, char c)
     return CSV_RECORD;
 }
 
-/* The run of plain bytes (none of , LF CR NUL) that follows in the block,
- * appended to the record when the record buffer holds it without growing:
- * what put would do byte by byte, in one copy. Returns 1 if copied. */
+/* Room for n bytes of record text and nf field starts (defined below). */
+static int reserve(csv_reader *r, size_t n, size_t nf);
+
+/* The run of plain bytes (none of , LF CR NUL, nor 0xEF, which may begin a
+ * byte-order mark) that follows in the block, appended to the record in one
+ * copy: what put would do byte by byte. The record buffer grows to hold it,
+ * up to its limit (the bytes past the limit are left for put, which reports
+ * CSV_TOO_LONG at the same byte). Each byte is scanned once: the reader's
+ * time is linear in the record's length. Returns 1 if bytes were copied. */
 static int plain_run(csv_reader *r)
 {
     const unsigned char *p = r->in;
     size_t i = r->in_pos, k;
-    if (p == NULL) return 0;
-    while (i < r->in_len && p[i] != ',' && p[i] != '\n' && p[i] != '\r' && p[i] != 0) i++;
+    if (p == NULL || r->byte_by_byte) return 0;
+    while (i < r->in_len && p[i] != ',' && p[i] != '\n' && p[i] != '\r' && p[i] != 0 &&
+           p[i] != 0xEF)
+        i++;
     k = i - r->in_pos;
-    if (k == 0 || r->len + k > r->cap) return 0;
+    if (k == 0) return 0;
+    if (r->len + k > r->cap) {
+        const size_t max = CSV_MAX_RECORD + 16;
+        (void)reserve(r, r->len + k < max ? r->len + k : max, 0);
+        if (r->len + k > r->cap) k = r->cap > r->len ? r->cap - r->len : 0;
+        if (k == 0) return 0;
+    }
     memcpy(r->buf + r->len, p + r->in_pos, k);
     r->len += k;
     r->col += k;
-    r->in_pos = i;
+    r->in_pos += k;
     return 1;
 }
 
@@ -152,13 +166,40 @@ static int end_field(csv_reader *r, size_t field_start, size_t keep)
     return CSV_RECORD;
 }
 
-/* Skip to the end of the current physical line. */
-static void skip_line(csv_reader *r)
+/* Where skip_record starts: at a field's start, in unquoted text (or text
+ * after a closing quote), inside a quoted field's quotes. */
+enum { SKIP_FIELD_START, SKIP_TEXT, SKIP_QUOTED };
+
+/* After an error inside a record: the rest of the record read as
+ * read_record reads it, without keeping it, to the line end that ends the
+ * record (a line break inside quotes does not): the next record starts
+ * there, never inside a quoted field. */
+static void skip_record(csv_reader *r, int where)
 {
     int c;
-    do {
-        c = get(r);
-    } while (c != '\n' && c != END_OF_INPUT);
+    for (;;) {
+        if (where == SKIP_QUOTED) {
+            c = get(r);
+            if (c == END_OF_INPUT) return;
+            if (c != '"') continue;
+            c = get(r);
+            if (c == '"') continue; /* "" is a quote */
+            /* closing quote: c follows it */
+        } else if (where == SKIP_FIELD_START) {
+            do {
+                c = get(r);
+            } while (c == ' ' || c == '\t');
+            if (c == '"') {
+                where = SKIP_QUOTED;
+                continue;
+            }
+        } else {
+            c = get(r);
+        }
+        while (c != ',' && c != '\n' && c != END_OF_INPUT) c = get(r);
+        if (c != ',') return;
+        where = SKIP_FIELD_START;
+    }
 }
 
 static void mark(csv_reader *r)
@@ -167,10 +208,37 @@ static void mark(csv_reader *r)
     r->err_col = r->col > 1 ? r->col - 1 : 1;
 }
 
+/* A NUL byte or a byte of a possible byte-order mark (EF BB BF) in a
+ * record's text: *bad set to the first problem found (CSV_BAD_BYTE at a
+ * NUL, CSV_BAD_BOM at a mark's first byte), *bom to the mark's bytes seen
+ * so far (0 to 2). Called for a NUL, for 0xEF and while *bom is not 0. */
+static void odd_byte(csv_reader *r, int c, int *bom, int *bad)
+{
+    if (c == 0xEF) {
+        *bom = 1;
+        return;
+    }
+    if (c == 0xBB && *bom == 1) {
+        *bom = 2;
+        return;
+    }
+    if (c == 0xBF && *bom == 2 && !*bad) {
+        /* the mark's three bytes are on this line, its first at col - 3 */
+        r->err_line = r->line;
+        r->err_col = r->col - 3;
+        *bad = CSV_BAD_BOM;
+    }
+    *bom = 0;
+    if (c == '\0' && !*bad) {
+        mark(r);
+        *bad = CSV_BAD_BYTE;
+    }
+}
+
 /* Read one record (possibly blank). *blank is set when it held nothing. */
 static int read_record(csv_reader *r, int *blank)
 {
-    int c, st, content = 0, bad_byte = 0;
+    int c, st, content = 0, bad = 0, bom;
     size_t field_start, keep;
 
     r->len = 0;
@@ -186,6 +254,7 @@ static int read_record(csv_reader *r, int *blank)
         /* start of a field: leading blanks */
         field_start = r->len;
         keep = field_start;
+        bom = 0;
         while (c == ' ' || c == '\t') c = get(r);
         if (c == '"') {
             content = 1;
@@ -199,13 +268,10 @@ static int read_record(csv_reader *r, int *blank)
                     c = get(r);
                     if (c != '"') break; /* closing quote */
                 }
-                if (c == '\0') {
-                    if (!bad_byte) mark(r);
-                    bad_byte = 1;
-                }
+                if (c == '\0' || c == 0xEF || bom != 0) odd_byte(r, c, &bom, &bad);
                 if ((st = put(r, (char)c)) != CSV_RECORD) {
                     mark(r);
-                    if (st == CSV_TOO_LONG && c != '\n') skip_line(r);
+                    if (st == CSV_TOO_LONG) skip_record(r, SKIP_QUOTED);
                     return st;
                 }
             }
@@ -213,28 +279,25 @@ static int read_record(csv_reader *r, int *blank)
             while (c == ' ' || c == '\t') c = get(r);
             if (c != ',' && c != '\n' && c != END_OF_INPUT) {
                 mark(r);
-                skip_line(r);
+                skip_record(r, SKIP_TEXT);
                 return CSV_BAD_QUOTE;
             }
         } else {
             while (c != ',' && c != '\n' && c != END_OF_INPUT) {
                 content = 1;
-                if (c == '\0') {
-                    if (!bad_byte) mark(r);
-                    bad_byte = 1;
-                }
+                if (c == '\0' || c == 0xEF || bom != 0) odd_byte(r, c, &bom, &bad);
                 if ((st = put(r, (char)c)) != CSV_RECORD) {
                     mark(r);
-                    if (st == CSV_TOO_LONG) skip_line(r);
+                    if (st == CSV_TOO_LONG) skip_record(r, SKIP_TEXT);
                     return st;
                 }
-                (void)plain_run(r);
+                if (bom == 0) (void)plain_run(r);
                 c = get(r);
             }
         }
         if ((st = end_field(r, field_start, keep)) != CSV_RECORD) {
             mark(r);
-            if (st == CSV_TOO_LONG && c != '\n' && c != END_OF_INPUT) skip_line(r);
+            if (st == CSV_TOO_LONG && c == ',') skip_record(r, SKIP_FIELD_START);
             return st;
         }
         if (c == ',') {
@@ -245,7 +308,7 @@ static int read_record(csv_reader *r, int *blank)
         break; /* '\n' or end of input */
     }
     if (c == END_OF_INPUT && read_failed(r)) return CSV_IO;
-    if (bad_byte) return CSV_BAD_BYTE;
+    if (bad) return bad;
     *blank = !content;
     return CSV_RECORD;
 }
@@ -315,31 +378,38 @@ static int quick_done(csv_reader *r, size_t nf, size_t len, int content, int *bl
 
 #ifdef CSV_SSE2
 /* quick_record's split of the line p[0..len) (p[len] the LF, in the block)
- * sixteen bytes at a time: each chunk copied, its commas and its quotes, CRs
- * and NULs found by compares (the loads reach at most 15 bytes past the LF:
- * the block has CSV_BLOCK_SLACK bytes more), the fields cut at the commas
- * and trimmed as quick_record does. Returns -1 (nothing consumed) for a line
- * with a quote, CR or NUL. */
+ * sixteen bytes at a time: each chunk copied, its commas found by a compare
+ * and the fields cut there and trimmed as quick_record does; its quotes, CRs,
+ * NULs and bytes above 0x7F (their sign bits) gathered in one vector, tested
+ * once at the last chunk (the loads reach at most 15 bytes past the LF: the
+ * block has CSV_BLOCK_SLACK bytes more). Returns -1 (nothing consumed: the
+ * fields cut are scratch that read_record overwrites) for a line with a
+ * quote, CR, NUL or a byte above 0x7F (0xEF may begin a byte-order mark,
+ * which read_record checks; a line of UTF-8 text is read there too). */
 static int quick_split16(csv_reader *r, const unsigned char *p, size_t len, int *blank)
 {
     const __m128i comma = _mm_set1_epi8(','), quote = _mm_set1_epi8('"');
     const __m128i cr = _mm_set1_epi8('\r'), zero = _mm_setzero_si128();
+    __m128i odd_seen = zero;
     size_t i, a = 0, nf = 0;
     int content = 0;
     if (!reserve(r, len + 16, r->fcap > 0 ? r->fcap : 32)) return -1;
     for (i = 0;; i += 16) {
         const __m128i v = _mm_loadu_si128((const __m128i *)(const void *)(p + i));
-        unsigned cm = (unsigned)_mm_movemask_epi8(_mm_cmpeq_epi8(v, comma));
-        unsigned bad = (unsigned)_mm_movemask_epi8(
+        const __m128i odd =
             _mm_or_si128(_mm_or_si128(_mm_cmpeq_epi8(v, quote), _mm_cmpeq_epi8(v, cr)),
-                         _mm_cmpeq_epi8(v, zero)));
+                         _mm_or_si128(_mm_cmpeq_epi8(v, zero), v));
+        unsigned cm = (unsigned)_mm_movemask_epi8(_mm_cmpeq_epi8(v, comma));
         _mm_storeu_si128((__m128i *)(void *)(r->buf + i), v);
         if (len - i < 16) { /* the last chunk: the line's end closes the last field */
             const unsigned end_bit = 1u << (len - i);
-            bad &= end_bit - 1u;
+            if (((unsigned)_mm_movemask_epi8(odd_seen) |
+                 ((unsigned)_mm_movemask_epi8(odd) & (end_bit - 1u))) != 0u)
+                return -1;
             cm = (cm & (end_bit - 1u)) | end_bit;
+        } else {
+            odd_seen = _mm_or_si128(odd_seen, odd);
         }
-        if (bad != 0u) return -1;
         while (cm != 0u) {
             const size_t e = i + (size_t)__builtin_ctz(cm);
             cm &= cm - 1u;
@@ -353,7 +423,8 @@ static int quick_split16(csv_reader *r, const unsigned char *p, size_t len, int 
 #endif
 
 /* The common record at once: a whole line in the block, ended by LF, with
- * no quote, CR or NUL. Copied in one piece, split at its commas, each field
+ * no quote, CR, NUL or 0xEF (the first byte of a byte-order mark, which
+ * read_record checks; the SSE2 split: no byte above 0x7F). Copied in one piece, split at its commas, each field
  * trimmed of blanks and NUL-terminated in place: the fields read_record
  * gives, without its per-byte steps. Returns -1 when the line is not such a
  * one (nothing consumed: read_record takes it). */
@@ -374,7 +445,7 @@ static int quick_record(csv_reader *r, int *blank)
     size_t q, nf = 0;
     int content = 0;
     if (memchr(p, '"', len) != NULL || memchr(p, '\r', len) != NULL ||
-        memchr(p, '\0', len) != NULL)
+        memchr(p, '\0', len) != NULL || memchr(p, 0xEF, len) != NULL)
         return -1;
     if (!reserve(r, len + 1, r->fcap > 0 ? r->fcap : 32)) return -1;
     memcpy(r->buf, p, len);
@@ -402,7 +473,7 @@ int csv_next(csv_reader *r)
             int c2 = c1 == 0xBB ? next_byte(r) : EOF;
             if (!(c1 == 0xBB && c2 == 0xBF)) {
                 /* not a BOM: only one byte can be pushed back; reject */
-                r->err_line = 1;
+                r->rec_line = r->err_line = 1;
                 r->err_col = 1;
                 return CSV_BAD_BYTE;
             }
@@ -431,6 +502,8 @@ const char *csv_result_text(int result)
     case CSV_TOO_LONG: return "record longer than 1 MiB (skipped)";
     case CSV_BAD_QUOTE: return "malformed quoted field (text after the closing quote, or a quote never closed)";
     case CSV_BAD_BYTE: return "NUL byte or invalid byte in the record";
+    case CSV_BAD_BOM:
+        return "a UTF-8 byte-order mark (EF BB BF) after the start of the input (files joined?)";
     case CSV_IO: return "read error";
     case CSV_NOMEM: return "out of memory";
     default: return "unknown";

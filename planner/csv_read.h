@@ -3,10 +3,12 @@
  * csv_read.h: a streaming CSV record reader (RFC 4180 and the usual
  * deviations): comma separator, fields optionally in double quotes with ""
  * for a quote and line breaks allowed inside quotes, LF, CRLF or CR line
- * ends, a UTF-8 byte-order mark skipped, empty or blank lines skipped,
- * spaces and tabs around unquoted fields trimmed. A record longer than
- * CSV_MAX_RECORD bytes is rejected (and skipped) instead of exhausting
- * memory.
+ * ends, a UTF-8 byte-order mark skipped at the start of the input (one
+ * anywhere else is CSV_BAD_BOM), empty or blank lines skipped, spaces and
+ * tabs around unquoted fields trimmed. A record longer than CSV_MAX_RECORD
+ * bytes is rejected (and skipped to its end, quotes honoured) instead of
+ * exhausting memory. Time linear in the input's length, whatever the
+ * records' lengths.
  */
 #ifndef OI_PLAN_CSV_READ_H
 #define OI_PLAN_CSV_READ_H
@@ -21,19 +23,22 @@
 enum csv_result {
     CSV_RECORD = 0,   /* a record was read */
     CSV_END = 1,      /* end of input, no record */
-    CSV_TOO_LONG = 2, /* record longer than CSV_MAX_RECORD: skipped to its line end */
+    CSV_TOO_LONG = 2, /* record longer than CSV_MAX_RECORD: skipped to its end (the line
+                         end outside quotes) */
     CSV_BAD_QUOTE = 3,/* text after a closing quote, or a quote never closed */
     CSV_BAD_BYTE = 4, /* a NUL byte in the record */
     CSV_IO = 5,       /* read error */
-    CSV_NOMEM = 6     /* out of memory */
+    CSV_NOMEM = 6,    /* out of memory */
+    CSV_BAD_BOM = 7   /* a UTF-8 byte-order mark (EF BB BF) in the record: only the
+                         input's first bytes may be one (two files joined?) */
 };
 
 typedef struct csv_reader {
     FILE *fp;
     unsigned long line;       /* physical line of the next byte (1-based) */
     unsigned long col;        /* column (byte in line, 1-based) of the next byte */
-    unsigned long rec_line;   /* line where the last record started */
-    unsigned long err_line;   /* where the last error was found */
+    unsigned long rec_line;   /* line where the last record (or failed record) started */
+    unsigned long err_line;   /* where the last error was found (rec_line or after) */
     unsigned long err_col;
     char *buf;                /* field text, each NUL-terminated */
     size_t len, cap;
@@ -44,7 +49,8 @@ typedef struct csv_reader {
     unsigned char *in;        /* the block read (malloc'd on first use) */
     size_t in_pos, in_len;
     int in_nomem;             /* the block could not be allocated: a read error */
-    int byte_by_byte;         /* 1: no whole-line copies (tests compare both ways) */
+    int byte_by_byte;         /* 1: no whole-line or run copies, each byte put alone
+                                 (tests compare both ways) */
 } csv_reader;
 
 void csv_init(csv_reader *r, FILE *fp);

@@ -6,8 +6,41 @@
 
 #include "batch.h"
 #include "orbillum.h"
+#include "rows.h"
 #include "scenario.h"
 #include "shapes.h"
+
+/* The sky column's words (plan_sky_words, the ones the batch reads), each
+ * flag word and then "all" and what it stands for. */
+static void usage_sky_words(FILE *fp)
+{
+    const plan_word *w, *all = NULL;
+    const char *sep = "";
+    fputs("            sky (the camera's background behind the target, not e_sky:\n"
+          "            ", fp);
+    for (w = plan_sky_words; w->word != NULL; w++) {
+        if (strcmp(w->word, "all") == 0) {
+            all = w;
+            continue;
+        }
+        fprintf(fp, "%s%s", sep, w->word);
+        sep = ", ";
+    }
+    fputs(" joined by '+'", fp);
+    if (all != NULL) {
+        const plan_word *v;
+        sep = "";
+        fputs(",\n            or all = ", fp);
+        for (v = plan_sky_words; v->word != NULL; v++) {
+            if (v != all && v->bits != 0u && (v->bits & (v->bits - 1u)) == 0u &&
+                (v->bits & all->bits) == v->bits) {
+                fprintf(fp, "%s%s", sep, v->word);
+                sep = "+";
+            }
+        }
+    }
+    fputs("; default none),\n", fp);
+}
 
 static void usage(FILE *fp)
 {
@@ -48,11 +81,14 @@ static void usage(FILE *fp)
         "  required  sun_x,sun_y,sun_z,target_x,target_y,target_z\n"
         "  optional  id, moon_x,moon_y,moon_z, observer_x,observer_y,observer_z,\n"
         "            terms (sun+earth+moon+sky; default: all given, which is\n"
-        "            sun+earth+moon: sky, the scattered sunlight, is opt-in),\n"
+        "            sun+earth+moon: sky, the sunlight the atmosphere scatters onto\n"
+        "            the target, e_sky, is opt-in; not the sky column),\n"
         "            earth_albedo (0.30),\n"
         "            target_albedo (0.2), target_radius_m (1.0), camera (built-in name),\n"
-        "            atmosphere (1, or 0 = as if the Earth had none),\n"
-        "            sky (none, zodiacal, moon, all; default none),\n"
+        "            atmosphere (1, or 0 = as if the Earth had none),\n",
+        fp);
+    usage_sky_words(fp);
+    fputs(
         "            target_vx,target_vy,target_vz, observer_vx,observer_vy,observer_vz\n"
         "            (km/s; default at rest), sensor_temp_c (deg C; default: the\n"
         "            camera's dark current as listed),\n"
@@ -69,6 +105,9 @@ static void usage(FILE *fp)
         "Batch output (numbers with %.17g; empty when not computed):\n"
         "  id,status,sun_fraction,sun_fraction_atm,e_sun,e_earth,e_moon,earth_theta_deg,\n"
         "  earth_h_km,flux_obs,mag_v,exposure_s,gain,snr,flags,detect_margin_mag,e_sky\n"
+        "  e_sky: the sunlight the atmosphere scatters onto the target (W/m^2,\n"
+        "  terms=...+sky), lighting it as e_sun does; not the sky column, which is what\n"
+        "  the camera sees behind the target.\n"
         "  status: OK, WARN_* (computed), ERR_* (row failed; ERR_PARSE: bad text).\n"
         "  flags: sun_exclusion, earth_in_fov, eclipsed, penumbra, occulted, resolved,\n"
         "         too_faint, saturated, moon_shadow, moon_in_fov, trailed, glint,\n"

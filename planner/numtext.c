@@ -10,9 +10,11 @@
  * decides it except when the exact value lies within that error of a rounding
  * boundary (a midpoint between 17-digit decimals, or between doubles). Those
  * rare cases, and everything outside the plain decimal forms and magnitudes
- * 1e-280..1e280 (subnormals, infinities, NaN, hexadecimal text, more than 19
- * digits), are handed to snprintf and strtod themselves, so the result is
- * always theirs. Where the compiler has 128-bit integers the scaling itself
+ * 1e-280..1e280 (subnormals, infinities, NaN, more than 19 digits), are
+ * handed to snprintf and strtod themselves, so the result is always theirs.
+ * The parser reads decimal numbers only: hexadecimal text (strtod's "0x1B58",
+ * "0x1p3") and leading white space are no number; of strtod's words, inf,
+ * infinity and nan are read. Where the compiler has 128-bit integers the scaling itself
  * is an integer product: the 64-bit significand times the double-double
  * 10^k as a 128-bit integer (the same error bound, a few multiplies of
  * latency instead of a chain of dependent floating-point operations); the
@@ -780,8 +782,18 @@ double num_parse_n(const char *s, size_t len, char **end)
         }
     }
     if (*p == '+' || *p == '-') neg = *p++ == '-';
-    if (!is_digit(*p) && !(*p == '.' && is_digit(p[1]))) return strtod(s, end);
-    if (p[0] == '0' && (p[1] == 'x' || p[1] == 'X')) return strtod(s, end);
+    /* decimal only: of strtod's other forms the words inf, infinity and nan
+     * (any case, nan(...) too) are read by strtod; hexadecimal text ("0x",
+     * "0x1p3") and leading white space are no number (end at s) */
+    if (!is_digit(*p) && !(*p == '.' && is_digit(p[1]))) {
+        if (*p == 'i' || *p == 'I' || *p == 'n' || *p == 'N') return strtod(s, end);
+        if (end != NULL) *end = (char *)s;
+        return 0.0;
+    }
+    if (p[0] == '0' && (p[1] == 'x' || p[1] == 'X')) {
+        if (end != NULL) *end = (char *)s;
+        return 0.0;
+    }
     /* leading zeros, then at most 19 significant digits (more: strtod) */
     while (*p == '0') {
         p++;

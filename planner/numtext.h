@@ -13,8 +13,11 @@
  * bytes); returns the length. */
 size_t num_format17(double x, char *buf);
 
-/* Reads a number as strtod does (the same double, the same end), for the
- * text at s; *end is set as strtod's endptr. */
+/* Reads a decimal number as strtod does (the same double, the same end),
+ * for the text at s; *end is set as strtod's endptr. Decimal only: the words
+ * inf, infinity and nan (any case, with a sign, nan(...)) are read as strtod
+ * reads them, but hexadecimal text ("0x1B58", "0x1p3", "0x") and leading
+ * white space are no number: 0 returned, *end = s. */
 double num_parse(const char *s, char **end);
 
 /* num_parse reading eight digits at a time: s NUL-terminated as for

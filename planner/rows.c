@@ -131,9 +131,19 @@ static int parse_terms(const char *s, unsigned *terms)
     }
 }
 
-/* Parse a sky list ("zodiacal+moon+starlight", "all", "none"; empty: none;
- * "all" is zodiacal+moon, as before starlight existed) into
- * oi_expose_goal.sky; 0 or -1. */
+/* The words of the sky column (oi_expose_goal.sky bits): parse_sky reads
+ * them, --help lists them (main.c), from this one table. "all" is
+ * zodiacal+moon, as before starlight existed. */
+const plan_word plan_sky_words[] = {
+    {"none", 0u},
+    {"zodiacal", OI_SKY_ZODIACAL},
+    {"moon", OI_SKY_MOON},
+    {"starlight", OI_SKY_STARLIGHT},
+    {"all", OI_SKY_ZODIACAL | OI_SKY_MOON},
+    {NULL, 0u}};
+
+/* Parse a sky list (plan_sky_words joined by '+', e.g. "zodiacal+moon+starlight";
+ * empty: none) into oi_expose_goal.sky; 0 or -1. */
 static int parse_sky(const char *s, unsigned *sky)
 {
     char tok[16];
@@ -143,6 +153,7 @@ static int parse_sky(const char *s, unsigned *sky)
     if (*p == '\0') return 0;
     for (;;) {
         size_t n = 0;
+        const plan_word *w;
         while (*p == ' ' || *p == '\t') p++;
         while (*p && *p != '+' && *p != ' ' && *p != '\t') {
             if (n + 1 >= sizeof tok) return -1;
@@ -150,13 +161,10 @@ static int parse_sky(const char *s, unsigned *sky)
         }
         tok[n] = '\0';
         while (*p == ' ' || *p == '\t') p++;
-        if (same_nocase(tok, "none")) {
-            /* nothing added */
-        } else if (same_nocase(tok, "zodiacal")) *sky |= OI_SKY_ZODIACAL;
-        else if (same_nocase(tok, "moon")) *sky |= OI_SKY_MOON;
-        else if (same_nocase(tok, "starlight")) *sky |= OI_SKY_STARLIGHT;
-        else if (same_nocase(tok, "all")) *sky |= OI_SKY_ZODIACAL | OI_SKY_MOON;
-        else return -1;
+        for (w = plan_sky_words; w->word != NULL && !same_nocase(tok, w->word); w++) {
+        }
+        if (w->word == NULL) return -1;
+        *sky |= w->bits;
         if (*p == '\0') return 0;
         if (*p != '+') return -1;
         p++;
@@ -542,9 +550,13 @@ const char *plan_row_id(const plan_rules *rules, const csv_reader *r, int st, un
 
 void plan_csv_error(const csv_reader *r, int st, plan_msg *msg)
 {
-    char where[48];
-    snprintf(where, sizeof where, "(at character %lu of the line)", r->err_col);
-    fail(msg, r->err_line, -1, csv_result_text(st), where);
+    /* the line where the record began; where the problem is, if later */
+    char where[80];
+    if (r->err_line == r->rec_line)
+        snprintf(where, sizeof where, "(at character %lu of the line)", r->err_col);
+    else
+        snprintf(where, sizeof where, "(at line %lu, character %lu)", r->err_line, r->err_col);
+    fail(msg, r->rec_line, -1, csv_result_text(st), where);
 }
 
 /* A line appended to plan_header's notes (dropped when it does not fit). */

@@ -109,8 +109,19 @@ static inline int plan_row_extra(const plan_rules *rules, const csv_reader *r)
 const char *plan_row_id(const plan_rules *rules, const csv_reader *r, int st, unsigned long rows,
                         char *idbuf);
 
+/* A word of a column that names flags, and its bits. */
+typedef struct plan_word {
+    const char *word;
+    unsigned bits;
+} plan_word;
+
+/* The words the sky column accepts (oi_expose_goal.sky), ended by a NULL
+ * word: what parse_sky reads and --help lists. */
+extern const plan_word plan_sky_words[];
+
 /* The message of a record csv_next could not read (st, neither CSV_END,
- * CSV_IO nor CSV_NOMEM): the row is then PLAN_STATUS_PARSE. */
+ * CSV_IO nor CSV_NOMEM), at the line where the record began: the row is then
+ * PLAN_STATUS_PARSE. */
 void plan_csv_error(const csv_reader *r, int st, plan_msg *msg);
 
 /* Record r (the header's columns) into *sc, *model, *goal, *camera: returns

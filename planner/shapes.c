@@ -9,6 +9,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "numtext.h"
+
 
 #define FACET_FIELDS 8 /* nx ny nz area_m2 sided albedo_diffuse albedo_specular shininess */
 
@@ -66,7 +68,7 @@ static int number(const reader *r, const char *field, const char *text, double *
     char *end;
     char detail[128];
     errno = 0;
-    *out = strtod(text, &end);
+    *out = num_parse(text, &end); /* strtod's double, decimal only (numtext.h) */
     if (end == text || *end != '\0') {
         snprintf(detail, sizeof detail, "for %s, got \"%.60s\"", field, text);
         return fail(r, "expected a number", detail);

@@ -3,7 +3,10 @@
  * its whole-line path gives, record for record, what its byte-by-byte path
  * gives (status, fields, line numbers, error positions) on random texts of
  * the bytes that matter (separators, blanks, quotes, CR, LF, NUL), on texts
- * longer than one read block, and on hand-written cases. */
+ * longer than one read block, and on hand-written cases; a record near the
+ * record limit read in linear time; after a record too long or a bad quote
+ * the next record read from its own start (never inside quotes); a
+ * byte-order mark only at the input's start. */
 #define _POSIX_C_SOURCE 200809L /* fmemopen */
 #include <stdarg.h>
 #include <stddef.h>
@@ -13,6 +16,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "../../planner/csv_read.c"
 
@@ -80,7 +84,14 @@ static void test_hand_written(void **state)
         "",
         "\n",
         "a",
-        "1,2\n3,4\n5,6"};
+        "1,2\n3,4\n5,6",
+        "\xEF\xBB\xBF" "\xEF\xBB\xBF" "a,b\n1,2\n",
+        "a,b\n1,2\n\xEF\xBB\xBF" "a,b\n3,4\n",
+        "1,\"x\xEF\xBB\xBFy\"\n2,3\n",
+        "1,x\xEF\xBB\xBF\n\xEF\xEF\xBB\xBF,\xEF\xBB\n",
+        "\xEF\xBC\x8C,\xEF\xBB\xBE,\"\xEF\"\"\xBB\xBF\"\n",
+        "\"x\"y,\"a\nb\",1\n3,4\n",
+        "\"x\"y\"a\nb\",1\n3,4\n"};
     size_t i;
     (void)state;
     failures = 0;
@@ -94,7 +105,7 @@ static void test_hand_written(void **state)
 
 static void test_random_texts(void **state)
 {
-    static const char alphabet[] = "0123456789.e-,,,,   \t\n\n\n\"\r\0ab";
+    static const char alphabet[] = "0123456789.e-,,,,   \t\n\n\n\"\r\0ab\xEF\xBB\xBF";
     char text[400];
     long k;
     (void)state;
@@ -155,13 +166,13 @@ static void test_chunk_edges(void **state)
             memcpy(text + n + 1, "1,2\n", 4);
             check_same(text, n + 5);
         }
-        /* a quote, CR or NUL at each place: the split's masks hand the line to
-         * the byte by byte reader, the last chunk's too (a CR before the LF is
-         * every CRLF file) */
+        /* a quote, CR, NUL or byte above 0x7F at each place: the split's masks
+         * hand the line to the byte by byte reader, the last chunk's too (a CR
+         * before the LF is every CRLF file) */
         for (c = 0; c < n; c++) {
-            static const char hand_off[3] = {'"', '\r', '\0'};
+            static const char hand_off[5] = {'"', '\r', '\0', '\xEF', '\x80'};
             int k;
-            for (k = 0; k < 3; k++) {
+            for (k = 0; k < 5; k++) {
                 memset(text, '7', n);
                 text[(c + 1) % n] = ',';
                 text[c] = hand_off[k];
@@ -174,6 +185,194 @@ static void test_chunk_edges(void **state)
     assert_int_equal(failures, 0);
 }
 
+/* Reads text (n bytes) to its end in the given mode; returns the CPU
+ * seconds taken and, in st[] (up to 8), the results, in lines[] each
+ * record's rec_line, in f0[] its first field's first byte ('-' for none). */
+static double read_all(const char *text, size_t n, int byte_by_byte, int *st,
+                       unsigned long *lines, char *f0, int *count)
+{
+    FILE *fp = fmemopen((void *)text, n, "rb");
+    csv_reader r;
+    clock_t t0;
+    int k = 0, s;
+    assert_non_null(fp);
+    csv_init(&r, fp);
+    r.byte_by_byte = byte_by_byte;
+    t0 = clock();
+    while ((s = csv_next(&r)) != CSV_END && s != CSV_IO && s != CSV_NOMEM && k < 8) {
+        st[k] = s;
+        lines[k] = r.rec_line;
+        f0[k] = s == CSV_RECORD && r.nfields > 0 ? csv_field(&r, 0)[0] : '-';
+        k++;
+    }
+    *count = k;
+    t0 = clock() - t0;
+    csv_free(&r);
+    fclose(fp);
+    return (double)t0 / CLOCKS_PER_SEC;
+}
+
+static void test_long_records_in_linear_time(void **state)
+{
+    /* records of 1 MiB less a little, one field or many, unquoted or
+     * quoted, then a short one: each read in well under a second (the reader
+     * rescanned the rest of its block per byte past the first 64 KiB: 1 to
+     * 5 s), the same fields both ways */
+    const size_t n = CSV_MAX_RECORD - 64;
+    char *text = malloc(n + 16);
+    int shape;
+    (void)state;
+    failures = 0;
+    assert_non_null(text);
+    for (shape = 0; shape < 4; shape++) {
+        int st[8], count, way;
+        unsigned long lines[8];
+        char f0[8];
+        size_t i;
+        for (i = 0; i < n; i++) text[i] = (char)('0' + (char)(i % 10));
+        if (shape == 1)
+            for (i = 100; i < n; i += 1000) text[i] = ',';
+        if (shape == 2) {
+            text[0] = '"';
+            text[n - 2] = '"';
+        }
+        if (shape == 3)
+            for (i = 5; i < n; i += 7) text[i] = ' ';
+        text[n - 1] = '\n';
+        memcpy(text + n, "7,8\n", 4);
+        for (way = 0; way < 2; way++) {
+            const double sec = read_all(text, n + 4, way, st, lines, f0, &count);
+            if (sec > 0.25) {
+                print_error("shape %d (byte by byte %d): %.3f s\n", shape, way, sec);
+                failures++;
+            }
+            assert_int_equal(count, 2);
+            assert_int_equal(st[0], CSV_RECORD);
+            assert_int_equal(st[1], CSV_RECORD);
+            assert_int_equal(lines[1], 2);
+            assert_int_equal(f0[1], '7');
+        }
+        check_same(text, n + 4);
+    }
+    free(text);
+    assert_int_equal(failures, 0);
+}
+
+static void test_too_long_resumes_after_the_record(void **state)
+{
+    /* a quoted field that reaches the record limit at, just before or just
+     * after a line break inside its quotes, and the same unquoted (limit
+     * hit at a comma): the record is skipped to its end (quotes honoured)
+     * and reported at the line where it began; the next record is the one
+     * after it (the reader resumed inside the quotes: rows that are not
+     * records) */
+    const size_t lim = CSV_MAX_RECORD + 16; /* the record buffer's bytes */
+    char *text = malloc(lim + 64);
+    int d, quoted;
+    (void)state;
+    failures = 0;
+    assert_non_null(text);
+    for (quoted = 0; quoted < 2; quoted++) {
+        for (d = -6; d <= 3; d++) {
+            int st[8], count, way;
+            unsigned long lines[8];
+            char f0[8];
+            size_t len = 0, k = (size_t)((long)lim + d);
+            memcpy(text, "a,b\n", 4);
+            len = 4;
+            if (quoted) text[len++] = '"';
+            memset(text + len, 'x', k);
+            len += k;
+            {
+                const char *tail = quoted ? "\ny\n\"\"z,\n\",2\n3,4\n" : ",y,\"q\nr\"\n3,4\n";
+                memcpy(text + len, tail, strlen(tail));
+                len += strlen(tail);
+            }
+            for (way = 0; way < 2; way++) {
+                (void)read_all(text, len, way, st, lines, f0, &count);
+                if (count != 3)
+                    print_error("quoted %d, d %d, way %d: %d %d %d %d, lines %lu %lu %lu %lu\n",
+                                quoted, d, way, st[0], st[1], st[2], st[3], lines[0], lines[1],
+                                lines[2], lines[3]);
+                assert_int_equal(count, 3);
+                assert_int_equal(st[0], CSV_RECORD);
+                assert_int_equal(st[1], CSV_TOO_LONG);
+                assert_int_equal(lines[1], 2);
+                assert_int_equal(st[2], CSV_RECORD);
+                assert_int_equal(f0[2], '3');
+                assert_int_equal(lines[2], quoted ? 6 : 4);
+            }
+        }
+    }
+    free(text);
+    assert_int_equal(failures, 0);
+}
+
+static void test_bad_quote_resumes_after_the_record(void **state)
+{
+    /* text after a closing quote, then a quoted field with a line break: the
+     * record ends after that field, not at the line break */
+    static const char text[] = "\"x\"y,\"a\nb,c\",1\n3,4\n";
+    int st[8], count, way;
+    unsigned long lines[8];
+    char f0[8];
+    (void)state;
+    for (way = 0; way < 2; way++) {
+        (void)read_all(text, sizeof text - 1, way, st, lines, f0, &count);
+        assert_int_equal(count, 2);
+        assert_int_equal(st[0], CSV_BAD_QUOTE);
+        assert_int_equal(lines[0], 1);
+        assert_int_equal(st[1], CSV_RECORD);
+        assert_int_equal(f0[1], '3');
+        assert_int_equal(lines[1], 3);
+    }
+}
+
+/* The first result of text after its records "ok,...": want, the mark at
+ * line and col of the record begun at line rec, then the record "next". */
+static void check_bom(const char *text, int want, unsigned long rec, unsigned long line,
+                      unsigned long col)
+{
+    int way;
+    for (way = 0; way < 2; way++) {
+        FILE *fp = fmemopen((void *)text, strlen(text), "rb");
+        csv_reader r;
+        int st;
+        assert_non_null(fp);
+        csv_init(&r, fp);
+        r.byte_by_byte = way;
+        do {
+            st = csv_next(&r);
+        } while (st == CSV_RECORD && strcmp(csv_field(&r, 0), "ok") == 0);
+        if (st != want) print_error("\"%s\" way %d\n", text, way);
+        assert_int_equal(st, want);
+        if (want == CSV_BAD_BOM) {
+            assert_int_equal(r.err_line, line);
+            assert_int_equal(r.err_col, col);
+            assert_int_equal(r.rec_line, rec);
+            assert_int_equal(csv_next(&r), CSV_RECORD);
+            assert_string_equal(csv_field(&r, 0), "next");
+        }
+        csv_free(&r);
+        fclose(fp);
+    }
+}
+
+static void test_bom_only_at_the_start(void **state)
+{
+    (void)state;
+    /* the first three bytes: skipped */
+    check_bom("\xEF\xBB\xBF" "id,b\n", CSV_RECORD, 0, 0, 0);
+    /* a second mark (a header saved twice), files joined, in a field, in quotes */
+    check_bom("\xEF\xBB\xBF\xEF\xBB\xBF" "id,b\nnext\n", CSV_BAD_BOM, 1, 1, 1);
+    check_bom("ok,1\n\xEF\xBB\xBF" "id,b\nnext\n", CSV_BAD_BOM, 2, 2, 1);
+    check_bom("ok,1\r\nx,  \xEF\xBB\xBF" "id\r\nnext\n", CSV_BAD_BOM, 2, 2, 5);
+    check_bom("ok,1\n1,\"a\nb\xEF\xBB\xBF\"\nnext\n", CSV_BAD_BOM, 2, 3, 2);
+    check_bom("ok,1\n\"\xEF\xBB\xBF\",1\nnext\n", CSV_BAD_BOM, 2, 2, 2);
+    /* other 0xEF sequences are text (U+FF0C, U+FEFE) */
+    check_bom("ok,1\n\xEF\xBC\x8C,\xEF\xBB\xBE\n", CSV_RECORD, 0, 0, 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -181,6 +380,10 @@ int main(void)
         cmocka_unit_test(test_random_texts),
         cmocka_unit_test(test_across_read_blocks),
         cmocka_unit_test(test_chunk_edges),
+        cmocka_unit_test(test_long_records_in_linear_time),
+        cmocka_unit_test(test_too_long_resumes_after_the_record),
+        cmocka_unit_test(test_bad_quote_resumes_after_the_record),
+        cmocka_unit_test(test_bom_only_at_the_start),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

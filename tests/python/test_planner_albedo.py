@@ -88,6 +88,7 @@ def test_uniform_is_the_default():
     ("2 3\n0.1 0.2 0.3\n0.1 0.2 0.3\n0.1 0.2 0.3\n", 4, "more rows than n_lat"),
     ("2 3\n0.1 0.2 0.3\n", 2, "ends early"),
     ("2 3\n0.1 0.2 abc\n", 2, "not a number"),
+    ("2 3\n0.1 0.2 0x0.8p0\n", 2, "not a number"),
     ("0 3\n", 1, "bad n_lat"),
 ])
 def test_bad_map_file_exits_2_naming_file_and_line(tmp_path, text, line, what):

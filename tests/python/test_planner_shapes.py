@@ -341,6 +341,8 @@ BAD_FILES = [
     ("shape a\n0 0 1 1 1 0.2 0 10 5\n", 2, "(more than 8 fields)"),
     ("shape a\n0 0 1 1 1 0.2 zero 10\n", 2, 'expected a number for albedo_specular, got "zero"'),
     ("shape a\n0 0 1 1x 1 0.2 0 10\n", 2, "expected a number for area_m2"),
+    ("shape a\n0 0 1 0x1p0 1 0.2 0 10\n", 2, 'expected a number for area_m2, got "0x1p0"'),
+    ("shape a\n0 0 0x1 1 1 0.2 0 10\n", 2, 'expected a number for nz, got "0x1"'),
     ("shape a\nnan 0 1 1 1 0.2 0 10\n", 2, "expected a finite number for nx"),
     ("shape a\n0 0 1 inf 1 0.2 0 10\n", 2, "expected a finite number for area_m2"),
     ("shape a\n0 0 1 1 1 0.2 0 1e999\n", 2, "expected a finite number for shininess"),
