@@ -40,6 +40,8 @@ def _integer(v, name, lo_hi=INT_RANGE):
     and the range for one outside it (ctypes and numpy would wrap it modulo
     2^32)."""
     lo, hi = lo_hi
+    if isinstance(v, np.ndarray) and v.ndim == 0:
+        v = v[()]  # a 0-d array: its one value
     if isinstance(v, (bool, np.bool_)) or not isinstance(
             v, (int, np.integer, float, np.floating)):
         raise TypeError(f"{name}: an integer, got {v!r:.60} ({type(v).__name__})")

@@ -135,7 +135,8 @@ def _interval(v, lo, hi, lo_open=False, hi_open=False):
 
 
 def _show(lo, hi, lo_open=False, hi_open=False):
-    return f"{'(' if lo_open else '['}{lo:g}, {hi:g}{')' if hi_open else ']'}"
+    h = "pi" if hi == np.pi else f"{hi:g}"
+    return f"{'(' if lo_open else '['}{lo:g}, {h}{')' if hi_open else ']'}"
 
 
 # oi_camera's ranges as include/orbillum.h documents them (oi_expose, Note 4):
