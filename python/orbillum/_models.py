@@ -121,7 +121,8 @@ def _model_problem(m, albedo=False):
             n_lat, n_lon = m.albedo_map_n_lat, m.albedo_map_n_lon
             if not m.albedo_map:
                 return "model['albedo_model'] = 'map' needs model['albedo_map'] (a 2-D grid)"
-            if not (1 <= n_lat <= L.OI_ALBEDO_MAP_MAX_DIM and 1 <= n_lon <= L.OI_ALBEDO_MAP_MAX_DIM):
+            top = L.OI_ALBEDO_MAP_MAX_DIM
+            if not (1 <= n_lat <= top and 1 <= n_lon <= top):
                 return (f"model['albedo_map']: shape ({n_lat}, {n_lon}); each dimension "
                         f"1..OI_ALBEDO_MAP_MAX_DIM = {L.OI_ALBEDO_MAP_MAX_DIM}")
     return None

@@ -90,10 +90,11 @@ def sky_mask(sky):
     Example:
 
     >>> import orbillum
-    >>> orbillum.sky_mask("zodiacal+starlight") == orbillum.OI_SKY_ZODIACAL | orbillum.OI_SKY_STARLIGHT
-    True
-    >>> orbillum.sky_mask("all") == orbillum.OI_SKY_ZODIACAL | orbillum.OI_SKY_MOON, orbillum.sky_mask("")
-    (True, 0)
+    >>> Z, M, S = orbillum.OI_SKY_ZODIACAL, orbillum.OI_SKY_MOON, orbillum.OI_SKY_STARLIGHT
+    >>> orbillum.sky_mask("zodiacal+starlight") == Z | S, orbillum.sky_mask("all") == Z | M
+    (True, True)
+    >>> orbillum.sky_mask(""), orbillum.sky_mask(Z | M)
+    (0, 3)
     """
     if isinstance(sky, str):
         m = 0
