@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""The binding refuses what it cannot represent (issue 28, item 4): every
+"""The binding refuses what it cannot represent: every
 case here was accepted silently, or answered with a valid-looking value,
 before (each test fails on the binding of 2026-12-07, main 2a11fcd):
 

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""Composition suite (issue 28, item 2): every combination of the options a
+"""Composition suite: every combination of the options a
 row can choose, through the binding, held to what must hold across options.
 
 The grid (a deterministic product, no random draw): five scenes (a sunlit
@@ -33,7 +33,7 @@ that it reports it):
    (bit for bit equal elsewhere), by the dependency table DEPENDS below (from
    include/orbillum.h's oi_illum and oi_illuminate Notes). In particular an
    albedo model that moves e_earth must move flux_earth for every target: a
-   sphere does; facets do not (issue 28: "albedo_model=knocke (and map) is
+   sphere does; facets do not (the known case: "albedo_model=knocke (and map) is
    ignored for facet targets"), marked xfail(strict=True) for exactly the
    facet shapes, so the test fails (XPASS) when that is fixed.
 3. Flags obey their definitions (include/orbillum.h, oi_expose_scene Notes 1,
@@ -44,7 +44,7 @@ that it reports it):
    occulted (never for the sphere); occulted implies no signal and too_faint;
    saturated iff the chosen setting's fill >= 1, and then it is the shortest
    time at the lowest gain; moon_in_fov only with the sky word moon and the
-   Moon term. (Not tested: too_faint against saturated, issue 28 item 3: the
+   Moon term. (Not tested: too_faint against saturated: the
    header does not yet say whether they exclude each other.)
 """
 import itertools
@@ -338,7 +338,7 @@ def test_an_option_changes_what_depends_on_it_and_nothing_else(grid, option):
 
 XFAIL_FACETS = pytest.mark.xfail(
     strict=True, raises=AssertionError,
-    reason="issue 28: albedo_model=knocke (and map) is ignored for facet targets: e_earth "
+    reason="known: albedo_model=knocke (and map) is ignored for facet targets: e_earth "
     "moves from 147.9 to 108.9 W/m^2 but a box-wing's flux_obs and mag_v stay the same to the last bit, with status OK and no flag (a sphere's flux does move)")
 
 
