@@ -124,6 +124,12 @@ test-precision-guard: lib ## link a program against the wrong-precision archive 
 	sh tests/c/precision_guard.sh $(BUILDDIR) $(CC)
 TEST_TARGETS += test-precision-guard
 
+# Each section header of the public API (include/orbillum/*.h) compiles alone.
+.PHONY: test-headers
+test-headers: ## compile each section header include/orbillum/*.h alone: both precisions, every option
+	sh tests/c/header_sections.sh $(CC)
+TEST_TARGETS += test-headers
+
 test: deps $(TEST_TARGETS) ## every test: C (both precisions) and Python
 	@echo "all tests passed"
 

@@ -123,6 +123,8 @@ typedef double oi_real;
 #define oi_illuminate_batch_outputs oi_illuminate_batch_outputs_sp
 #define oi_expose_batch oi_expose_batch_sp
 #define oi_expose_scene_batch oi_expose_scene_batch_sp
+#define oi_expose_batch_outputs oi_expose_batch_outputs_sp
+#define oi_expose_scene_batch_outputs oi_expose_scene_batch_outputs_sp
 #define oi_zodiacal_radiance oi_zodiacal_radiance_sp
 #define oi_starlight_radiance oi_starlight_radiance_sp
 #define oi_galactic_from_icrs oi_galactic_from_icrs_sp

@@ -12,7 +12,7 @@
 
 SHARED_LIB := $(BUILDDIR)/liborbillum.so
 RT_HDR := $(wildcard include/*.h include/*/*.h src/*.h src/*/*.h tables/*.h)
-PY_BINDING_SRC := python/pyproject.toml python/setup.py $(wildcard python/orbillum/*.py python/orbillum/catalog/*.py)
+PY_BINDING_SRC := python/pyproject.toml python/setup.py $(wildcard python/orbillum/*.py python/orbillum/catalog/*.py python/orbillum/catalog/data/*)
 PASS_CASE ?= geo-inspector-eclipse
 PASS_DIR := $(BUILDDIR)/pass-example
 LC_CASE ?= leo-leo-pass

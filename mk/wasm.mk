@@ -5,7 +5,8 @@
 #   make test-wasm     the wasm module against the native build, bit for bit: the shipped
 #                      cases (through the JavaScript module, vs build/oi-plan --csv) and every
 #                      double-precision stability vector (the same evaluators, both builds; and
-#                      through the JavaScript module); the page's picture against the runtime's flux
+#                      through the JavaScript module); the page's picture against the runtime's flux;
+#                      the planner's CSV reader over a text in memory against it over a file
 #   make viewer        build/viewer/: the static page (three.js bundled, no network at run time)
 #   make test-viewer   the page in headless Chromium (Playwright); skips, saying so, when no
 #                      browser can be installed
@@ -20,9 +21,13 @@ WASM_TARGET := --target=wasm32-wasi
 # log10 in glibc's form (web/wasm/oi_wasm_math.c says why), through the runtime's port hook.
 WASM_MATH := -include web/wasm/oi_wasm_math.h -DOI_LOG10=oi_wasm_log10
 WASM_CFLAGS := $(WASM_TARGET) $(WARN) $(OPT) $(RT_MATH) -ffunction-sections -fdata-sections \
-  $(WASM_MATH) -Iinclude -Isrc -Itables
-WASM_SRC := $(RT_SRC) web/wasm/oi_wasm.c \
-  web/wasm/oi_wasm_math.c
+  $(WASM_MATH) -Iinclude -Isrc -Itables -Iplanner
+# The planner's row rules, its CSV reader (over a text in memory) and its rows' text: the very
+# files build/oi-plan compiles (docs/viewer.md), for planCsv (web/wasm/plan_wasm.c).
+WASM_PLAN_SRC := planner/rows.c planner/csv_read.c planner/csv_mem.c planner/output_text.c \
+  planner/numtext.c planner/shapes_find.c
+WASM_SRC := $(RT_SRC) $(WASM_PLAN_SRC) \
+  web/wasm/oi_wasm.c web/wasm/oi_wasm_math.c web/wasm/plan_wasm.c
 WASM_OBJ := $(patsubst %.c,$(WASM_DIR)/obj/%.o,$(WASM_SRC))
 # What JavaScript calls: the public API (include/orbillum.h) and web/wasm/oi_wasm.c.
 WASM_EXPORTS := oi_status_name oi_lambert_phase oi_angle oi_cap_overlap oi_sun_fraction \
@@ -32,7 +37,10 @@ WASM_EXPORTS := oi_status_name oi_lambert_phase oi_angle oi_cap_overlap oi_sun_f
   oi_skylight oi_sun_fraction_batch oi_earthshine_batch oi_illuminate_batch \
   oi_illuminate_batch_outputs oi_expose_batch oi_expose_scene_batch oi_expose_batch_outputs \
   oi_expose_scene_batch_outputs \
-  oi_wasm_scratch oi_wasm_scratch_bytes oi_wasm_layout_count oi_wasm_layout_name oi_wasm_layout_value
+  oi_wasm_scratch oi_wasm_scratch_bytes oi_wasm_layout_count oi_wasm_layout_name oi_wasm_layout_value \
+  oi_plan_wasm_text oi_plan_wasm_records oi_plan_wasm_record oi_plan_wasm_nfields \
+  oi_plan_wasm_field oi_plan_wasm_open oi_plan_wasm_notes oi_plan_wasm_next oi_plan_wasm_finish \
+  oi_plan_wasm_row_int oi_plan_wasm_row_ptr oi_plan_wasm_csv_header
 WASM_COMMA := ,
 WASM_LDFLAGS := $(WASM_TARGET) -nostartfiles -Wl,--no-entry -Wl,--gc-sections \
   $(addprefix -Wl$(WASM_COMMA)--export=,$(WASM_EXPORTS))
@@ -69,8 +77,10 @@ $(WASM_DIR)/obj/%.o: %.c mk/wasm.mk | $(WASM_DIR)/.deps
 	@mkdir -p $(dir $@)
 	$(WASM_CC) $(WASM_CFLAGS) -MMD -MP -c $< -o $@
 
+# The planner's number text falls back on libc's snprintf and strtod in rare cases: wasi-libc's
+# full printf and scanf (long double) keep them free of stderr, so the module still imports nothing.
 $(WASM_MODULE): $(WASM_OBJ) mk/wasm.mk
-	$(WASM_CC) $(WASM_LDFLAGS) $(WASM_OBJ) -lm -o $@
+	$(WASM_CC) $(WASM_LDFLAGS) $(WASM_OBJ) -lc-printscan-long-double -lm -o $@
 
 $(WASM_JS): web/src/orbillum.js
 	@mkdir -p $(dir $@)
@@ -86,7 +96,15 @@ $(WASM_DIR)/stab_dump.wasm: $(STAB_DUMP_SRC) $(WASM_OBJ) $(wildcard tests/stabil
 	  -Iinclude -Isrc -Itables -Itests $(STAB_DUMP_SRC) \
 	  $(WASM_OBJ) -lm -o $@
 
-test-wasm: wasm $(PLAN) $(WASM_DIR)/stab_dump $(WASM_DIR)/stab_dump.wasm ## wasm vs native, bit for bit
+# The planner's CSV reader over a text in memory (planCsv's) against the same reader over a file
+# (oi-plan's), natively: web/wasm/csv_mem_check.c.
+CSV_MEM_CHECK_SRC := web/wasm/csv_mem_check.c planner/csv_read.c planner/csv_mem.c
+$(WASM_DIR)/csv_mem_check: $(CSV_MEM_CHECK_SRC) planner/csv_read.h
+	@mkdir -p $(dir $@)
+	$(CC) $(TEST_CFLAGS) -Iplanner $(CSV_MEM_CHECK_SRC) -o $@
+
+test-wasm: wasm $(PLAN) $(WASM_DIR)/stab_dump $(WASM_DIR)/stab_dump.wasm $(WASM_DIR)/csv_mem_check ## wasm vs native, bit for bit
+	$(WASM_DIR)/csv_mem_check
 	$(NODE) --test tests/browser/test_wasm.mjs tests/browser/test_render.mjs
 
 # ---- the page

@@ -10,10 +10,6 @@
 #include "orbillum.h"
 #include "shapes.h"
 
-/* Status name of a row whose text could not be parsed (planner level, not a
- * library status). */
-#define PLAN_STATUS_PARSE "ERR_PARSE"
-
 /* Exit codes. */
 #define PLAN_EXIT_OK 0       /* every row OK (warnings count as OK) */
 #define PLAN_EXIT_ROWS 1     /* some rows had errors */

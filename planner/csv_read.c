@@ -42,6 +42,7 @@ void csv_free(csv_reader *r)
  * or when the block cannot be allocated (then read as a read error). */
 static int refill(csv_reader *r)
 {
+    if (r->fp == NULL) return 0; /* a text in memory (csv_init_mem): its end */
     if (r->in == NULL) {
         r->in = (unsigned char *)calloc(CSV_READ_BLOCK + CSV_BLOCK_SLACK, 1);
         if (r->in == NULL) {
@@ -71,7 +72,7 @@ static void unget_byte(csv_reader *r)
 /* A read error, or no memory for the block. */
 static int read_failed(const csv_reader *r)
 {
-    return ferror(r->fp) || r->in_nomem;
+    return (r->fp != NULL && ferror(r->fp)) || r->in_nomem;
 }
 
 /* Next byte with line ends normalised: LF, CRLF and CR all read as '\n'. */

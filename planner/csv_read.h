@@ -49,6 +49,15 @@ typedef struct csv_reader {
 
 void csv_init(csv_reader *r, FILE *fp);
 void csv_free(csv_reader *r);
+/* The reader over a text in memory, without stdio or allocation
+ * (csv_mem.c): text[0..len) followed by CSV_MEM_SLACK readable bytes; the
+ * records' text in buf (CSV_MEM_BUF_BYTES(len) bytes) and their field
+ * offsets in start (CSV_MEM_STARTS(len) entries), both the caller's. The
+ * same records as csv_init on a file of that text; no csv_free. */
+#define CSV_MEM_SLACK 16u
+#define CSV_MEM_BUF_BYTES(len) (((len) < CSV_MAX_RECORD ? (len) : CSV_MAX_RECORD) + 16u)
+#define CSV_MEM_STARTS(len) CSV_MEM_BUF_BYTES(len)
+void csv_init_mem(csv_reader *r, const char *text, size_t len, char *buf, size_t *start);
 /* Read the next non-blank record; returns an enum csv_result. */
 int csv_next(csv_reader *r);
 /* (inline: called a few times per field) */

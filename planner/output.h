@@ -43,6 +43,14 @@ void out_csv_fields(FILE *fp, const char *id, const char *status_name, int has_n
  * status is no library name: out_csv_fields writes those. */
 size_t out_csv_text(char *line, const char *id, const char *status_name, int has_numbers,
                     int has_observer, unsigned flags, const oi_illum *il, const oi_exposure *ex);
+/* The row's numbers and flags, from the first number's comma to the
+ * newline, at line (OUT_CSV_LINE_MAX bytes): num and obs say whether the
+ * illumination's and the observer's numbers are printed (empty fields
+ * else); returns the length. */
+size_t out_csv_numbers(char *line, int num, int obs, unsigned flags, const oi_illum *il,
+                       const oi_exposure *ex);
+/* Degrees per radian, as the CSV's earth_theta_deg is printed. */
+#define OUT_RAD_TO_DEG (180.0 / 3.14159265358979323846)
 /* Flag names joined by '+' into buf (empty string for none). */
 void out_flags(unsigned flags, char *buf, size_t size);
 

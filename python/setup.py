@@ -4,6 +4,10 @@
 The C sources live beside this directory in the repository, so install from a
 checkout: ``pip install ./python``. The flags are the repository Makefile's own,
 read from it (WARN, OPT, RT_MATH), plus -fPIC; the compiler is $CC or cc. Set ORBILLUM_LIB at run time to use another build instead (e.g. build/liborbillum.so from ``make shared``).
+
+Extras: ``pip install "./python[catalog]"`` installs what the catalogue planner
+(orbillum.catalog) needs, ``[plots]`` matplotlib for the examples' plots, each
+pinned to the version of ../requirements.lock (read here, so the two agree).
 """
 import glob
 import os
@@ -28,6 +32,25 @@ def make_variable(name):
                 if found and key.strip() == name:
                     return shlex.split(value, comments=True)
     raise SystemExit(f"orbillum: no {name} in ../Makefile: install from a repository checkout")
+
+
+#: the extras and the packages each needs; the versions are requirements.lock's
+EXTRAS = {"catalog": ("astropy", "sgp4", "pyarrow", "tqdm", "dask", "distributed"),
+          "plots": ("matplotlib",)}
+
+
+def locked_extras():
+    """EXTRAS with each package pinned as ../requirements.lock pins it."""
+    pins = {}
+    with open(os.path.join(ROOT, "requirements.lock")) as f:
+        for line in f:
+            name, found, version = line.split("#", 1)[0].strip().partition("==")
+            if found:
+                pins[name.lower()] = version.strip()
+    missing = [p for names in EXTRAS.values() for p in names if p not in pins]
+    if missing:
+        raise SystemExit(f"orbillum: no pin for {', '.join(missing)} in ../requirements.lock")
+    return {extra: [f"{p}=={pins[p]}" for p in names] for extra, names in EXTRAS.items()}
 
 
 class BuildWithLibrary(build_py):
@@ -60,4 +83,5 @@ class BinaryDistribution(Distribution):
         return True
 
 
-setup(cmdclass={"build_py": BuildWithLibrary}, distclass=BinaryDistribution)
+setup(cmdclass={"build_py": BuildWithLibrary}, distclass=BinaryDistribution,
+      extras_require=locked_extras())

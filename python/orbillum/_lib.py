@@ -3,7 +3,8 @@
 
 The one mirror of the header in Python: the binding uses it, and so do the
 property tests (tests/python/_oi_ctypes.py). Every constant of the header
-(enum oi_status and every numeric OI_* #define of include/*.h) has its
+(enum oi_status and every numeric OI_* #define of include/*.h and of the
+section headers include/orbillum/*.h) has its
 namesake here with the same value, and every structure mirrors its C
 definition field by field, in order, with the same types;
 tests/python/test_binding_abi.py parses the header and compiles a C program
@@ -35,7 +36,7 @@ OI_ERR_INPUT = -13
 OI_ERR_FLAGS = -14
 OI_ERR_SHAPE = -15
 
-# ---- include/orbillum.h
+# ---- include/orbillum.h (its sections include/orbillum/*.h)
 OI_VERSION_MAJOR = 0
 OI_VERSION_MINOR = 2
 OI_VERSION_PATCH = 0
@@ -206,7 +207,7 @@ class oi_sky_table(ctypes.Structure):
     ]
 
 
-# ---- include/orbillum.h structures
+# ---- include/orbillum.h structures (its sections include/orbillum/*.h)
 class oi_model(ctypes.Structure):
     _fields_ = [
         ("tsi_w_m2", real), ("au_km", real), ("sun_radius_km", real),

@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * batch.c: the batch calls, the single calls over caller-owned arrays with
- * the model (and the camera) validated once per batch (include/orbillum.h,
- * "batch"). Each row goes through the same internal function the single
+ * the model (and the camera) validated once per batch
+ * (include/orbillum/batch.h). Each row goes through the same internal function the single
  * call uses, so its outputs are the single call's bits; the savings are the
  * model's validation per row and, in oi_sun_fraction_batch and
  * oi_illuminate_batch_outputs (src/scene/illuminate_outputs.c), what the outputs

@@ -3,7 +3,7 @@
  * expose_batch.c: the exposure batches, oi_expose_batch and oi_expose_scene_batch
  * with their outputs masks (oi_expose_batch_outputs, oi_expose_scene_batch_outputs):
  * the exposure over caller-owned arrays with an outputs mask
- * (include/orbillum.h, "batch"). The camera, the model and the goal's parts
+ * (include/orbillum/batch.h). The camera, the model and the goal's parts
  * are checked and formed once; each row goes through the single call's own
  * functions (src/camera/expose.c, src/scene/expose_scene.c), told what to compute.
  */

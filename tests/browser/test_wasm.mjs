@@ -18,8 +18,9 @@ import { WASI } from 'node:wasi';
 
 const ROOT = path.resolve(path.dirname(new URL(import.meta.url).pathname), '../..');
 const BUILD = process.env.BUILDDIR ? path.resolve(ROOT, process.env.BUILDDIR) : path.join(ROOT, 'build');
-const { loadOrbillum, parseCsv, PLAN_COLUMNS } = await import(path.join(BUILD, 'wasm/orbillum.js'));
+const { loadOrbillum, PLAN_COLUMNS } = await import(path.join(BUILD, 'wasm/orbillum.js'));
 const oi = await loadOrbillum(fs.readFileSync(path.join(BUILD, 'wasm/orbillum.wasm')));
+const parseCsv = (text) => oi.readCsv(text); // the planner's own reader, in the module
 
 const f64 = new Float64Array(1);
 const u64 = new BigUint64Array(f64.buffer);
@@ -379,4 +380,101 @@ for (const run of RUNS) test(`every double-precision stability vector through th
   assert.deepEqual(differ, [], `${differ.length} of ${outputs} outputs differ by more than ${run.maxUlp} ulp`);
   console.log(`# stability through orbillum.js (${run.what}): ${native.length} vectors, ${outputs} outputs, ` +
     `${outputs - near.length} bit-identical${near.length ? `, 1 ulp: ${near.join('; ')}` : ''}`);
+});
+
+// The planner's reader and row rules on a text that tries them: a byte-order mark, CRLF and CR
+// line ends, blank lines, quoted ids (commas, quotes, a line break, blanks), every optional
+// column (velocities, sky, sensor temperature, the Earth's shape, the albedo model, band,
+// shape and attitude), every row error oi-plan reports, a record the reader rejects (a quote
+// never closed, a NUL byte) and one longer than its limit (1 MiB). planCsv gives what
+// build/oi-plan --csv prints, row by row, and the same messages it writes on stderr.
+function trickyCase() {
+  const head = ['id', 'sun_x', 'sun_y', 'sun_z', 'moon_x', 'moon_y', 'moon_z', 'target_x', 'target_y', 'target_z',
+    'observer_x', 'observer_y', 'observer_z', 'camera', 'target_radius_m', 'target_albedo', 'earth_albedo',
+    'Target_VX', 'target_vy', 'target_vz', 'observer_vx', 'observer_vy', 'observer_vz', 'terms', 'sky',
+    'sensor_temp_c', 'earth_shape', 'albedo_model', 'epoch_jd', 'earth_rotation_deg', 'band', 'atmosphere',
+    'target_shape', 'q_w', 'q_x', 'q_y', 'q_z', 'no_such_column'];
+  const rows = oi.readCsv(fs.readFileSync(path.join(ROOT, 'tests/golden/leo-leo-pass.in.csv'), 'utf8')).slice(1);
+  const base = (i) => rows[i].slice(1, 17);
+  const extra = (o) => ['7.1', '-0.2', '0.3', '', '', '', '', '', '', '', '', '', '', '', '', '', '', '', '', '', 'x']
+    .map((v, k) => (k in o ? o[k] : v));
+  // extra()'s fields: 0-2 target velocity, 3-5 observer velocity, 6 terms, 7 sky, 8 sensor_temp_c,
+  // 9 earth_shape, 10 albedo_model, 11 epoch_jd, 12 earth_rotation_deg, 13 band, 14 atmosphere,
+  // 15 target_shape, 16-19 q, 20 the unknown column
+  const line = (id, i, o = {}) => [id, ...base(i), ...extra(o)].join(',');
+  const out = ['\ufeff' + head.join(',')];
+  const cases = [
+    ['plain', {}], ['"quoted, with a comma"', {}], ['"say ""hi"""', {}], ['"two\nlines"', {}], ['" blanks "', {}],
+    ['vel-empty', { 0: '', 1: '', 2: '' }], ['obs-vel', { 3: '0.1', 4: '7.5', 5: '0' }],
+    ['sky-all', { 7: 'all' }], ['sky-starlight', { 7: 'zodiacal+moon+starlight' }], ['cold', { 8: '-20' }],
+    ['wgs84', { 9: 'WGS84' }], ['knocke', { 10: 'knocke', 11: '2453912.19' }], ['total', { 13: 'total' }],
+    ['no-atm', { 14: '0' }], ['terms-all-sky', { 6: 'all+sky' }], ['terms-sun', { 6: ' sun ' }],
+    ['box', { 15: 'box-wing', 16: '0.5', 17: '0.5', 18: '0.5', 19: '0.5' }],
+    ['bad-number', { 0: '7.1x' }], ['half-vel', { 1: '' }], ['bad-terms', { 6: 'sun+star' }],
+    ['bad-sky', { 7: 'aurora' }], ['bad-shape-earth', { 9: 'pear' }], ['bad-albedo-model', { 10: 'mars' }],
+    ['knocke-no-epoch', { 10: 'knocke' }], ['map-no-file', { 10: 'map', 11: '2453912.19', 12: '10' }],
+    ['bad-band', { 13: 'infrared' }], ['bad-atm', { 14: '2' }], ['bad-shape', { 15: 'blob' }],
+    ['bad-q', { 15: 'plate', 16: '2', 17: '0', 18: '0', 19: '0' }], ['half-q', { 16: '1' }],
+    ['bad-temp', { 8: 'warm' }], ['knocke-early', { 10: 'knocke', 11: '100' }],
+  ];
+  cases.forEach(([id, o], k) => out.push(line(id, k % rows.length, o)));
+  out.push(line('bad-camera', 3).replace('telescope-15cm', 'pinhole'));
+  out.push('');
+  out.push('   ');
+  out.push(line('short', 4).split(',').slice(0, 9).join(','));
+  out.push(line('long', 5) + ',1,2,3');
+  out.push(line('nul\0byte', 7));
+  // (short fields: a plain run longer than the reader's room is rescanned byte by byte, the
+  // quadratic time on long lines that planner/csv_read.c is being rid of)
+  out.push(line('huge', 8, { 20: 'y,'.repeat((1 << 19) + 10) }));
+  out.push(line('after-huge', 9));
+  out.push(line('zero-sun', 10).replace(/^([^,]*),[^,]*,[^,]*,[^,]*/, '$1,0,0,0'));
+  out.push(line('"bad" quote', 11));
+  out.push(line('"never closed', 6)); // the last record: the quote runs to the end
+  const file = path.join(BUILD, 'wasm/tricky-case.in.csv');
+  // CRLF on most lines, a bare CR on one
+  fs.writeFileSync(file, out.map((l, i) => l + (i === 5 ? '\r' : '\r\n')).join(''));
+  return file;
+}
+
+test("a text that tries the planner's reader and row rules: planCsv gives oi-plan's rows and messages", () => {
+  const input = trickyCase();
+  const r = spawnSync(path.join(BUILD, 'oi-plan'), ['--csv', input], { encoding: 'utf8', env: GENERIC_LIBM, maxBuffer: 1 << 26 });
+  assert.equal(r.status, 1, r.stderr);
+  const native = oi.readCsv(r.stdout);
+  const mine = oi.planCsv(fs.readFileSync(input, 'utf8'));
+  assert.equal(mine.error, undefined);
+  assert.deepEqual(native[0], mine.columns);
+  assert.equal(mine.rows.length, native.length - 1);
+  const statuses = new Set();
+  mine.rows.forEach((row, i) => {
+    const want = native[i + 1];
+    statuses.add(want[1]);
+    mine.columns.forEach((c, k) => {
+      const got = row[c] ?? '';
+      const w = want[k];
+      if (typeof got === 'number') {
+        assert.equal(bits(got + 0.0 === 0 ? 0 : got), bits(Number(w)), `row ${i + 1} (${row.id}) ${c}: ${got} vs ${w}`);
+      } else {
+        assert.equal(got, w, `row ${i + 1} (${row.id}) ${c}`);
+      }
+    });
+  });
+  // every row message oi-plan prints (its notes about the header and extra fields are the batch's)
+  const prefix = `oi-plan: ${input}: `;
+  const wantMsgs = r.stderr.split('\n').filter((l) => l.startsWith(prefix + 'line ') && !l.includes(': note: '))
+    .map((l) => l.slice(prefix.length));
+  const gotMsgs = mine.rows.filter((row) => row.message).map((row) => row.message);
+  assert.deepEqual(gotMsgs, wantMsgs);
+  assert.ok(wantMsgs.length >= 21, `${wantMsgs.length} messages`);
+  assert.ok(mine.notes.includes("ignoring unknown column 38 'no_such_column'"), mine.notes);
+  for (const s of ['OK', 'ERR_PARSE', 'ERR_SHAPE', 'ERR_CAMERA', 'ERR_ZERO_VECTOR']) assert.ok(statuses.has(s), `no ${s} row`);
+  console.log(`# tricky case: ${mine.rows.length} rows (${[...statuses].join(' ')}), ${gotMsgs.length} messages, all as oi-plan's`);
+});
+
+test("the planner's reader in the module gives the records oi-plan's reader reads", () => {
+  const text = '\ufeffa, b ,"c,d"\r\n\r\n"e""f",,"g\nh"\n  \n1,2';
+  assert.deepEqual(oi.readCsv(text), [['a', 'b', 'c,d'], ['e"f', '', 'g\nh'], ['1', '2']]);
+  assert.deepEqual(oi.readCsv('x,"y\n'), [null]);
+  assert.deepEqual(oi.readCsv(''), []);
 });

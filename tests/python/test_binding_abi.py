@@ -1,5 +1,6 @@
 # SPDX-License-Identifier: MIT
-"""The binding's ctypes mirror (python/orbillum/_lib.py) is include/*.h exactly.
+"""The binding's ctypes mirror (python/orbillum/_lib.py) is include/*.h exactly
+(include/orbillum.h and its section headers include/orbillum/*.h).
 
 Two independent checks, both of which fail on anything the header has and
 the mirror lacks:
@@ -35,9 +36,11 @@ _SCALARS = {
 
 
 def _header_text():
-    """Every public header, comments removed, concatenated."""
+    """Every public header (the section headers of include/orbillum/ too), comments
+    removed, concatenated."""
     out = []
-    for path in sorted(glob.glob(os.path.join(INCLUDE, "*.h"))):
+    for path in (sorted(glob.glob(os.path.join(INCLUDE, "*.h"))) +
+                 sorted(glob.glob(os.path.join(INCLUDE, "orbillum", "*.h")))):
         with open(path) as f:
             text = f.read()
         text = re.sub(r"/\*.*?\*/", " ", text, flags=re.S)
@@ -106,8 +109,9 @@ def header_structs():
 def header_functions():
     """{function name: (return type, [(C type, pointer stars or '[]')])}."""
     text = re.sub(r"^[ \t]*#[^\n]*$", " ", HEADER, flags=re.M)  # preprocessor lines
+    text = text.replace('extern "C" {', " ")  # each section header has its own
     text = re.sub(r"\{[^{}]*\}", " ", text)  # struct and enum bodies
-    text = text.replace('extern "C" {', " ").replace("}", " ")
+    text = text.replace("}", " ")
     funcs = {}
     for statement in text.split(";"):
         m = re.match(r"^\s*((?:const\s+)?[\w ]+?[\s*]+)(oi_\w+)\s*\(([^()]*)\)\s*$",

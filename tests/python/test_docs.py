@@ -39,6 +39,7 @@ PROSE = [f for f in DOCS + _files(["python/**/*.py", "python/*.md", "python/*.to
                                    "examples/**/*.py", "examples/**/*.c", "examples/**/*.h",
                                    "tools/**/*.py",
                                    "include/*.h", "src/**/*.[ch]", "tables/*.[ch]", "tables/*.json",
+                                   "include/orbillum/*.h",
                                    "bake/**/*.py", "bake/**/*.json", "tests/**/*.py",
                                    "tests/**/*.[ch]", "tests/**/*.sh", "tests/**/*.mjs",
                                    "mk/*.mk", "Makefile", ".ci/*", "target/*.[ch]", "target/*.ld",
@@ -84,6 +85,7 @@ def test_physics_sections_cited_exist():
     cite = re.compile(r"physics\.md\)?,?\s+(?:sections?|sec\.)\s+(\d+)(?:\s*(?:-|and|,|to)\s*(\d+))?")
     bad = []
     for path in _files(["README.md", "docs/*.md", "include/*.h", "src/**/*.[ch]", "tables/*.[ch]",
+                        "include/orbillum/*.h",
                         "bake/**/*.py", "tests/**/*.py", "tests/**/*.[ch]", "tools/**/*.py",
                         "examples/**/*.[ch]", "examples/**/*.py", "python/**/*.py"]):
         with open(os.path.join(ROOT, path), errors="replace") as f:

@@ -2,11 +2,10 @@
 // orbillum.js: the flight runtime compiled to WebAssembly, called from JavaScript (browser or node).
 //
 // Structs are laid out in the module's scratch memory at the offsets the compiler reports
-// (web/wasm/oi_wasm.c exports them): no offset is typed here. planCsv() applies the planner's
-// batch rules (planner/batch.c) to a planner input CSV, row by row, so its numbers
-// are the ones `oi-plan --csv` prints for the same rows.
-
-const RAD_TO_DEG = 180.0 / 3.14159265358979323846;
+// (web/wasm/oi_wasm.c exports them): no offset is typed here. planCsv() runs the planner's own
+// CSV reader and row rules, compiled into the module (planner/csv_read.c, planner/rows.c,
+// planner/output_text.c through web/wasm/plan_wasm.c), on a planner input CSV: its rows are the
+// ones `oi-plan --csv` prints. This file only moves the text in and the numbers out.
 
 /** Load the module: `source` is a URL (browser), or the bytes (ArrayBuffer / Uint8Array). */
 export async function loadOrbillum(source) {
@@ -21,67 +20,15 @@ export async function loadOrbillum(source) {
   return new Orbillum(instance);
 }
 
-/** Text of a CSV (RFC 4180 as the planner reads it): records of trimmed fields, blank lines skipped. */
-export function parseCsv(text) {
-  const records = [];
-  let i = 0;
-  if (text.charCodeAt(0) === 0xfeff) i = 1;
-  const n = text.length;
-  while (i < n) {
-    const fields = [];
-    let content = false;
-    for (;;) {
-      while (i < n && (text[i] === ' ' || text[i] === '\t')) i++;
-      let field = '';
-      if (text[i] === '"') {
-        content = true;
-        i++;
-        for (;;) {
-          if (i >= n) throw new Error('a quote never closed');
-          if (text[i] === '"') {
-            if (text[i + 1] === '"') { field += '"'; i += 2; continue; }
-            i++;
-            break;
-          }
-          field += text[i++];
-        }
-        while (i < n && (text[i] === ' ' || text[i] === '\t')) i++;
-      } else {
-        const start = i;
-        while (i < n && text[i] !== ',' && text[i] !== '\n' && text[i] !== '\r') i++;
-        field = text.slice(start, i).replace(/[ \t]+$/, '');
-        if (field !== '') content = true;
-      }
-      fields.push(field);
-      if (i < n && text[i] === ',') { content = true; i++; continue; }
-      break;
-    }
-    if (text[i] === '\r') i++;
-    if (text[i] === '\n') i++;
-    if (content) records.push(fields);
-  }
-  return records;
-}
-
-/* strtod's syntax as the planner accepts it: 0 = number, 1 = empty, -1 = not a number. */
-function parseReal(s) {
-  const t = s.replace(/^[ \t]+|[ \t]+$/g, '');
-  if (t === '') return [1, 0];
-  if (/^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/.test(t)) return [0, Number(t)];
-  if (/^[+-]?inf(inity)?$/i.test(t)) return [0, t[0] === '-' ? -Infinity : Infinity];
-  if (/^[+-]?nan(\([0-9A-Za-z_]*\))?$/i.test(t)) return [0, NaN];
-  return [-1, 0];
-}
-
-const COLUMNS = ['id', 'sun_x', 'sun_y', 'sun_z', 'target_x', 'target_y', 'target_z',
-  'moon_x', 'moon_y', 'moon_z', 'observer_x', 'observer_y', 'observer_z', 'terms',
-  'earth_albedo', 'target_albedo', 'target_radius_m', 'camera', 'atmosphere', 'target_shape',
-  'q_w', 'q_x', 'q_y', 'q_z', 'band'];
-
-/** The planner's output columns, in its order. */
+/** The planner's output columns, in its order (checked against the module's at load). */
 export const PLAN_COLUMNS = ['id', 'status', 'sun_fraction', 'sun_fraction_atm', 'e_sun',
   'e_earth', 'e_moon', 'earth_theta_deg', 'earth_h_km', 'flux_obs', 'mag_v', 'exposure_s',
   'gain', 'snr', 'flags', 'detect_margin_mag', 'e_sky'];
+
+const UTF8 = new TextDecoder();
+
+/* %.17g's texts that are no JavaScript number literals. */
+const NUMBER_TEXT = { inf: Infinity, '-inf': -Infinity, nan: NaN, '-nan': NaN };
 
 export class Orbillum {
   constructor(instance) {
@@ -112,6 +59,9 @@ export class Orbillum {
     // the rest: the batch calls' arrays (batchRows)
     this.p.batch = at;
     this.batchBytes = base + this.x.oi_wasm_scratch_bytes() - at;
+    // the planner's output columns, as planner/output_text.c prints them
+    this.planColumns = this.cString(this.x.oi_plan_wasm_csv_header()).split(',');
+    if (this.planColumns.join() !== PLAN_COLUMNS.join()) throw new Error('PLAN_COLUMNS is not the planner\'s header');
     this.cameraList = [];
     for (let i = 0; ; i++) {
       const ptr = this.x.oi_camera_builtin(i);
@@ -131,7 +81,7 @@ export class Orbillum {
     const b = new Uint8Array(this.memory.buffer);
     let e = ptr;
     while (b[e] !== 0) e++;
-    return new TextDecoder().decode(b.subarray(ptr, e));
+    return UTF8.decode(b.subarray(ptr, e));
   }
 
   off(struct, field) {
@@ -179,22 +129,6 @@ export class Orbillum {
     return ptr === 0 ? null : this.cameraList.find((c) => c.ptr === ptr);
   }
 
-  /**
-   * The shape of a target_shape name as the planner reads it: {ptr} with ptr 0 for '' and
-   * 'sphere' (the scene's sphere), a built-in shape's address (oi_shape_find); null if unknown.
-   * (The planner's --shapes files are not read here.)
-   */
-  findShape(name) {
-    if (name === '' || name === 'sphere') return { ptr: 0 };
-    const bytes = new TextEncoder().encode(name);
-    if (bytes.length > 255) return null;
-    const b = new Uint8Array(this.memory.buffer);
-    b.set(bytes, this.p.name);
-    b[this.p.name + bytes.length] = 0;
-    const ptr = this.x.oi_shape_find(this.p.name);
-    return ptr === 0 ? null : { ptr };
-  }
-
   statusName(st) { return this.cString(this.x.oi_status_name(st)); }
 
   /** Flag names of a mask, lowest bit first, joined by '+' (as the planner prints them). */
@@ -207,10 +141,12 @@ export class Orbillum {
     return names.join('+');
   }
 
-  /* Write a scene (defaults first, then the given fields) and a model into scratch. */
+  /* Write a scene (its bytes, those of a planned row, or else the defaults; then the given
+   * fields) and a model (its bytes or zeros, then the given fields) into scratch. */
   writeScene(scene, p = this.p.scene) {
     const S = 'oi_scene';
-    this.x.oi_scene_defaults(p);
+    if (scene.bytes) new Uint8Array(this.memory.buffer).set(scene.bytes, p);
+    else this.x.oi_scene_defaults(p);
     for (const f of ['sun_km', 'moon_km', 'target_km', 'observer_km']) {
       if (scene[f]) this.set3(p, S, f, scene[f]);
     }
@@ -219,7 +155,8 @@ export class Orbillum {
     for (const f of ['earth_albedo', 'target_albedo', 'target_radius_m']) {
       if (scene[f] !== undefined) this.setR(p, S, f, scene[f]);
     }
-    // a shape: the address findShape() gives (wasm32 pointers are 32-bit); its attitude (w, x, y, z)
+    // a shape: an address in the module (oi_shape_find's, or a planned row's; wasm32 pointers are
+    // 32-bit); its attitude (w, x, y, z)
     if (scene.shape_ptr) this.setU(p, S, 'shape', scene.shape_ptr);
     if (scene.attitude_q) for (let k = 0; k < 4; k++) this.setR(p, S, 'attitude_q', scene.attitude_q[k], k);
     return p;
@@ -227,7 +164,8 @@ export class Orbillum {
 
   writeModel(model = {}) {
     const p = this.p.model;
-    new Uint8Array(this.memory.buffer, p, this.layout['sizeof.oi_model']).fill(0);
+    if (model.bytes) new Uint8Array(this.memory.buffer).set(model.bytes, p);
+    else new Uint8Array(this.memory.buffer, p, this.layout['sizeof.oi_model']).fill(0);
     const M = 'oi_model';
     for (const f of ['tsi_w_m2', 'au_km', 'sun_radius_km', 'earth_radius_km', 'moon_radius_km', 'moon_albedo']) {
       if (model[f] !== undefined) this.setR(p, M, f, model[f]);
@@ -276,10 +214,11 @@ export class Orbillum {
   /**
    * oi_illuminate and, with an observer, oi_expose_scene on one scene.
    * camera: a camera of cameras(); manual: null (the runtime's choice) or {time_s, gain_index}
-   * (the runtime then exposes with that one time and gain: a copy of the camera that has only them).
+   * (the runtime then exposes with that one time and gain: a copy of the camera that has only them);
+   * goal: null (the defaults) or a planned row's goal ({bytes}: its sky and sensor temperature).
    * Returns {status, illum, expo (or null), expoStatus}.
    */
-  compute(scene, model, camera, manual = null) {
+  compute(scene, model, camera, manual = null, goal = null) {
     const ps = this.writeScene(scene);
     const pm = this.writeModel(model);
     const st = this.x.oi_illuminate(ps, pm, this.p.illum);
@@ -300,7 +239,9 @@ export class Orbillum {
       this.setR(cptr, C, 'gains', camera.gains[manual.gain_index], 0);
       this.setR(cptr, C, 'read_noise_e', camera.read_noise_e[manual.gain_index], 0);
     }
-    const st2 = this.x.oi_expose_scene(cptr, ps, this.p.illum, pm, 0, this.p.expo);
+    let pg = 0;
+    if (goal && goal.bytes) { new Uint8Array(this.memory.buffer).set(goal.bytes, this.p.goal); pg = this.p.goal; }
+    const st2 = this.x.oi_expose_scene(cptr, ps, this.p.illum, pm, pg, this.p.expo);
     out.expoStatus = st2;
     if (st2 >= 0) {
       out.expo = this.readExposure(this.p.expo);
@@ -509,171 +450,116 @@ export class Orbillum {
     return { result, rows };
   }
 
+  /* The text's UTF-8 bytes in the module's memory, for the planner's reader: their length. */
+  writeText(text) {
+    const bytes = new TextEncoder().encode(text);
+    const ptr = this.x.oi_plan_wasm_text(bytes.length);
+    if (ptr === 0) throw new Error(`no memory for a text of ${bytes.length} bytes`);
+    new Uint8Array(this.memory.buffer).set(bytes, ptr);
+    return bytes.length;
+  }
+
+  /** Records of a CSV text, as the planner's reader (planner/csv_read.c) gives them: arrays of fields. */
+  readCsv(text) {
+    this.x.oi_plan_wasm_records(this.writeText(text));
+    const records = [];
+    for (;;) {
+      const st = this.x.oi_plan_wasm_record();
+      if (st === 1) break; // CSV_END
+      if (st !== 0) { records.push(null); continue; } // a record the reader rejects
+      const n = this.x.oi_plan_wasm_nfields();
+      records.push(Array.from({ length: n }, (_, i) => this.cString(this.x.oi_plan_wasm_field(i))));
+    }
+    return records;
+  }
+
+  /* A copy of a struct's bytes in the module's memory. */
+  bytesAt(ptr, size) { return new Uint8Array(this.memory.buffer, ptr, size).slice(); }
+
+  /* The planner's fields of the row the module holds (oi_plan_wasm_next or _finish): status,
+   * the numbers as doubles (null where the planner leaves the field empty), flags. */
+  readPlanned(row) {
+    const X = this.x;
+    row.status = this.cString(X.oi_plan_wasm_row_ptr(1));
+    // the text oi-plan prints after the status: ",n1,...,n12,flags,n13,n14\n" (%.17g)
+    const fields = this.cString(X.oi_plan_wasm_row_ptr(2)).slice(1, -1).split(',');
+    const hasNumbers = X.oi_plan_wasm_row_int(10) !== 0;
+    this.planColumns.slice(2).forEach((c, k) => {
+      const t = fields[k];
+      if (c === 'flags') row.flags = hasNumbers ? t : null;
+      else row[c] = t === '' ? null : NUMBER_TEXT[t] ?? Number(t);
+    });
+    row.flagBits = X.oi_plan_wasm_row_int(4) >>> 0;
+    const line = X.oi_plan_wasm_row_int(5);
+    if (line !== 0) {
+      const field = X.oi_plan_wasm_row_int(6);
+      row.message = `line ${line}${field >= 0 ? `, column ${field + 1}` : ''}: ${this.cString(X.oi_plan_wasm_row_ptr(3))}`;
+    }
+    return row;
+  }
+
+  /* The scene the module holds as a JavaScript scene (writeScene's fields, and its bytes). */
+  readScene(p) {
+    const S = 'oi_scene';
+    const scene = { bytes: this.bytesAt(p, this.layout['sizeof.oi_scene']) };
+    for (const f of ['sun_km', 'target_km', 'observer_km']) scene[f] = this.get3(p, S, f);
+    if (this.getI(p, S, 'has_moon')) scene.moon_km = this.get3(p, S, 'moon_km');
+    scene.has_observer = this.getI(p, S, 'has_observer') !== 0;
+    scene.terms = this.getU(p, S, 'terms');
+    for (const f of ['earth_albedo', 'target_albedo', 'target_radius_m']) scene[f] = this.getR(p, S, f);
+    scene.shape_ptr = this.getU(p, S, 'shape');
+    scene.attitude_q = [0, 1, 2, 3].map((k) => this.getR(p, S, 'attitude_q', k));
+    return scene;
+  }
+
   /**
-   * The planner's batch on a CSV text: {columns, rows, error}. Each row has the planner's
-   * output fields (numbers as doubles, null where the planner leaves the field empty), and
-   * `scene`, `camera`, `result` (compute()'s answer) for drawing it.
+   * The planner's batch on a CSV text: {columns, rows, error}: the planner's own reader and
+   * row rules in the module (web/wasm/plan_wasm.c). Each row has the planner's output fields
+   * (numbers as doubles, null where the planner leaves the field empty), `message` where
+   * oi-plan prints one for it, and, when it was computed, `scene`, `model`, `goal`, `camera`
+   * and `result` (compute()'s answer) for drawing it.
    */
   planCsv(text, defaultCamera = null) {
-    const records = parseCsv(text);
-    if (records.length === 0) return { error: 'empty input: no header row', rows: [] };
-    const header = records[0];
-    const col = {};
-    for (const c of COLUMNS) col[c] = -1;
-    header.forEach((h, i) => {
-      const k = h.toLowerCase();
-      if (k in col && col[k] < 0) col[k] = i;
-    });
-    for (const c of ['sun_x', 'sun_y', 'sun_z', 'target_x', 'target_y', 'target_z']) {
-      if (col[c] < 0) return { error: `missing required column '${c}'`, rows: [] };
-    }
+    const X = this.x;
     const cam0 = defaultCamera ?? this.cameraList[0];
-    const rows = records.slice(1).map((fields, k) => this.planRow(header.length, col, fields, k + 1, cam0));
-    return { columns: PLAN_COLUMNS, rows };
-  }
-
-  planRow(nHeader, col, fields, rowNumber, defaultCamera) {
-    const row = { id: col.id >= 0 ? (fields[col.id] ?? '') : String(rowNumber), status: 'ERR_PARSE' };
-    for (const c of PLAN_COLUMNS.slice(2)) row[c] = null;
-    row.flags = null;
-    const field = (name) => (col[name] < 0 ? null : (fields[col[name]] ?? ''));
-    if (fields.length < nHeader) {
-      for (const c of COLUMNS) if (col[c] >= 0 && col[c] >= fields.length) return row;
+    const st = X.oi_plan_wasm_open(this.writeText(text), cam0.ptr);
+    const notes = this.cString(X.oi_plan_wasm_notes());
+    if (st === 1) return { error: 'empty input: no header row', rows: [] };
+    if (st > 1) {
+      return { error: `line ${X.oi_plan_wasm_row_int(8)}, character ${X.oi_plan_wasm_row_int(9)}: cannot read the header`, rows: [] };
     }
-    const vec = (base, required) => {
-      const v = [0, 0, 0];
-      let given = 0;
-      for (let k = 0; k < 3; k++) {
-        const s = field(`${base}_${'xyz'[k]}`);
-        if (s === null) return [0, null];
-        const [st, x] = parseReal(s);
-        if (st < 0) return [-1, null];
-        if (st === 0) { given++; v[k] = x; }
-      }
-      if (given === 3) return [1, v];
-      if (given === 0 && !required) return [0, null];
-      return [-1, null];
-    };
-    const [sSun, sun] = vec('sun', true);
-    if (sSun < 0) return row;
-    const [sTgt, target] = vec('target', true);
-    if (sTgt < 0) return row;
-    const [hasMoon, moon] = vec('moon', false);
-    if (hasMoon < 0) return row;
-    const [hasObs, observer] = vec('observer', false);
-    if (hasObs < 0) return row;
-    const C = this.c;
-    let terms = C.OI_TERM_SUN | C.OI_TERM_EARTH | (hasMoon ? C.OI_TERM_MOON : 0);
-    const ts = field('terms');
-    if (ts !== null && ts !== '') {
-      let t = 0;
-      let all = false;
-      for (const tok of ts.split('+')) {
-        const w = tok.trim().toLowerCase();
-        if (w === 'sun') t |= C.OI_TERM_SUN;
-        else if (w === 'earth') t |= C.OI_TERM_EARTH;
-        else if (w === 'moon') t |= C.OI_TERM_MOON;
-        else if (w === 'sky') t |= C.OI_TERM_SKY;
-        else if (w === 'all') all = true;
-        else return row;
-      }
-      if (all) t |= C.OI_TERM_SUN | C.OI_TERM_EARTH | (hasMoon ? C.OI_TERM_MOON : 0);
-      if ((t & C.OI_TERM_MOON) && !hasMoon) return row;
-      terms = t;
-    }
-    const scene = { sun_km: sun, target_km: target, terms, has_observer: hasObs === 1 };
-    if (moon) scene.moon_km = moon;
-    if (observer) scene.observer_km = observer;
-    for (const f of ['earth_albedo', 'target_albedo', 'target_radius_m']) {
-      const s = field(f);
-      if (s === null) continue;
-      const [st, x] = parseReal(s);
-      if (st < 0) return row;
-      if (st === 0) scene[f] = x;
-    }
-    let atm = 1;
-    const as = field('atmosphere');
-    if (as !== null) {
-      const [st, x] = parseReal(as);
-      if (st < 0) return row;
-      if (st === 0) atm = x;
-    }
-    if (atm !== 0 && atm !== 1) return row;
-    const model = { no_atmosphere: atm === 0 ? 1 : 0 };
-    // the band of sun_fraction_atm and e_sun, as planner/batch.c reads it
-    const bs = field('band');
-    if (bs !== null && bs !== '') {
-      const w = bs.toLowerCase();
-      if (w === 'total') model.band = 1;
-      else if (w !== 'v') return row;
-    }
-    // the target's shape and attitude, as planner/batch.c reads them
-    const shapeName = field('target_shape');
-    if (shapeName !== null) {
-      const sh = this.findShape(shapeName);
-      if (!sh) { row.status = this.statusName(C.OI_ERR_SHAPE); return row; }
-      if (sh.ptr) scene.shape_ptr = sh.ptr;
-    }
-    if (col.q_w >= 0) {
-      const q = [];
-      for (const c of ['q_w', 'q_x', 'q_y', 'q_z']) {
-        const [st, x] = parseReal(field(c));
-        if (st < 0) return row;
-        if (st === 0) q.push(x);
-      }
-      if (q.length !== 0 && q.length !== 4) return row;
-      if (q.length === 4) {
-        const norm = Math.sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-        // as the planner and the library: checked (and read) with a facet shape only
-        if (scene.shape_ptr && !(Math.abs(norm - 1) <= 1e-6)) {
-          row.status = this.statusName(C.OI_ERR_SHAPE);
-          return row;
+    if (st < 0) return { error: notes.trim().split('\n').pop(), notes, rows: [] };
+    const columns = this.planColumns;
+    const rows = [];
+    while (X.oi_plan_wasm_next()) {
+      const row = this.readPlanned({ id: this.cString(X.oi_plan_wasm_row_ptr(0)) });
+      if (X.oi_plan_wasm_row_int(0)) {
+        const L = this.layout;
+        row.scene = this.readScene(X.oi_plan_wasm_row_ptr(4));
+        row.model = { bytes: this.bytesAt(X.oi_plan_wasm_row_ptr(5), L['sizeof.oi_model']) };
+        row.goal = { bytes: this.bytesAt(X.oi_plan_wasm_row_ptr(6), L['sizeof.oi_expose_goal']) };
+        const cptr = X.oi_plan_wasm_row_ptr(7);
+        row.camera = this.cameraList.find((c) => c.ptr === cptr) ?? cam0;
+        const status = X.oi_plan_wasm_row_int(1);
+        const expoStatus = X.oi_plan_wasm_row_int(2);
+        row.result = { status, illum: null, expo: null, expoStatus };
+        if (status >= 0) {
+          row.result.illum = this.readIllum(X.oi_plan_wasm_row_ptr(8));
+          if (row.scene.has_observer && expoStatus >= 0) row.result.expo = this.readExposure(X.oi_plan_wasm_row_ptr(9));
         }
-        scene.attitude_q = q;
       }
+      rows.push(row);
     }
-    let camera = defaultCamera;
-    const cs = field('camera');
-    if (cs !== null && cs !== '') {
-      camera = this.findCamera(cs);
-      if (!camera) { row.status = this.statusName(C.OI_ERR_CAMERA); return row; }
-    }
-    row.scene = scene;
-    row.model = model;
-    row.camera = camera;
-    return this.fillRow(row, this.compute(scene, model, camera));
+    return { columns, rows, notes };
   }
 
-  /** Planner fields of a row from compute()'s result (as planner/output.c prints them). */
+  /**
+   * The planner's fields of a row from the last compute()'s answer r (its structs are still in
+   * the scratch slots): the planner's own rules (planner/rows.c, planner/output_text.c).
+   */
   fillRow(row, r) {
     row.result = r;
-    row.status = this.statusName(r.status);
-    if (r.status < 0) return row;
-    if (r.expoStatus < 0) { row.status = this.statusName(r.expoStatus); return row; }
-    const il = r.illum;
-    const C = this.c;
-    let flags = 0;
-    if (il.shadow.region === C.OI_SHADOW_UMBRA) flags |= C.OI_FLAG_ECLIPSED;
-    else if (il.shadow.region !== C.OI_SHADOW_LIT) flags |= C.OI_FLAG_PENUMBRA;
-    row.sun_fraction = il.shadow.fraction;
-    row.sun_fraction_atm = il.shadow.fraction_atm;
-    row.e_sun = il.e_sun;
-    row.e_earth = il.e_earth;
-    row.e_moon = il.e_moon;
-    row.e_sky = il.e_sky;
-    row.earth_theta_deg = il.earth_theta * RAD_TO_DEG;
-    row.earth_h_km = il.earth_h_km;
-    if (r.expo) {
-      flags = r.expo.flags;
-      row.flux_obs = il.flux_obs;
-      row.mag_v = il.mag_v;
-      row.exposure_s = r.expo.exposure_s;
-      row.gain = r.expo.gain;
-      row.snr = r.expo.snr;
-      row.detect_margin_mag = r.expo.detect_margin_mag;
-    }
-    row.flagBits = flags;
-    row.flags = this.flagNames(flags);
-    return row;
+    this.x.oi_plan_wasm_finish(this.p.scene, this.p.illum, r.status, this.p.expo, r.expoStatus);
+    return this.readPlanned(row);
   }
 }

@@ -24,14 +24,14 @@ function fmt(x, digits = 5) {
   return a >= 1e-3 && a < 1e6 ? String(Number(x.toPrecision(digits))) : x.toExponential(digits - 1);
 }
 
-/** Rows of a planner input CSV as viewer rows (the planner's own batch rules: orbillum.js). */
+/** Rows of a planner input CSV as viewer rows (the planner's own reader and row rules, in the wasm module). */
 function rowsFromCsv(text) {
   const plan = state.oi.planCsv(text);
   if (plan.error) throw new Error(plan.error);
   return plan.rows.map((r, i) => {
     const t = Date.parse(r.id);
     return { id: r.id, t_s: Number.isNaN(t) ? i : t / 1000, scene: r.scene ?? null, model: r.model ?? {},
-      camera: r.camera ?? null, planned: r };
+      goal: r.goal ?? null, camera: r.camera ?? null, planned: r };
   });
 }
 
@@ -120,13 +120,13 @@ function compute(row) {
   const model = { ...row.model };
   if ($('atmosphere').value === '0') model.no_atmosphere = 1;
   const cam = currentCamera(row);
-  let r = oi.compute(scene, model, cam);
+  let r = oi.compute(scene, model, cam, null, row.goal);
   const tSel = $('exposure').value; const gSel = $('gain').value;
   if ((tSel !== '' || gSel !== '') && r.expo) {
     r = oi.compute(scene, model, cam, {
       time_s: tSel !== '' ? cam.times_s[Number(tSel)] : r.expo.exposure_s,
       gain_index: gSel !== '' ? Number(gSel) : r.expo.gain_index,
-    });
+    }, row.goal);
   }
   const out = oi.fillRow({ id: row.id }, r);
   return { scene, model, cam, r, out };
@@ -172,7 +172,9 @@ function update() {
   if (!row) return;
   $('time-label').textContent = `${row.id}   (row ${state.index + 1} of ${state.rows.length})`;
   if (!row.scene) {
-    $('message').textContent = `row ${state.index + 1}: ${row.planned ? row.planned.status : 'no scene'}`;
+    // the planner's status and, where oi-plan prints one, its message for the row
+    const p = row.planned;
+    $('message').textContent = `row ${state.index + 1}: ${p ? p.status + (p.message ? ` (${p.message})` : '') : 'no scene'}`;
     return;
   }
   const c = compute(row);

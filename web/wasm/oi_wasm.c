@@ -43,7 +43,7 @@ static const layout_entry layout[] = {
     OFF(oi_scene, sun_km), OFF(oi_scene, moon_km), OFF(oi_scene, target_km),
     OFF(oi_scene, observer_km), OFF(oi_scene, has_observer), OFF(oi_scene, terms),
     OFF(oi_scene, earth_albedo), OFF(oi_scene, target_albedo), OFF(oi_scene, target_radius_m),
-    OFF(oi_scene, shape), OFF(oi_scene, attitude_q),
+    OFF(oi_scene, shape), OFF(oi_scene, attitude_q), OFF(oi_scene, has_moon),
     SIZE(oi_shadow),
     OFF(oi_shadow, fraction), OFF(oi_shadow, fraction_ld), OFF(oi_shadow, fraction_atm),
     OFF(oi_shadow, sun_radius_rad), OFF(oi_shadow, earth_radius_rad),

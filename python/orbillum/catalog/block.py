@@ -19,7 +19,7 @@ import orbillum
 
 from . import sky
 
-#: the planner's degrees (planner/output.c): the same double product
+#: the planner's degrees (OUT_RAD_TO_DEG, planner/output.h): the same double product
 RAD_TO_DEG = 180.0 / 3.14159265358979323846
 
 #: status of a row whose object sgp4 could not propagate (decayed, or too far from its epoch)
@@ -49,11 +49,37 @@ class Context:
     target_albedo: float | None = None
     target_radius_m: float | None = None
     earth_albedo: float | None = None
+    epoch_limit_days: float | None = None  # rows farther from the element epoch: ERR_SGP4
+
+
+#: sgp4 error code given to epochs farther than Context.epoch_limit_days from the element epoch
+ERR_EPOCH_LIMIT = 100
+
+#: the SNR of the planner's observation windows (planner/batch.c: oi_expose's default goal)
+SNR_GOAL = 5.0
 
 
 def _visible(status, flags, range_km, max_range_km):
     bad = orbillum.OI_FLAG_OCCULTED | orbillum.OI_FLAG_SUN_EXCLUSION
     return (status >= 0) & ((flags & bad) == 0) & (range_km <= max_range_km)
+
+
+def _observable(status, flags, snr, range_km, max_range_km):
+    """The rows of the planner's --summary windows (planner/windows.c, windows_good):
+    status OK or a warning, full sunlight (neither eclipsed nor in penumbra), the Sun
+    outside the exclusion angle, not behind the Earth, not saturated, SNR >= 5; and
+    within the range limit, so that an observable row is visible."""
+    bad = (orbillum.OI_FLAG_ECLIPSED | orbillum.OI_FLAG_PENUMBRA |
+           orbillum.OI_FLAG_SUN_EXCLUSION | orbillum.OI_FLAG_OCCULTED |
+           orbillum.OI_FLAG_SATURATED)
+    return (status >= 0) & ((flags & bad) == 0) & (snr >= SNR_GOAL) & (range_km <= max_range_km)
+
+
+def epoch_distance_days(sats, jd1, jd2) -> np.ndarray:
+    """(M, N): |epoch - element epoch| in days of M sgp4 satellites at N epochs."""
+    e1 = np.array([s.jdsatepoch for s in sats], dtype=float)[:, None]
+    e2 = np.array([s.jdsatepochF for s in sats], dtype=float)[:, None]
+    return np.abs((jd1[None, :] - e1) + (jd2[None, :] - e2))
 
 
 def run(sets, first_index: int, ctx: Context) -> tuple[dict, dict]:
@@ -62,14 +88,18 @@ def run(sets, first_index: int, ctx: Context) -> tuple[dict, dict]:
     Returns (columns, costs). costs: CPU seconds of this thread in "propagate"
     (sgp4 and the frame rotation), "illuminate" (scenes, the binding's batch
     calls, the visibility) and the scene count "scenes". columns: a dict of numpy arrays: object_index, observer_index, epoch_index
-    (int32), visible (bool), status (int32, the planner's row status; -1000 for
-    sgp4 failures, named STATUS_SGP4), range_km, the NUMBERS, flags (uint32) and,
+    (int32), visible, observable (bool), status (int32, the planner's row status; -1000 for
+    sgp4 failures and epochs past ctx.epoch_limit_days, named STATUS_SGP4), range_km, the NUMBERS, flags (uint32) and,
     with ctx.positions, the POSITIONS. Rows of failed sgp4 epochs have zero numbers.
     """
     m = len(sets)
     k, n = ctx.observer_r.shape[0], ctx.jd1.shape[0]
     c0 = time.thread_time()
-    r, v, err = sky.propagate(sky.satrecs(sets), ctx.jd1, ctx.jd2, ctx.rot)
+    sats = sky.satrecs(sets)
+    r, v, err = sky.propagate(sats, ctx.jd1, ctx.jd2, ctx.rot)
+    if ctx.epoch_limit_days is not None:
+        far = epoch_distance_days(sats, ctx.jd1, ctx.jd2) > ctx.epoch_limit_days
+        err = np.where(far & (err == 0), ERR_EPOCH_LIMIT, err)
     c1 = time.thread_time()
     shape = (m, k, n)
     rows = m * k * n
@@ -95,9 +125,12 @@ def run(sets, first_index: int, ctx: Context) -> tuple[dict, dict]:
     flags = np.where(bad, 0, out_all["flags"]).astype(np.uint32)
     range_km = np.where(bad, 0.0, out_all["range_km"])
     visible = _visible(status, flags, range_km, ctx.max_range_km)
+    snr = np.where(bad, 0.0, out_all["snr"])
+    observable = _observable(status, flags, snr, range_km, ctx.max_range_km)
     idx = np.indices(shape, dtype=np.int32).reshape(3, rows)
     cols = {"object_index": idx[0] + np.int32(first_index), "observer_index": idx[1],
-            "epoch_index": idx[2], "visible": visible, "status": status,
+            "epoch_index": idx[2], "visible": visible, "observable": observable,
+            "status": status,
             "range_km": range_km}
     src = {"sun_fraction": out_all["sun_fraction"], "sun_fraction_atm": out_all["sun_fraction_atm"],
            "e_sun": out_all["e_sun"], "e_earth": out_all["e_earth"], "e_moon": out_all["e_moon"],

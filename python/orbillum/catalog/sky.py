@@ -101,13 +101,35 @@ def rotate(rot: np.ndarray, v: np.ndarray) -> np.ndarray:
     return out
 
 
+#: sgp4init's units: rev/day -> rad/min, rev/day^2 -> rad/min^2, rev/day^3 -> rad/min^3
+_XPDOTP = 1440.0 / (2.0 * math.pi)
+#: the largest catalogue number sgp4 keeps (Alpha-5 'Z9999'); larger ones are kept by
+#: the element set, and given to sgp4 as 0 (the number does not enter the propagation)
+SGP4_MAX_SATNUM = 339999
+
+
+def satrec(s) -> Satrec:
+    """The sgp4 satellite of an element set: its TLE lines (twoline2rv) or its mean
+    elements (sgp4init, WGS-72, improved mode as twoline2rv)."""
+    if s.mean is None:
+        return Satrec.twoline2rv(s.line1, s.line2, WGS72)
+    m = s.mean
+    sat = Satrec()
+    num = s.number if s.number <= SGP4_MAX_SATNUM else 0
+    d2r = math.pi / 180.0
+    sat.sgp4init(WGS72, "i", num, m.epoch_days, m.bstar, m.ndot / (_XPDOTP * 1440.0),
+                 m.nddot / (_XPDOTP * 1440.0 * 1440.0), m.ecc, m.argp_deg * d2r,
+                 m.incl_deg * d2r, m.mo_deg * d2r, m.mean_motion / _XPDOTP, m.raan_deg * d2r)
+    return sat
+
+
 def satrecs(sets) -> list[Satrec]:
     """sgp4 satellites of element sets; CatalogueError naming a set sgp4 rejects."""
     out = []
     for s in sets:
-        sat = Satrec.twoline2rv(s.line1, s.line2, WGS72)
+        sat = satrec(s)
         if sat.error:
-            raise CatalogueError(f"{s.name}: sgp4 rejects the element set (error {sat.error})")
+            raise CatalogueError(f"{s.where}: sgp4 rejects the element set (error {sat.error})")
         out.append(sat)
     return out
 

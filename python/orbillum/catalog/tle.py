@@ -5,11 +5,20 @@ The format is NORAD's (Hoots & Roehrich, Spacetrack Report No. 3, 1980;
 CelesTrak's "NORAD Two-Line Element Set Format"): line 1 and line 2 of 69
 columns, column 69 a modulo-10 checksum (digits, '-' counts 1); a 3LE adds a
 name line before line 1 (CelesTrak writes it as "0 NAME").
+
+Every set read is checked (check_lines): the text is ASCII, both lines have a
+checksum digit in column 69 that matches, every numeric field is a number in
+its columns, and the elements are in range (mean_elements_errors). An element
+set can also hold the mean elements themselves (MeanElements, from an OMM:
+orbillum.catalog.elements), with catalogue numbers of up to 9 digits.
+
+This module needs the standard library only (examples/scenarios loads it by path).
 """
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+import re
+from dataclasses import dataclass, field
 
 
 class CatalogueError(ValueError):
@@ -17,14 +26,47 @@ class CatalogueError(ValueError):
 
 
 @dataclass(frozen=True)
+class MeanElements:
+    """SGP4 mean elements as an OMM gives them (CCSDS 502.0-B; CelesTrak's GP fields)."""
+    epoch_days: float       # days from 1949 December 31 0h UTC (sgp4init's epoch)
+    mean_motion: float      # rev/day (Kozai, as a TLE's)
+    ecc: float
+    incl_deg: float
+    raan_deg: float
+    argp_deg: float
+    mo_deg: float
+    bstar: float = 0.0      # 1/earth radii
+    ndot: float = 0.0       # MEAN_MOTION_DOT, rev/day^2 (a TLE's first-derivative field)
+    nddot: float = 0.0      # MEAN_MOTION_DDOT, rev/day^3
+
+    @property
+    def epoch_jd(self) -> float:
+        return _JD_1950 + self.epoch_days
+
+
+@dataclass(frozen=True)
 class ElementSet:
     name: str
-    line1: str
-    line2: str
+    line1: str = ""
+    line2: str = ""
+    mean: MeanElements | None = None   # the elements themselves (an OMM), when no TLE lines
+    catnr: int | None = None           # the catalogue number of a set without TLE lines
+    source: str = field(default="", compare=False)  # file:line of the set, for messages
+
+    def key(self):
+        """What the set's rows depend on (a JSON-able list)."""
+        return [self.name, self.line1, self.line2, self.catnr,
+                None if self.mean is None else list(vars(self.mean).values())]
+
+    @property
+    def where(self) -> str:
+        return f"{self.source}: {self.name}" if self.source else self.name
 
     @property
     def number(self) -> int:
         """The catalogue number (columns 3-7; Alpha-5 letters read as sgp4 does)."""
+        if self.catnr is not None:
+            return self.catnr
         s = self.line1[2:7].strip()
         if s and s[0].isalpha():  # Alpha-5: A=10 ... Z=33, skipping I and O
             head = "ABCDEFGHJKLMNPQRSTUVWXYZ".index(s[0].upper()) + 10
@@ -72,10 +114,9 @@ def parse(text: str, source: str = "<text>") -> list[ElementSet]:
             if l1[2:7] != l2[2:7]:
                 raise CatalogueError(f"{source}:{lineno}: catalogue numbers differ between "
                                      f"line 1 ({l1[2:7]!r}) and line 2 ({l2[2:7]!r})")
-            for k, ln in ((lineno, l1), (lineno + 1, l2)):
-                if len(ln) == 69 and ln[68].isdigit() and checksum(ln) != int(ln[68]):
-                    raise CatalogueError(f"{source}:{k}: TLE checksum (column 69) is wrong")
-            out.append(ElementSet(name or f"NORAD {l1[2:7].strip()}", l1, l2))
+            check_lines(l1, l2, source, lineno)
+            out.append(ElementSet(name or f"NORAD {l1[2:7].strip()}", l1, l2,
+                                  source=f"{source}:{lineno}"))
             name = ""
         elif line.startswith("1 ") and len(line) >= 64:
             raise CatalogueError(f"{source}:{lineno + 1}: expected TLE line 2 (starting '2 ') "
@@ -94,16 +135,132 @@ def parse(text: str, source: str = "<text>") -> list[ElementSet]:
 
 
 def read(path: str) -> list[ElementSet]:
-    """parse() of a file; CatalogueError when it cannot be read or holds no set."""
+    """parse() of a file; CatalogueError when it cannot be read, is not ASCII text
+    (binary data or a non-ASCII character, named by line and column) or holds no set."""
     try:
-        with open(path, encoding="utf-8") as f:
-            text = f.read()
+        with open(path, "rb") as f:
+            data = f.read()
     except OSError as e:
         raise CatalogueError(f"{path}: cannot read TLE file ({e.strerror})") from e
+    text = decode_text(data, path, ascii_only=True)
     sets = parse(text, path)
     if not sets:
         raise CatalogueError(f"{path}: no two-line element set found")
     return sets
+
+
+def _where(data: bytes, at: int) -> tuple[int, int]:
+    """1-based (line, column) of byte offset at."""
+    line = data.count(b"\n", 0, at) + 1
+    return line, at - (data.rfind(b"\n", 0, at) + 1) + 1
+
+
+def decode_text(data: bytes, source: str, ascii_only: bool = False) -> str:
+    """UTF-8 text of a file's bytes (a leading BOM dropped); CatalogueError naming the
+    line and column of a NUL or an invalid byte (binary data) or, with ascii_only,
+    of the first non-ASCII character."""
+    if data.startswith(b"\xef\xbb\xbf"):
+        data = data[3:]
+    nul = data.find(b"\0")
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError as e:
+        at = e.start if nul < 0 else min(e.start, nul)
+        line, col = _where(data, at)
+        raise CatalogueError(f"{source}:{line}:{col}: binary data (byte 0x{data[at]:02x}): "
+                             "not a text file of element sets") from None
+    if nul >= 0:
+        line, col = _where(data, nul)
+        raise CatalogueError(f"{source}:{line}:{col}: binary data (byte 0x00): "
+                             "not a text file of element sets")
+    if ascii_only and not text.isascii():
+        at = next(i for i, c in enumerate(text) if ord(c) > 127)
+        line = text.count("\n", 0, at) + 1
+        col = at - (text.rfind("\n", 0, at) + 1) + 1
+        raise CatalogueError(f"{source}:{line}:{col}: non-ASCII character {text[at]!r} "
+                             f"(U+{ord(text[at]):04X}): a TLE file is ASCII")
+    return text
+
+
+#: the columns (1-based, inclusive) and names of the numeric fields of TLE lines
+_L1_FIELDS = ((19, 20, "epoch year", r"\d\d"), (21, 32, "epoch day", r" *\d{1,3}\.\d*"),
+              (34, 43, "first derivative of the mean motion", r" *[+-]?\d*\.\d+"),
+              (45, 52, "second derivative of the mean motion", r" *[+-]?\d{1,5} ?[+-]?\d"),
+              (54, 61, "BSTAR", r" *[+-]?\d{1,5} ?[+-]?\d"))
+_L2_FIELDS = ((9, 16, "inclination", r" *\d+(\.\d*)?"), (18, 25, "right ascension of the node",
+                                                         r" *\d+(\.\d*)?"),
+              (27, 33, "eccentricity", r" *\d+"), (35, 42, "argument of perigee",
+                                                   r" *\d+(\.\d*)?"),
+              (44, 51, "mean anomaly", r" *\d+(\.\d*)?"),
+              (53, 63, "mean motion", r" *\d+(\.\d*)?"))
+
+
+def _assumed_decimal(f: str) -> float:
+    """A TLE 'assumed decimal point' field: ' 12345-3' is 0.12345e-3."""
+    f = f.replace(" ", "")
+    sign = -1.0 if f.startswith("-") else 1.0
+    f = f.lstrip("+-")
+    return sign * float("0." + f[:-2]) * 10.0 ** int(f[-2:])
+
+
+def mean_elements_errors(incl_deg, raan_deg, ecc, argp_deg, mo_deg, mean_motion, bstar=0.0,
+                         ndot=0.0, nddot=0.0) -> list[str]:
+    """What is out of range in a set of mean elements (an empty list when nothing is):
+    inclination 0-180 deg, node, perigee and mean anomaly 0-360 deg, eccentricity in
+    [0, 1), mean motion > 0 rev/day, every value finite."""
+    bad = []
+    vals = dict(inclination=incl_deg, raan=raan_deg, eccentricity=ecc, argp=argp_deg,
+                mean_anomaly=mo_deg, mean_motion=mean_motion, bstar=bstar, ndot=ndot,
+                nddot=nddot)
+    for k, v in vals.items():
+        if not math.isfinite(v):
+            bad.append(f"{k} {v} is not finite")
+    if bad:
+        return bad
+    if not 0.0 <= incl_deg <= 180.0:
+        bad.append(f"inclination {incl_deg:g} deg is outside 0-180")
+    for k, v in (("right ascension of the node", raan_deg), ("argument of perigee", argp_deg),
+                 ("mean anomaly", mo_deg)):
+        if not 0.0 <= v <= 360.0:
+            bad.append(f"{k} {v:g} deg is outside 0-360")
+    if not 0.0 <= ecc < 1.0:
+        bad.append(f"eccentricity {ecc:g} is outside [0, 1)")
+    if not mean_motion > 0.0:
+        bad.append(f"mean motion {mean_motion:g} rev/day is not > 0")
+    return bad
+
+
+def check_lines(l1: str, l2: str, source: str, lineno: int) -> None:
+    """CatalogueError naming source:line for a TLE pair that is not well formed: a
+    column 69 that is not a digit (blank included) or not the checksum, a numeric
+    field that is not a number in its columns, elements out of range."""
+    for k, n, ln in ((lineno, 1, l1), (lineno + 1, 2, l2)):
+        if len(ln) < 69 or not ln[68].isdigit():
+            got = "blank" if len(ln) < 69 or ln[68] == " " else repr(ln[68])
+            raise CatalogueError(f"{source}:{k}: TLE line {n}: column 69 is {got}, not the "
+                                 "checksum digit")
+        if checksum(ln) != int(ln[68]):
+            raise CatalogueError(f"{source}:{k}: TLE checksum (column 69) is wrong: "
+                                 f"{ln[68]}, the line's is {checksum(ln)}")
+    vals = {}
+    for k, n, ln, fields in ((lineno, 1, l1, _L1_FIELDS), (lineno + 1, 2, l2, _L2_FIELDS)):
+        for a, b, what, pat in fields:
+            f = ln[a - 1:b]
+            if not re.fullmatch(pat + " *", f):
+                raise CatalogueError(f"{source}:{k}: TLE line {n}, columns {a}-{b} ({what}): "
+                                     f"{f!r} is not a number")
+            vals[what] = f
+    day = float(vals["epoch day"])
+    if not 1.0 <= day < 367.0:
+        raise CatalogueError(f"{source}:{lineno}: epoch day {day:g} is outside 1-366")
+    bad = mean_elements_errors(
+        float(vals["inclination"]), float(vals["right ascension of the node"]),
+        float("0." + vals["eccentricity"].strip()), float(vals["argument of perigee"]),
+        float(vals["mean anomaly"]), float(vals["mean motion"]),
+        _assumed_decimal(vals["BSTAR"]), float(vals["first derivative of the mean motion"]),
+        _assumed_decimal(vals["second derivative of the mean motion"]))
+    if bad:
+        raise CatalogueError(f"{source}:{lineno + 1}: " + "; ".join(bad))
 
 
 def _exp_field(x: float) -> str:
