@@ -68,7 +68,7 @@ def _model(model):
     return m
 
 
-# The ranges include/orbillum.h documents for oi_model (its "Model constants
+# The ranges include/orbillum/model.h documents for oi_model (its "Model constants
 # and options" comment, OI_MODEL_* bounds, the option macros): a zero real
 # field is the default; radii out of range are OI_ERR_RADIUS when finite.
 _MODEL_REALS = (  # in the library's order of checks

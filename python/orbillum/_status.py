@@ -90,7 +90,7 @@ def _batch_status(st, n, what, explain=None):
     if st < 0 and n > 0:
         why = explain(st) if explain is not None else None
         if why is None:
-            why = ("no field outside the ranges include/orbillum.h documents: an option "
+            why = ("no field outside the ranges include/orbillum/*.h document: an option "
                    "this build leaves out (include/oi_config.h)?")
         raise ValueError(f"{what}: {status_name(st)}: {why}")
 

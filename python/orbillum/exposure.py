@@ -140,7 +140,7 @@ def _show(lo, hi, lo_open=False, hi_open=False):
     return f"{'(' if lo_open else '['}{lo:g}, {h}{')' if hi_open else ']'}"
 
 
-# oi_camera's ranges as include/orbillum.h documents them (oi_expose, Note 4):
+# oi_camera's ranges as include/orbillum/camera.h documents them (oi_expose, Note 4):
 # (field, lo, hi, lo open, hi open, unit), in the header's order.
 _CAMERA_RANGES = (
     ("aperture_m", 0.0, 10.0, True, False, "m"),
@@ -160,11 +160,12 @@ _CAMERA_RANGES = (
 
 
 def _camera_problem(c):
-    """The first oi_camera field outside the ranges of include/orbillum.h
+    """The first oi_camera field outside the ranges of include/orbillum/camera.h
     (oi_expose, Note 4), as text naming the field and its range; None when
     every field is in range."""
     def bad(k, v, rng):
-        return f"camera[{k!r}] = {v!r} is outside {rng} (include/orbillum.h, oi_expose Note 4)"
+        return (f"camera[{k!r}] = {v!r} is outside {rng} (include/orbillum/camera.h, "
+                f"oi_expose Note 4)")
     for k, lo, hi, lo_open, hi_open, unit in _CAMERA_RANGES:
         v = getattr(c, k)
         if not _interval(v, lo, hi, lo_open, hi_open):
@@ -204,13 +205,13 @@ def _camera_problem(c):
         for i, v in enumerate(vals):
             if not (v > prev and v <= hi):
                 return (f"camera[{k!r}][{i}] = {v!r}: the {k} must be in (0, {hi:g}]"
-                        f"{' ' + unit if unit else ''} and strictly ascending (include/orbillum.h, "
-                        f"oi_expose Note 4)")
+                        f"{' ' + unit if unit else ''} and strictly ascending "
+                        f"(include/orbillum/camera.h, oi_expose Note 4)")
             prev = v
     for i, v in enumerate(list(c.read_noise_e)[:c.n_gains]):
         if not _interval(v, 0.0, 1e6):
             return (f"camera['read_noise_e'][{i}] = {v!r} is outside [0, 1e6] e- "
-                    f"(include/orbillum.h, oi_expose Note 4)")
+                    f"(include/orbillum/camera.h, oi_expose Note 4)")
     return None
 
 
@@ -246,7 +247,7 @@ def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None
     None raises ValueError.
     fill, snr_min: the oi_expose_goal (None: the C defaults). A camera the
     library refuses (ERR_CAMERA) raises ValueError naming its first field
-    outside include/orbillum.h's ranges (oi_expose Note 4) and the range.
+    outside include/orbillum/camera.h's ranges (oi_expose Note 4) and the range.
     sky: oi_expose_goal.sky, OI_SKY_* bits or the planner's words
     ('zodiacal+moon+starlight', 'all' = zodiacal+moon; sky_mask()); None, 0
     or 'none': no sky background but the sunlit Earth, as before.

@@ -252,7 +252,7 @@ def illuminate(sun, moon, target, observer=None, *, terms=None, earth_albedo=Non
       flux_obs), plus status (int32) and status_name. A row whose status is
       an error has every float field NaN (mag_v too: the C library's 0 would
       read as a bright target), shadow_region 0. A model the library rejects
-      raises ValueError naming its first field outside include/orbillum.h's
+      raises ValueError naming its first field outside include/orbillum/model.h's
       ranges and the range; an integer model field beyond the C int is
       refused, not wrapped.
 

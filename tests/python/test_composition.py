@@ -31,12 +31,12 @@ that it reports it):
    the terms has e_* = flux_* = 0. mag_v is magnitude_v(flux_obs), bit for bit.
 2. Changing one input changes every output that depends on it and no other
    (bit for bit equal elsewhere), by the dependency table DEPENDS below (from
-   include/orbillum.h's oi_illum and oi_illuminate Notes). In particular an
+   include/orbillum/scene.h's oi_illum and oi_illuminate Notes). In particular an
    albedo model that moves e_earth must move flux_earth for every target: a
    sphere does; facets do not (the known case: "albedo_model=knocke (and map) is
    ignored for facet targets"), marked xfail(strict=True) for exactly the
    facet shapes, so the test fails (XPASS) when that is fixed.
-3. Flags obey their definitions (include/orbillum.h, oi_expose_scene Notes 1,
+3. Flags obey their definitions (include/orbillum/camera.h, oi_expose_scene Notes 1,
    4, 6, 8, 10 and oi_expose Note 2): eclipsed iff shadow_region is the umbra;
    penumbra iff it is the penumbra or annular; never both; moon_shadow iff
    sun_moon_hidden > 0; sun_exclusion iff sun_angle_rad < the camera's
@@ -339,7 +339,8 @@ def test_an_option_changes_what_depends_on_it_and_nothing_else(grid, option):
 XFAIL_FACETS = pytest.mark.xfail(
     strict=True, raises=AssertionError,
     reason="known: albedo_model=knocke (and map) is ignored for facet targets: e_earth "
-    "moves from 147.9 to 108.9 W/m^2 but a box-wing's flux_obs and mag_v stay the same to the last bit, with status OK and no flag (a sphere's flux does move)")
+    "moves from 147.9 to 108.9 W/m^2 but a box-wing's flux_obs and mag_v stay the same "
+    "to the last bit, with status OK and no flag (a sphere's flux does move)")
 
 
 @pytest.mark.parametrize("shape", [None, pytest.param("plate", marks=XFAIL_FACETS),
@@ -365,7 +366,7 @@ def test_albedo_model_moves_flux_earth_for_every_target(grid, shape, albedo):
 def test_earth_albedo_matters_only_for_the_uniform_model(shape, albedo):
     """The scene's earth_albedo is the Earth's albedo with albedo_model
     uniform (e_earth and the fluxes move) and is not read by knocke or map
-    (nothing moves: include/orbillum.h, OI_ALBEDO_*). A facet target reads it
+    (nothing moves: include/orbillum/model.h, OI_ALBEDO_*). A facet target reads it
     under knocke and map: the same known case as above."""
     terms = ("sun", "earth", "moon", "sky")
     a = run(shape, albedo, terms=terms)
@@ -385,7 +386,7 @@ def test_target_albedo_moves_only_the_targets_it_colours(shape):
 
 @pytest.mark.xfail(strict=True, raises=AssertionError,
                    reason="found by this suite (2026-12-07): with no_atmosphere "
-                   "('as if the Earth had no atmosphere', include/orbillum.h) the sky term "
+                   "('as if the Earth had no atmosphere', include/orbillum/model.h) the sky term "
                    "still adds the sunlight the atmosphere scatters (e_sky unchanged)")
 def test_no_atmosphere_scatters_no_sunlight():
     r = run(None, atmosphere=False, terms=("sky",))
