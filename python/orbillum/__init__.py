@@ -7,7 +7,11 @@ per-row scalars as scalars or arrays of length N. Results are dicts of numpy
 arrays of length N. Each row is one call of the C function with the same
 inputs, so the numbers are exactly those of the C library (and of
 ``build/oi-plan --csv`` on the same rows). Errors are per row: ``status`` < 0
-(names in ``status_name``) with every output of that row zero, as in C.
+(names in ``status_name``); such a row's float outputs are NaN (the C library
+gives 0, which reads as a valid value, e.g. mag_v 0; the planner leaves them
+empty), its integer outputs 0. What the binding cannot represent is refused,
+never wrapped or truncated: an integer outside its C type's range
+(ValueError), complex or boolean input (TypeError).
 
     import orbillum
     r = orbillum.illuminate(sun, moon, target, observer)
@@ -20,7 +24,8 @@ body -> input frame per row), as include/orbillum.h's oi_shape.
 This module is the face: the calls live in modules by subject and are
 imported here (``orbillum.illuminate`` is ``orbillum.illumination.illuminate``):
   illumination  illuminate, earthshine, terms_mask (the scenes, oi_illuminate_batch)
-  exposure      expose, expose_flux, camera, cameras (oi_expose_scene_batch, oi_expose_batch)
+  exposure      expose, expose_flux, camera, cameras, sky_mask (oi_expose_scene_batch,
+                oi_expose_batch)
   shadow        sun_fraction (oi_sun_fraction_batch)
   facets        Shape, shape, shapes, facet_brdf (oi_shape)
   photometry    lambert_phase, moon_phase_law, magnitude_v, flux_from_magnitude
@@ -38,7 +43,7 @@ import numpy as np  # noqa: F401
 from ._runtime import (EXPOSURE_DTYPE, FACET_DTYPE, ILLUM_DTYPE, SCENE_DTYPE, L, _lib,
                        library_path)
 from ._status import flag_names, status_name
-from .exposure import camera, cameras, expose, expose_flux
+from .exposure import camera, cameras, expose, expose_flux, sky_mask
 from .facets import Shape, facet_brdf, shape, shapes
 from .illumination import _scenes, earthshine, illuminate, terms_mask
 from .photometry import flux_from_magnitude, lambert_phase, magnitude_v, moon_phase_law
@@ -55,6 +60,6 @@ globals().update({n: getattr(L, n) for n in _CONSTANTS})
 __all__ = ["illuminate", "expose", "expose_flux", "sun_fraction", "earthshine",
            "lambert_phase", "moon_phase_law", "magnitude_v", "flux_from_magnitude",
            "starlight_radiance", "galactic",
-           "camera", "cameras", "status_name", "flag_names", "terms_mask",
+           "camera", "cameras", "status_name", "flag_names", "terms_mask", "sky_mask",
            "Shape", "shape", "shapes", "facet_brdf", "FACET_DTYPE",
            "library_path"] + _CONSTANTS

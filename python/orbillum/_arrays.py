@@ -6,11 +6,67 @@ import numpy as np
 
 
 def _floats(a, name):
-    """a as a float64 array; TypeError naming the argument when it is not numbers."""
+    """a as a float64 array; TypeError naming the argument when it is not real
+    numbers: complex values (their imaginary part would be lost), booleans and
+    object arrays holding either are refused, not converted."""
     try:
-        return np.asarray(a, dtype=np.float64)
+        arr = np.asarray(a)
     except (TypeError, ValueError) as e:
         raise TypeError(f"{name}: expected numbers, got {a!r:.60} ({e})") from None
+    kind = arr.dtype.kind
+    if kind == "c":
+        raise TypeError(f"{name}: expected real numbers, got complex values ({a!r:.60}); "
+                        f"pass the real part explicitly if that is meant")
+    if kind == "b":
+        raise TypeError(f"{name}: expected numbers, got booleans ({a!r:.60})")
+    if kind == "O" and any(isinstance(x, (bool, np.bool_, complex, np.complexfloating))
+                           for x in arr.ravel()):
+        raise TypeError(f"{name}: expected real numbers, got booleans or complex values "
+                        f"({a!r:.60})")
+    try:
+        return arr.astype(np.float64, copy=False)
+    except (TypeError, ValueError) as e:
+        raise TypeError(f"{name}: expected numbers, got {a!r:.60} ({e})") from None
+
+
+#: the C integer types' ranges, for the fields the binding passes as int / unsigned
+INT_RANGE = (-2**31, 2**31 - 1)
+UINT_RANGE = (0, 2**32 - 1)
+
+
+def _integer(v, name, lo_hi=INT_RANGE):
+    """v as a Python int in the C type's range [lo, hi]: TypeError for a value
+    that is no integer (bool, a fraction, complex), ValueError naming the field
+    and the range for one outside it (ctypes and numpy would wrap it modulo
+    2^32)."""
+    lo, hi = lo_hi
+    if isinstance(v, np.ndarray) and v.ndim == 0:
+        v = v[()]  # a 0-d array: its one value
+    if isinstance(v, (bool, np.bool_)) or not isinstance(
+            v, (int, np.integer, float, np.floating)):
+        raise TypeError(f"{name}: an integer, got {v!r:.60} ({type(v).__name__})")
+    if isinstance(v, (float, np.floating)):
+        if not np.isfinite(v) or float(v) != int(v):
+            raise ValueError(f"{name}: an integer, got {v!r}")
+    i = int(v)
+    if not lo <= i <= hi:
+        raise ValueError(f"{name}: {i} is outside the C type's range [{lo}, {hi}]")
+    return i
+
+
+def _integers(a, name, lo_hi=UINT_RANGE):
+    """an integer array (a scalar or one per row) within the C type's range, as int64."""
+    arr = np.asarray(a)
+    lo, hi = lo_hi
+    if arr.dtype.kind == "O":
+        return np.array([_integer(x, name, lo_hi) for x in arr.ravel()],
+                        dtype=np.int64).reshape(arr.shape)
+    if arr.dtype.kind not in "iu":
+        raise TypeError(f"{name}: integers, got {arr.dtype} values ({a!r:.60})")
+    if arr.size and (arr.min() < lo or arr.max() > hi):
+        bad = arr[(arr < lo) | (arr > hi)].ravel()[0]
+        raise ValueError(f"{name}: {int(bad)} is outside the C type's range [{lo}, {hi}]")
+    return arr.astype(np.int64)
 
 
 def _vec(a, name, n=None):
@@ -53,6 +109,6 @@ def _attitudes(q):
     return a
 
 
-def _elementwise(fn, x):
-    x = np.asarray(x, dtype=np.float64)
+def _elementwise(fn, x, name="x"):
+    x = _floats(x, name)
     return np.vectorize(lambda v: fn(float(v)), otypes=[np.float64])(x)

@@ -5,7 +5,7 @@ import ctypes
 
 import numpy as np
 
-from ._arrays import _floats
+from ._arrays import _floats, _integer
 from ._runtime import L
 
 
@@ -61,11 +61,76 @@ def _model(model):
         if types[k] is ctypes.c_int:
             if float(v) != int(v):
                 raise ValueError(f"model[{k!r}]: an integer option, got {v!r}")
-            v = int(v)
+            v = _integer(v, f"model[{k!r}]")  # ctypes would wrap it modulo 2^32
         else:
             v = float(v)
         setattr(m, k, v)
     return m
+
+
+# The ranges include/orbillum/model.h documents for oi_model (its "Model constants
+# and options" comment, OI_MODEL_* bounds, the option macros): a zero real
+# field is the default; radii out of range are OI_ERR_RADIUS when finite.
+_MODEL_REALS = (  # in the library's order of checks
+    ("sun_radius_km", L.OI_MODEL_RADIUS_MIN, L.OI_MODEL_RADIUS_MAX, "km"),
+    ("earth_radius_km", L.OI_MODEL_RADIUS_MIN, L.OI_MODEL_RADIUS_MAX, "km"),
+    ("moon_radius_km", L.OI_MODEL_RADIUS_MIN, L.OI_MODEL_RADIUS_MAX, "km"),
+    ("tsi_w_m2", L.OI_MODEL_TSI_MIN, L.OI_MODEL_TSI_MAX, "W/m^2"),
+    ("au_km", L.OI_MODEL_AU_MIN, L.OI_MODEL_AU_MAX, "km"),
+    ("moon_albedo", 0.0, 1.0, ""),
+)
+_MODEL_OPTIONS = (
+    ("earth_model", (L.OI_EARTH_TABLE, L.OI_EARTH_LAMBERT)),
+    ("moon_model", (L.OI_MOON_PHASE_LAW, L.OI_MOON_LAMBERT)),
+    ("limb_darkening", (L.OI_LIMB_UNIFORM, L.OI_LIMB_DARKENED)),
+    ("earth_shape", (L.OI_EARTH_SPHERE, L.OI_EARTH_WGS84)),
+    ("band", (L.OI_BAND_V, L.OI_BAND_TOTAL)),
+    ("earth_reflection", (L.OI_EARTH_REFLECT_MOMENTS, L.OI_EARTH_REFLECT_MEAN,
+                          L.OI_EARTH_REFLECT_TABLE)),
+)
+
+
+def _option_text(k, allowed):
+    words = {v: w for w, v in _MODEL_WORDS.get(k, {}).items()}
+    return ", ".join(f"{v} ({words[v]!r})" if v in words else str(v) for v in allowed)
+
+
+def _model_problem(m, albedo=False):
+    """The first oi_model field of m outside the ranges the header documents,
+    as text naming the field and its range; None when every field is in range.
+    albedo: the call reads the albedo model (oi_illuminate and its batch)."""
+    if m is None:
+        return None
+    for k, lo, hi, unit in _MODEL_REALS:
+        v = getattr(m, k)
+        if v == 0:
+            continue  # the default
+        if not (np.isfinite(v) and lo <= v <= hi):
+            return (f"model[{k!r}] = {v!r} is outside its range: 0 (the default) or "
+                    f"[{lo:g}, {hi:g}]{' ' + unit if unit else ''}")
+    for k, allowed in _MODEL_OPTIONS:
+        v = getattr(m, k)
+        if v not in allowed:
+            return f"model[{k!r}] = {v} is none of {_option_text(k, allowed)}"
+    if albedo:
+        allowed = (L.OI_ALBEDO_UNIFORM, L.OI_ALBEDO_KNOCKE, L.OI_ALBEDO_MAP)
+        if m.albedo_model not in allowed:
+            return (f"model['albedo_model'] = {m.albedo_model} is none of "
+                    f"{_option_text('albedo_model', allowed)}")
+        if m.albedo_model == L.OI_ALBEDO_MAP:
+            n_lat, n_lon = m.albedo_map_n_lat, m.albedo_map_n_lon
+            if not m.albedo_map:
+                return "model['albedo_model'] = 'map' needs model['albedo_map'] (a 2-D grid)"
+            top = L.OI_ALBEDO_MAP_MAX_DIM
+            if not (1 <= n_lat <= top and 1 <= n_lon <= top):
+                return (f"model['albedo_map']: shape ({n_lat}, {n_lon}); each dimension "
+                        f"1..OI_ALBEDO_MAP_MAX_DIM = {L.OI_ALBEDO_MAP_MAX_DIM}")
+    return None
+
+
+def _model_explain(m, albedo=False):
+    """explain() for _batch_status: the model's first bad field."""
+    return lambda st: _model_problem(m, albedo)
 
 
 def _mptr(m):

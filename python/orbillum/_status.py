@@ -3,19 +3,31 @@
 batch call's own error as a ValueError."""
 import numpy as np
 
+from ._arrays import UINT_RANGE, _integer
 from ._runtime import _lib
 
 
 def status_name(status):
-    """Name of a status code ("OK", "ERR_NONFINITE", ...), as oi_status_name.
+    """Name of a status code ("OK", "ERR_NONFINITE", ...), as oi_status_name;
+    "UNKNOWN" for any other integer, those beyond the C int's range too (never
+    the name of the value modulo 2^32). TypeError for a value that is no
+    integer.
 
     Example:
 
     >>> import orbillum
     >>> orbillum.status_name(orbillum.OI_OK), orbillum.status_name(orbillum.OI_ERR_NONFINITE)
     ('OK', 'ERR_NONFINITE')
+    >>> orbillum.status_name(2**70), orbillum.status_name(-99)
+    ('UNKNOWN', 'UNKNOWN')
     """
-    return _lib.oi_status_name(int(status)).decode()
+    try:
+        s = _integer(status, "status")
+    except ValueError as e:
+        if "outside the C type's range" not in str(e):
+            raise
+        return "UNKNOWN"  # oi_status_name's name for any other value
+    return _lib.oi_status_name(s).decode()
 
 
 def _names_of(values, name_fn):
@@ -51,10 +63,17 @@ def flag_names(flags):
     'eclipsed+occulted'
     >>> orbillum.flag_names(0)
     ''
+
+    A mask must fit the C unsigned (OI_FLAG_* bits: 0 to 2^32 - 1):
+
+    >>> orbillum.flag_names(-1)
+    Traceback (most recent call last):
+    ...
+    ValueError: flags: -1 is outside the C type's range [0, 4294967295]
     """
     out = []
     bit = 1
-    f = int(flags)
+    f = _integer(flags, "flags", UINT_RANGE)
     while bit <= f:
         if f & bit:
             n = _lib.oi_flag_name(bit)
@@ -63,9 +82,46 @@ def flag_names(flags):
     return "+".join(out)
 
 
-def _batch_status(st, n, what):
+def _batch_status(st, n, what, explain=None):
     """A batch call's own error (the model, the camera: every row has it) as a
-    ValueError; row errors stay in the status array."""
+    ValueError; row errors stay in the status array. explain(st): the first
+    field out of its documented range, as text, or None (the library's status
+    is the authority: this only names the field)."""
     if st < 0 and n > 0:
-        raise ValueError(f"{what}: {status_name(st)} (a field out of its range: see "
-                         f"include/orbillum.h)")
+        why = explain(st) if explain is not None else None
+        if why is None:
+            why = ("no field outside the ranges include/orbillum/*.h document: an option "
+                   "this build leaves out (include/oi_config.h)?")
+        raise ValueError(f"{what}: {status_name(st)}: {why}")
+
+
+_NAN_ROWS = {}
+
+
+def _nan_row(dtype):
+    """One record of dtype with every floating-point field NaN (nested and
+    array fields too) and every integer field 0: a failed row's values."""
+    row = _NAN_ROWS.get(dtype)
+    if row is None:
+        row = np.zeros(1, dtype=dtype)
+
+        def fill(rec, dt):
+            for name in dt.names:
+                sub = dt.fields[name][0]
+                if sub.names:
+                    fill(rec[name], sub)
+                elif sub.base.kind == "f":
+                    rec[name] = np.nan
+        fill(row, dtype)
+        _NAN_ROWS[dtype] = row
+    return row
+
+
+def _nan_failed(rec, status):
+    """The float fields of the rows whose status is an error set to NaN (the
+    C library gives 0 there, which reads as a valid value: a bright
+    magnitude, an umbra, full phase); integer fields stay 0."""
+    failed = status < 0
+    if failed.any():  # one masked pass, spared on the common all-valid batch
+        rec[failed] = _nan_row(rec.dtype)
+    return failed

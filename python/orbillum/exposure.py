@@ -6,11 +6,12 @@ import ctypes
 
 import numpy as np
 
-from ._arrays import _floats, _scalar_rows
-from ._models import _model, _mptr
+from ._arrays import UINT_RANGE, _floats, _integer, _integers, _scalar_rows
+from ._models import _model, _model_problem, _mptr
 from ._runtime import EXPOSURE_DTYPE, L, _lib
-from ._status import _batch_status, _names_of, _status_names, flag_names
-from .illumination import _flatten, _illuminate_raw, _scenes
+from ._status import _batch_status, _nan_failed, _names_of, _status_names, flag_names
+from .illumination import (_attitudes_refused, _flatten, _illuminate_raw, _refuse_rows,
+                           _scenes)
 
 
 _CAMERA_LISTS = {"times_s": ("n_times", L.OI_CAMERA_MAX_TIMES),
@@ -38,7 +39,7 @@ def _camera_from_dict(d):
             raise ValueError(f"camera[{k!r}]: {v.size} values, {count} is {counts[count]}")
         getattr(c, k)[:v.size] = [float(x) for x in v]
     for count, size in counts.items():
-        if count in d and int(d[count]) != size:
+        if count in d and _integer(d[count], f"camera[{count!r}]") != size:
             raise ValueError(f"camera[{count!r}] = {d[count]} but the lists have {size}")
         setattr(c, count, size)
     for k, t in fields.items():
@@ -74,17 +75,155 @@ def _camera_ptr(cam):
                     "orbillum._lib.oi_camera")
 
 
+# The planner's sky words (its sky column): "all" is zodiacal+moon, as there.
+_SKY_WORDS = {"none": 0, "zodiacal": L.OI_SKY_ZODIACAL, "moon": L.OI_SKY_MOON,
+              "starlight": L.OI_SKY_STARLIGHT, "all": L.OI_SKY_ZODIACAL | L.OI_SKY_MOON}
+
+
+def sky_mask(sky):
+    """oi_expose_goal.sky from a mask of OI_SKY_* bits or the planner's words,
+    '+'-joined, any case ('zodiacal+moon+starlight', 'all' = zodiacal+moon,
+    'none' or '' = 0). A mask outside the C unsigned's range, a bool or a
+    fraction is refused (unknown bits within the range: the library's
+    ERR_FLAGS in every row).
+
+    Example:
+
+    >>> import orbillum
+    >>> Z, M, S = orbillum.OI_SKY_ZODIACAL, orbillum.OI_SKY_MOON, orbillum.OI_SKY_STARLIGHT
+    >>> orbillum.sky_mask("zodiacal+starlight") == Z | S, orbillum.sky_mask("all") == Z | M
+    (True, True)
+    >>> orbillum.sky_mask(""), orbillum.sky_mask(Z | M)
+    (0, 3)
+    """
+    if isinstance(sky, str):
+        m = 0
+        for part in filter(None, (p.strip().lower() for p in sky.split("+"))):
+            if part not in _SKY_WORDS:
+                raise ValueError(f"sky: unknown word {part!r}; use none, zodiacal, moon, "
+                                 f"starlight, all joined by '+'")
+            m |= _SKY_WORDS[part]
+        return m
+    return _integer(sky, "sky", UINT_RANGE)
+
+
+def _real(v, name):
+    """A scalar real number as a float: TypeError for complex, bool, strings."""
+    a = _floats(v, name)
+    if a.ndim != 0:
+        raise ValueError(f"{name}: a scalar, got shape {a.shape}")
+    if isinstance(v, (str, bytes)):
+        raise TypeError(f"{name}: a number, got the string {v!r}")
+    return float(a)
+
+
 def _goal(fill, snr_min, sky=None, sensor_temp_c=None):
     if fill is None and snr_min is None and sky is None and sensor_temp_c is None:
         return None
     g = L.oi_expose_goal()
-    g.fill = 0.0 if fill is None else fill
-    g.snr_min = 0.0 if snr_min is None else snr_min
-    g.sky = 0 if sky is None else int(sky)
+    g.fill = 0.0 if fill is None else _real(fill, "fill")
+    g.snr_min = 0.0 if snr_min is None else _real(snr_min, "snr_min")
+    g.sky = 0 if sky is None else sky_mask(sky)
     if sensor_temp_c is not None:
         g.has_sensor_temp = 1
-        g.sensor_temp_c = float(sensor_temp_c)
+        g.sensor_temp_c = _real(sensor_temp_c, "sensor_temp_c")
     return g
+
+
+def _interval(v, lo, hi, lo_open=False, hi_open=False):
+    """v in the interval (NaN never is)."""
+    return ((v > lo) if lo_open else (v >= lo)) and ((v < hi) if hi_open else (v <= hi))
+
+
+def _show(lo, hi, lo_open=False, hi_open=False):
+    h = "pi" if hi == np.pi else f"{hi:g}"
+    return f"{'(' if lo_open else '['}{lo:g}, {h}{')' if hi_open else ']'}"
+
+
+# oi_camera's ranges as include/orbillum/camera.h documents them (oi_expose, Note 4):
+# (field, lo, hi, lo open, hi open, unit), in the header's order.
+_CAMERA_RANGES = (
+    ("aperture_m", 0.0, 10.0, True, False, "m"),
+    ("focal_length_m", 1e-3, 1e3, False, False, "m"),
+    ("pixel_pitch_m", 1e-7, 1e-3, False, False, "m"),
+    ("transmission", 0.0, 1.0, True, False, ""),
+    ("quantum_efficiency", 0.0, 1.0, True, False, ""),
+    ("band_fraction", 0.0, 1.0, True, False, ""),
+    ("photon_energy_j", 1e-20, 1e-17, False, False, "J"),
+    ("full_well_e", 1.0, 1e9, False, False, "e-"),
+    ("dark_current_e_s", 0.0, 1e9, False, False, "e-/s"),
+    ("psf_peak_fraction", 0.0, 1.0, True, False, ""),
+    ("fov_rad", 0.0, np.pi, True, False, "rad"),
+    ("sun_exclusion_rad", 0.0, np.pi, False, False, "rad"),
+    ("max_trail_px", 0.0, 1e6, False, False, "px"),
+)
+
+
+def _camera_problem(c):
+    """The first oi_camera field outside the ranges of include/orbillum/camera.h
+    (oi_expose, Note 4), as text naming the field and its range; None when
+    every field is in range."""
+    def bad(k, v, rng):
+        return (f"camera[{k!r}] = {v!r} is outside {rng} (include/orbillum/camera.h, "
+                f"oi_expose Note 4)")
+    for k, lo, hi, lo_open, hi_open, unit in _CAMERA_RANGES:
+        v = getattr(c, k)
+        if not _interval(v, lo, hi, lo_open, hi_open):
+            return bad(k, v, _show(lo, hi, lo_open, hi_open) + (f" {unit}" if unit else ""))
+    v = c.detect_false_alarm
+    if not (v == 0 or _interval(v, 1e-15, 0.5, hi_open=True)):
+        return bad("detect_false_alarm", v, "0 or [1e-15, 0.5)")
+    v = c.detect_probability
+    if not (v == 0 or _interval(v, 0.5, 0.999999)):
+        return bad("detect_probability", v, "0 or [0.5, 0.999999]")
+    temps = ("dark_ref_temp_c", "temp_min_c", "temp_max_c")
+    if c.dark_doubling_c == 0:
+        for k in temps:
+            if getattr(c, k) != 0:
+                return bad(k, getattr(c, k), "0 (no temperature model: dark_doubling_c is 0)")
+    else:
+        if not _interval(c.dark_doubling_c, 1.0, 100.0):
+            return bad("dark_doubling_c", c.dark_doubling_c, "0 or [1, 100] deg C")
+        for k in temps:
+            if not _interval(getattr(c, k), -150.0, 150.0):
+                return bad(k, getattr(c, k), "[-150, 150] deg C")
+        if not c.temp_min_c <= c.temp_max_c:
+            return bad("temp_max_c", c.temp_max_c, f"[temp_min_c = {c.temp_min_c!r}, 150] deg C")
+        span = 30.0 * c.dark_doubling_c
+        if not (c.temp_max_c - c.dark_ref_temp_c <= span
+                and c.dark_ref_temp_c - c.temp_min_c <= span):
+            return bad("temp_min_c, temp_max_c", (c.temp_min_c, c.temp_max_c),
+                       f"30 doublings of dark_ref_temp_c = {c.dark_ref_temp_c!r} "
+                       f"({30 * c.dark_doubling_c:g} deg C either side)")
+    for k, count, cap, hi, unit in (("times_s", "n_times", L.OI_CAMERA_MAX_TIMES, 1e4, "s"),
+                                    ("gains", "n_gains", L.OI_CAMERA_MAX_GAINS, 1e3, "")):
+        n = getattr(c, count)
+        if not 1 <= n <= cap:
+            return bad(count, n, f"1..{cap}")
+        vals = list(getattr(c, k))[:n]
+        prev = 0.0
+        for i, v in enumerate(vals):
+            if not (v > prev and v <= hi):
+                return (f"camera[{k!r}][{i}] = {v!r}: the {k} must be in (0, {hi:g}]"
+                        f"{' ' + unit if unit else ''} and strictly ascending "
+                        f"(include/orbillum/camera.h, oi_expose Note 4)")
+            prev = v
+    for i, v in enumerate(list(c.read_noise_e)[:c.n_gains]):
+        if not _interval(v, 0.0, 1e6):
+            return (f"camera['read_noise_e'][{i}] = {v!r} is outside [0, 1e6] e- "
+                    f"(include/orbillum/camera.h, oi_expose Note 4)")
+    return None
+
+
+def _camera_explain(c, m=None):
+    """explain() for _batch_status: the camera's (or the model's) first bad field."""
+    def explain(st):
+        if st == L.OI_ERR_CAMERA:
+            return _camera_problem(c)
+        if st in (L.OI_ERR_MODEL, L.OI_ERR_RADIUS):
+            return _model_problem(m)
+        return None
+    return explain
 
 
 def _exposure_dict(ex, st):
@@ -106,9 +245,12 @@ def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None
     (a custom camera), or an oi_camera structure.
     observer: required (the exposure is what the observer's camera sees):
     None raises ValueError.
-    fill, snr_min: the oi_expose_goal (None: the C defaults).
-    sky: oi_expose_goal.sky, OI_SKY_* bits (orbillum._lib; None or 0: no sky
-    background but the sunlit Earth, as before).
+    fill, snr_min: the oi_expose_goal (None: the C defaults). A camera the
+    library refuses (ERR_CAMERA) raises ValueError naming its first field
+    outside include/orbillum/camera.h's ranges (oi_expose Note 4) and the range.
+    sky: oi_expose_goal.sky, OI_SKY_* bits or the planner's words
+    ('zodiacal+moon+starlight', 'all' = zodiacal+moon; sky_mask()); None, 0
+    or 'none': no sky background but the sunlit Earth, as before.
     target_velocity, observer_velocity: (N, 3), (3,) or None (at rest), km/s in
     the positions' frame: the target's angular rate and trail (the planner's
     target_v*, observer_v* columns; docs/camera.md, "Motion").
@@ -121,7 +263,12 @@ def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None
     gain, time_index, gain_index, signal_e, background_e, peak_e, saturation_e,
     fill, snr, sun_angle_rad, flags, background_w_m2_sr), flag_names, expose_status and
     expose_status_name. Rows whose illumination failed are not exposed
-    (expose_status equals their illumination status, exposure fields 0).
+    (expose_status equals their illumination status). A failed row (status <
+    0, or expose_status < 0 for the exposure's fields) has every float output
+    NaN, not the C library's 0 (a 0 reads as a valid value: mag_v 0 is a
+    bright target, detect_margin_mag 0 a target at the threshold, snr 0 a
+    dark one; the planner leaves those cells empty); its integer outputs
+    (time_index, gain_index, flags, shadow_region) stay 0.
     row_status / row_status_name: the status build/oi-plan prints for the row.
     outputs: None (every exposure field) or a mask of OI_EXPOSE_* bits
     (oi_expose_scene_batch_outputs: OI_EXPOSE_SETTING, FAINT, DETECT, SUN_ANGLE,
@@ -166,7 +313,7 @@ def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None
                          f"{L.OI_EXPOSE_ALL:#x})")
     else:
         emask = int(outputs)
-    cp, _ = _camera_ptr(camera)
+    cp, cam = _camera_ptr(camera)
     m = _model(model)
     g = _goal(fill, snr_min, sky, sensor_temp_c)
     keep = []
@@ -175,6 +322,7 @@ def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None
                  attitude_q=attitude_q, keep=keep, epoch_jd=epoch_jd,
                  earth_rotation_rad=earth_rotation_rad)
     res, status = _illuminate_raw(sc, m)
+    _refuse_rows(status, _attitudes_refused(sc, attitude_q))
     n = sc.shape[0]
     ex = np.empty(n, dtype=EXPOSURE_DTYPE)  # the batch writes every row
     est = np.empty(n, dtype=np.intc)
@@ -182,12 +330,14 @@ def expose(camera, sun, moon, target, observer, *, terms=None, earth_albedo=None
     # oi_expose_scene_batch's bits)
     st = _lib.oi_expose_scene_batch_outputs(n, cp, sc.ctypes.data, res.ctypes.data, _mptr(m),
                                             _mptr(g), emask, ex.ctypes.data, est.ctypes.data)
-    _batch_status(st, n, "camera or model")
-    # rows whose illumination failed are not exposed: their status, zero fields
+    _batch_status(st, n, "camera or model", _camera_explain(cam, m))
+    # rows whose illumination failed are not exposed: their status (the
+    # fields NaN below)
     failed = status < 0
-    if failed.any():  # two masked passes spared on the common all-valid batch
+    if failed.any():  # a masked pass spared on the common all-valid batch
         est[failed] = status[failed]
-        ex[failed] = np.zeros(1, dtype=EXPOSURE_DTYPE)
+    _nan_failed(res, status)
+    _nan_failed(ex, est)
     out = _flatten(res, status)
     out.update(_exposure_dict(ex, est))
     # the planner's row status: the illumination's (warnings included) unless
@@ -202,7 +352,8 @@ def expose_flux(camera, flux_w_m2, background_w_m2_sr=0.0, flags=0, *, fill=None
                 snr_min=None, sensor_temp_c=None):
     """oi_expose per row from a flux at the aperture (W/m^2), a background
     radiance (W/m^2/sr) and known flags; sensor_temp_c as in expose().
-    Returns the oi_exposure fields.
+    Returns the oi_exposure fields; a failed row's float fields are NaN (as
+    expose()). flags: integers within the C unsigned (TypeError, ValueError).
 
     Example: two fluxes at the aperture, no background; the fainter one is
     below the camera's detection limit (flag too_faint):
@@ -214,15 +365,15 @@ def expose_flux(camera, flux_w_m2, background_w_m2_sr=0.0, flags=0, *, fill=None
     >>> np.round(x["signal_e"], 3).tolist()   # in proportion to the flux
     [2125.015, 21.25]
     """
-    cp, _ = _camera_ptr(camera)
+    cp, cam = _camera_ptr(camera)
     flux = np.atleast_1d(_floats(flux_w_m2, "flux_w_m2"))
     if flux.ndim != 1:
         raise ValueError(f"flux_w_m2: expected a scalar or shape (N,), got {flux.shape}")
     n = flux.shape[0]
     bg = _scalar_rows(background_w_m2_sr, n, "background_w_m2_sr")
     try:
-        fl = np.broadcast_to(np.asarray(flags, dtype=np.uint32), (n,))
-    except (TypeError, ValueError, OverflowError) as e:
+        fl = np.broadcast_to(_integers(flags, "flags", UINT_RANGE), (n,))
+    except ValueError as e:
         raise ValueError(f"flags: a mask of OI_FLAG_* or one per row ({n}): {e}") from None
     g = _goal(fill, snr_min, sensor_temp_c=sensor_temp_c)
     inp = np.zeros(n, dtype=np.dtype(L.oi_expose_in))
@@ -232,7 +383,8 @@ def expose_flux(camera, flux_w_m2, background_w_m2_sr=0.0, flags=0, *, fill=None
     ex = np.empty(n, dtype=EXPOSURE_DTYPE)  # the batch writes every row
     st = np.empty(n, dtype=np.intc)
     bst = _lib.oi_expose_batch(n, cp, inp.ctypes.data, _mptr(g), ex.ctypes.data, st.ctypes.data)
-    _batch_status(bst, n, "camera")
+    _batch_status(bst, n, "camera", _camera_explain(cam))
+    _nan_failed(ex, st)
     return _exposure_dict(ex, st)
 
 

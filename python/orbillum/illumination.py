@@ -6,10 +6,10 @@ import ctypes
 
 import numpy as np
 
-from ._arrays import _attitudes, _floats, _n_rows, _vec
-from ._models import _model, _mptr
+from ._arrays import UINT_RANGE, _attitudes, _floats, _integer, _n_rows, _vec
+from ._models import _model, _model_explain, _mptr
 from ._runtime import ILLUM_DTYPE, SCENE_DTYPE, L, _lib
-from ._status import _batch_status, _status_names
+from ._status import _batch_status, _nan_failed, _status_names
 from .facets import _is_per_row, _shape_of
 
 
@@ -28,9 +28,20 @@ def terms_mask(terms):
     True
     >>> orbillum.terms_mask("all") == orbillum.OI_TERM_ALL, orbillum.terms_mask("")
     (True, 0)
+
+    A mask is an unsigned C integer: one beyond its range is refused (numpy
+    and ctypes would wrap it modulo 2^32); unknown bits within it are the
+    library's ERR_TERMS in the row:
+
+    >>> orbillum.terms_mask(2**32 + 1)
+    Traceback (most recent call last):
+    ...
+    ValueError: terms: 4294967297 is outside the C type's range [0, 4294967295]
     """
+    if isinstance(terms, (bool, np.bool_)):
+        raise TypeError(f"terms: a mask or '+'-joined words, got {terms!r}")
     if isinstance(terms, (int, np.integer)):
-        return int(terms)
+        return _integer(terms, "terms", UINT_RANGE)
     s = str(terms).strip().lower()
     if s == "all":
         return L.OI_TERM_ALL
@@ -156,6 +167,27 @@ def _outputs_mask(outputs):
     return int(outputs)
 
 
+def _attitudes_refused(sc, attitude_q):
+    """Rows with a shape whose given attitude quaternion is no unit one: a norm
+    off 1 by more than 1e-6 (the library's bound), NaN, zero or one whose
+    squared norm underflows to 0 (the library reads an all-zero quaternion as
+    the identity; a quaternion the caller gives is refused, as the planner
+    does). A sphere's attitude is not read. None when no attitude was given."""
+    if attitude_q is None:
+        return None
+    q = sc["attitude_q"]
+    with np.errstate(all="ignore"):
+        norm = np.sqrt(np.einsum("ij,ij->i", q, q))
+        bad = ~(np.abs(norm - 1.0) <= 1e-6)
+    return bad & (sc["shape"] != 0)
+
+
+def _refuse_rows(status, refused):
+    """status ERR_SHAPE for the refused rows (before any use of the status)."""
+    if refused is not None and refused.any():
+        status[refused] = L.OI_ERR_SHAPE
+
+
 def _illuminate_raw(sc, m, outputs=None):
     """oi_illuminate_batch (or, with an outputs mask,
     oi_illuminate_batch_outputs) over the scenes: one C call for every row."""
@@ -168,7 +200,7 @@ def _illuminate_raw(sc, m, outputs=None):
     else:
         st = _lib.oi_illuminate_batch_outputs(n, sc.ctypes.data, _mptr(m), outputs,
                                               res.ctypes.data, status.ctypes.data)
-    _batch_status(st, n, "model")
+    _batch_status(st, n, "model", _model_explain(m, albedo=True))
     return res, status
 
 
@@ -192,8 +224,10 @@ def illuminate(sun, moon, target, observer=None, *, terms=None, earth_albedo=Non
                        one per row. ValueError for an unknown name or a facet the
                        library rejects (naming it)
       attitude_q       None (identity) or quaternions (w, x, y, z) body -> input
-                       frame, (4,) or (N, 4); a norm off 1 by more than 1e-6 (NaN
-                       too) is the row's status ERR_SHAPE, else it is normalised
+                       frame, (4,) or (N, 4); with a shape, a norm off 1 by more
+                       than 1e-6 (NaN, zero and an underflowing norm such as
+                       (1e-300, 0, 0, 0) too) is the row's status ERR_SHAPE, as
+                       the planner's; else it is normalised
       model            None (defaults) or dict of oi_model fields, e.g.
                        {"earth_model": "lambert", "limb_darkening": "darkened"};
                        albedo models: {"albedo_model": "knocke"}, or {"albedo_model":
@@ -215,7 +249,12 @@ def illuminate(sun, moon, target, observer=None, *, terms=None, earth_albedo=Non
     Returns: dict of arrays, one entry per oi_illum field (nested shadow fields as
       shadow_*; aliases sun_fraction, sun_fraction_ld, sun_fraction_atm;
       dir_* of shape (N, 3); flux_specular, the facets' specular part of
-      flux_obs), plus status (int32) and status_name.
+      flux_obs), plus status (int32) and status_name. A row whose status is
+      an error has every float field NaN (mag_v too: the C library's 0 would
+      read as a bright target), shadow_region 0. A model the library rejects
+      raises ValueError naming its first field outside include/orbillum/model.h's
+      ranges and the range; an integer model field beyond the C int is
+      refused, not wrapped.
 
     Example: the Sun along +x, an observer on the terminator (the Sun on
     its horizon), a target 500 km above it in sunlight and one behind the
@@ -254,6 +293,8 @@ def illuminate(sun, moon, target, observer=None, *, terms=None, earth_albedo=Non
                  target_radius_m, target_shape=target_shape, attitude_q=attitude_q, keep=keep,
                  epoch_jd=epoch_jd, earth_rotation_rad=earth_rotation_rad)
     res, status = _illuminate_raw(sc, m, mask)
+    _refuse_rows(status, _attitudes_refused(sc, attitude_q))
+    _nan_failed(res, status)
     return _flatten(res, status)
 
 
@@ -290,5 +331,8 @@ def earthshine(theta, h_km, *, model=None):
     m = _model(model)
     bst = _lib.oi_earthshine_batch(th.size, th.ctypes.data, h.ctypes.data, _mptr(m),
                                    phi.ctypes.data, psi.ctypes.data, st.ctypes.data)
-    _batch_status(bst, th.size, "model")
+    _batch_status(bst, th.size, "model", _model_explain(m))
+    failed = st < 0
+    phi[failed] = np.nan  # the library's 0 would read as a dark point
+    psi[failed] = np.nan
     return phi.reshape(shape), psi.reshape(shape), st.reshape(shape)

@@ -4,9 +4,9 @@ Earth's shadow, umbra and penumbra."""
 import numpy as np
 
 from ._arrays import _n_rows, _vec
-from ._models import _model, _mptr
+from ._models import _model, _model_explain, _mptr
 from ._runtime import L, _lib
-from ._status import _batch_status
+from ._status import _batch_status, _nan_failed
 
 
 def sun_fraction(sun, point, *, model=None, outputs=None):
@@ -52,7 +52,8 @@ def sun_fraction(sun, point, *, model=None, outputs=None):
     st = np.empty(n, dtype=np.intc)
     bst = _lib.oi_sun_fraction_batch(n, sun.ctypes.data, point.ctypes.data, _mptr(m), int(mask),
                                      sh.ctypes.data, st.ctypes.data)
-    _batch_status(bst, n, "model")
+    _batch_status(bst, n, "model", _model_explain(m))
+    _nan_failed(sh, st)
     out = {k: sh[k] for k in sh.dtype.names}
     out["status"] = st
     return out

@@ -5,6 +5,7 @@ import ctypes
 
 import numpy as np
 
+from ._arrays import _floats
 from ._runtime import L, _lib
 from ._status import status_name
 
@@ -20,8 +21,7 @@ def starlight_radiance(l_rad, b_rad):
     2.664e-07
     """
     return np.vectorize(lambda l, b: _lib.oi_starlight_radiance(float(l), float(b)),
-                        otypes=[np.float64])(np.asarray(l_rad, dtype=np.float64),
-                                             np.asarray(b_rad, dtype=np.float64))
+                        otypes=[np.float64])(_floats(l_rad, "l_rad"), _floats(b_rad, "b_rad"))
 
 
 def galactic(direction):
@@ -38,7 +38,7 @@ def galactic(direction):
     >>> np.round(np.degrees(b), 2).tolist(), round(float(np.degrees(l[0])), 2)
     ([0.0, 90.0], 0.0)
     """
-    d = np.asarray(direction, dtype=np.float64)
+    d = _floats(direction, "direction")
     if d.shape[-1:] != (3,):
         raise ValueError(f"direction: shape (..., 3), got {d.shape}")
     flat = d.reshape(-1, 3)
