@@ -232,7 +232,7 @@ def test_uniform_disc_shift_coefficients():
     import re
     from bake.atmosphere import disc_shift
     root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-    with open(os.path.join(root, "src", "atmosphere.c")) as fh:
+    with open(os.path.join(root, "src", "shadow", "atmosphere.c")) as fh:
         src = fh.read()
     got = [float(re.search(r"#define OI_ATM_SHIFT_C%d OI_R\(([-0-9.e]+)\)" % k, src).group(1))
            for k in range(3)]
@@ -354,7 +354,7 @@ def test_moonlight_optical_depth_nodes():
     import re
     from bake.atmosphere import moonlight
     root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-    with open(os.path.join(root, "src", "atmosphere_moonlight.c")) as fh:
+    with open(os.path.join(root, "src", "shadow", "atmosphere_moonlight.c")) as fh:
         src = fh.read()
     body = src[src.index("ml_tau[ML_N] = {"):]
     body = body[:body.index("};")]

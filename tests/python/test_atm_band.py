@@ -119,7 +119,7 @@ def test_total_band_within_5_km_of_solaars_at_490_km(disc):
 
 def test_total_band_shift_coefficients():
     from bake.atmosphere import disc_shift
-    with open(os.path.join(ROOT, "src", "atmosphere.c")) as fh:
+    with open(os.path.join(ROOT, "src", "shadow", "atmosphere.c")) as fh:
         src = fh.read()
     got = [float(re.search(r"#define OI_ATM_TOTAL_SHIFT_C%d OI_R\(([-0-9.e]+)\)" % k, src).group(1))
            for k in range(3)]

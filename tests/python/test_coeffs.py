@@ -105,7 +105,7 @@ _SRC = [(os.path.relpath(p, ROOT), entry)
 
 def src_literal(name, single):
     """[(value, is_float)] of the definition of name (or OI_name, the prefix of
-    a constant shared through src/oi_internal.h) in src/ for the precision
+    a constant shared through a layer header) in src/ for the precision
     (several files may define it, with the same values)."""
     found = [(f, text) for f, (n, text, adm) in _SRC
              if n in (name, "OI_" + name) and single in adm]
@@ -165,7 +165,7 @@ def test_derived_literals_are_the_generators(single):
 
 @pytest.mark.parametrize("single", [
     pytest.param(False, id="double", marks=pytest.mark.xfail(strict=True, reason=(
-        "src/scene/illuminate.c holds 2.48885731828238908997e-6, 7.2e-16 (5 ulp) below "
+        "src/scene/illuminate_terms.h holds 2.48885731828238908997e-6, 7.2e-16 (5 ulp) below "
         "10^(-0.4 x 14.01) = 2.48885731828239087274e-6: the exponent was rounded to double "
         "before the power. Correcting it moves e_moon and flux_obs of the golden planner "
         "output by a few ulp, which the reshaping may not do unasked; remove this mark "

@@ -38,7 +38,7 @@ def test_kernel_is_the_clamped_cosine_squared():
     for l, al in a.items():
         assert abs(k[l] - al * al / math.pi) <= 1e-13, l
     # the runtime's Legendre coefficients of p: s_l (2l + 1) / (4 pi)
-    src = open(os.path.join(ROOT, "src", "earthshine_angular.c")).read()
+    src = open(os.path.join(ROOT, "src", "sources", "earthshine_angular.c")).read()
     for l, text in {0: "0.25", 1: "1.0) / OI_R(3.0)", 2: "5.0) / OI_R(64.0)",
                     4: "9.0) / OI_R(2304.0)", 6: "13.0) / OI_R(16384.0)",
                     8: "17.0) / OI_R(65536.0)"}.items():
@@ -162,7 +162,7 @@ def test_cubature_kernel_acos_polynomial():
     # acos on [0, 1] (mpmath at 30 digits, 20001 points)
     import re
     import mpmath
-    text = open(os.path.join(ROOT, "src", "earthshine_angular.c")).read()
+    text = open(os.path.join(ROOT, "src", "sources", "earthshine_angular.c")).read()
     body = re.search(r"acos_poly\[8\] = \{(.*?)\};", text, re.S).group(1)
     a = [mpmath.mpf(v) for v in re.findall(r"OI_R\(([-0-9.e]+)\)", body)]
     assert len(a) == 8
@@ -192,7 +192,7 @@ def test_cubature_sincos_taylor_polynomials():
     # angles inside that range (b_m t <= pi t_max; a / 2 < pi / 4)
     import re
     import mpmath
-    text = open(os.path.join(ROOT, "src", "earthshine_angular.c")).read()
+    text = open(os.path.join(ROOT, "src", "sources", "earthshine_angular.c")).read()
     inv = {int(n): (mpmath.mpf(a), mpmath.mpf(b)) for n, a, b in re.findall(
         r"#define INV_FACT(\d+) \(OI_R\(([0-9.]+)\) / OI_R\(([0-9.]+)\)\)", text)}
     assert sorted(inv) == list(range(2, 15))
@@ -222,7 +222,7 @@ def test_cubature_rules_are_the_gauss_rules():
     # half (the rule is symmetric: t -> 1 - t, the same weight)
     import re
     import mpmath
-    text = open(os.path.join(ROOT, "src", "earthshine_angular.c")).read()
+    text = open(os.path.join(ROOT, "src", "sources", "earthshine_angular.c")).read()
     for name, n, mapped, kept in (("a_rule", 9, True, 9), ("b_rule", 4, False, 2)):
         body = re.search(name + r"\[N[A-Z_]+( / 2)?\]\[2\] = \{(.*?)\};", text, re.S).group(2)
         with mpmath.workdps(40):

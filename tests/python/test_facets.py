@@ -154,7 +154,7 @@ def test_builtin_shapes_through_the_mirror():
 def test_cubature_nodes_are_the_mapped_gauss_rule():
     # node_map of src/target/facet_earth.c: (1 - cos(pi t)) / 2 and pi sin(pi t) / 2 w
     # for the 8-point Gauss-Legendre rule (t, w) on [0, 1], to the 21 digits written
-    text = open(os.path.join(T.ROOT, "src", "facet_earth.c")).read()
+    text = open(os.path.join(T.ROOT, "src", "target", "facet_earth.c")).read()
     body = re.search(r"node_map\[N_NODES\]\[2\] = \{(.*?)\};", text, re.S).group(1)
     with mpmath.workdps(40):
         vals = [mpmath.mpf(v) for v in re.findall(r"OI_R\(([-0-9.e]+)\)", body)]

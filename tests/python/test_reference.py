@@ -172,7 +172,7 @@ _VAL = re.compile(r"OI_R\(([-+0-9.eE]+)\)")
 def _runtime_arrays():
     """(file, name, rows, comment before it) of every 2-D oi_real array in src/."""
     out = []
-    for path in sorted(glob.glob(os.path.join(ROOT, "src", "*.c"))):
+    for path in sorted(glob.glob(os.path.join(ROOT, "src", "*", "*.c"))):
         with open(path, encoding="ascii") as f:
             text = f.read()
         for m in _ARR.finditer(text):
@@ -185,24 +185,24 @@ def _runtime_arrays():
 
 def _gl8_macros():
     """(file, name, rows, comment) of the 8-point rule's constants OI_GL8_X1..X4,
-    OI_GL8_W1..W4 (src/oi_internal.h; the table oi__gl8 is made of them)."""
-    path = os.path.join(ROOT, "src", "oi_internal.h")
+    OI_GL8_W1..W4 (src/math/math_internal.h; the table oi__gl8 is made of them)."""
+    path = os.path.join(ROOT, "src", "math", "math_internal.h")
     with open(path, encoding="ascii") as f:
         text = f.read()
 
     def val(name):
         m = re.search(r"#define OI_GL8_%s OI_R\(([-+0-9.eE]+)\)" % name, text)
-        assert m, ("oi_internal.h", "OI_GL8_" + name)
+        assert m, ("math_internal.h", "OI_GL8_" + name)
         return mpmath.mpf(m.group(1))
 
     rows = [[val("X%d" % i), val("W%d" % i)] for i in range(1, 5)]
-    return [("oi_internal.h", "OI_GL8_*", rows, "Gauss-Legendre")]
+    return [("math_internal.h", "OI_GL8_*", rows, "Gauss-Legendre")]
 
 
 def test_runtime_gauss_legendre_literals_match_generator():
     """Every Gauss-Legendre table pasted into src/ (nodes x < 1/2 on [0, 1],
     weights, and where given sin/cos(pi x / 2)), and the 8-point rule's
-    constants of src/oi_internal.h, equal the rule computed here in mpmath to
+    constants of src/math/math_internal.h, equal the rule computed here in mpmath to
     the 21 digits written (the generator: tests/ref/shadow.py --gauss N,
     bake/common/quadrature.py)."""
     checked = 0

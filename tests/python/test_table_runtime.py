@@ -93,7 +93,7 @@ def test_no_earth_table_falls_back_to_far_field(tmp_path, defs):
     warn = ["-std=c99", "-Wall", "-Wextra", "-Wpedantic", "-Wconversion", "-Wshadow",
             "-Wdouble-promotion", "-Werror"]
     # every runtime source and every table: what nothing refers to is left out
-    files = sorted(glob.glob(os.path.join(ROOT, "src", "*.c")) +
+    files = sorted(glob.glob(os.path.join(ROOT, "src", "*", "*.c")) +
                    glob.glob(os.path.join(ROOT, "tables", "*.c")))
     inc = ["-I" + os.path.join(ROOT, d) for d in ("include", "src", "tables")]
     subprocess.run(["cc"] + warn + ["-O2", "-ffunction-sections", "-fdata-sections",

@@ -9,7 +9,7 @@ the Legendre polynomial P_n (Newton's iteration from Tricomi's estimate
 cos(pi (i - 1/4) / (n + 1/2)), at 40 digits), the weights
 w = 1 / ((1 - t^2) P_n'(t)^2) (half those of [-1, 1]); by symmetry only the
 nodes x < 1/2 are stored, 1 - x sharing the weight (Abramowitz & Stegun
-1964, 25.4.29). OI_GL8_X1..X4, OI_GL8_W1..W4 (src/oi_internal.h): n = 8,
+1964, 25.4.29). OI_GL8_X1..X4, OI_GL8_W1..W4 (src/math/math_internal.h): n = 8,
 the nodes and their weights. ld_node: n = 12 (double) or
 6 (float), rows (x, w, sin(pi x/2), cos(pi x/2)) for the panel [0, pi/2] of
 the limb-darkened disc.
