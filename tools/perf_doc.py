@@ -2,8 +2,10 @@
 # SPDX-License-Identifier: MIT
 """perf_doc.py: refresh the measured blocks of docs/performance.md (make perf-doc).
 
-Runs `make -s cross size stack target-test target-bench bench` (each once, in
-order, with the caller's BUILDDIR), keeps each output in BUILDDIR/perf/<name>.txt
+Runs the commands of RUNS below (make cross, size, stack, target-test,
+target-bench, binding, bench, plan-bench and the binding's instruction count;
+each once, in order, with the caller's BUILDDIR), keeps each output in
+BUILDDIR/perf/<name>.txt
 and rewrites every block of docs/performance.md between
     <!-- perf:NAME -->  and  <!-- /perf:NAME -->
 with the selected lines of that output, quoted with the command and the commit.
@@ -19,13 +21,19 @@ import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
+# run name -> the command as quoted in the document; each runs once, in this order, with the
+# caller's BUILDDIR ("make X" as `make -s BUILDDIR=... X`; "python S ..." as the tree's
+# .venv python running S with --bench BUILDDIR/bench/bench-double)
 RUNS = [
     ("cross", "make cross"),
     ("size", "make size"),
     ("stack", "make stack"),
     ("target-test", "make target-test"),
     ("target-bench", "make target-bench"),
+    ("binding", "make binding"),  # the Python binding the bench's peer and binding lines import
     ("bench", "make bench"),
+    ("plan-bench", "make plan-bench"),
+    ("binding-instructions", "python bench/binding_cost.py --callgrind --n 2000 illuminate expose"),
 ]
 
 # block name -> (run, shell-like description of the filter, predicate)
@@ -68,10 +76,16 @@ def run_all(builddir, outdir):
     os.makedirs(outdir, exist_ok=True)
     with open(os.path.join(outdir, "commit.txt"), "w") as f:
         f.write("%s%s\n" % (commit(), " + local changes" if dirty() else ""))
+    py = os.path.join(ROOT, ".venv", "bin", "python")
+    py = py if os.path.exists(py) else sys.executable
     for name, cmd in RUNS:
-        args = ["make", "-s", "BUILDDIR=" + builddir] + cmd.split()[1:]
         print("perf-doc: %s" % cmd, file=sys.stderr, flush=True)
-        p = subprocess.run(args, cwd=ROOT, capture_output=True, text=True)
+        if cmd.startswith("make "):
+            p = subprocess.run(["make", "-s", "BUILDDIR=" + builddir] + cmd.split()[1:], cwd=ROOT,
+                               capture_output=True, text=True)
+        else:  # a script of the tree, with the project's python and the benchmark's build
+            args = [py] + cmd.split()[1:] + ["--bench", os.path.join(builddir, "bench", "bench-double")]
+            p = subprocess.run(args, cwd=ROOT, capture_output=True, text=True)
         with open(os.path.join(outdir, name + ".txt"), "w") as f:
             f.write(p.stdout + p.stderr)
             f.write("\n# exit status %d\n" % p.returncode)
