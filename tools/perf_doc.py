@@ -64,8 +64,9 @@ BLOCKS = {
     "target-test": ("target-test", "make target-test",
                     lambda l: not l.startswith(("arm-none-eabi", "rm -f", "cc "))),
     "target-bench": ("target-bench", "make target-bench", lambda l: l.startswith("target.")),
-    "bench": ("bench", "make bench | grep -E '^(bench|profile)\\.' | grep -vE 'ns_min|batch|baseline'",
-              lambda l: (l.startswith(("bench.", "profile.")) and "ns_min" not in l
+    "bench": ("bench", "make bench | grep -E '^(bench|profile|goal)\\.' "
+                       "| grep -vE 'ns_min|^bench\\.[a-z]+\\.[a-z_]*(batch|baseline)'",
+              lambda l: (l.startswith(("bench.", "profile.", "goal.")) and "ns_min" not in l
                          and not _batch_line(l))),
     "batch": ("bench", "make bench | grep -E '^bench\\.[a-z]+\\.[a-z_]*(batch|baseline)' | grep -v ns_min",
               lambda l: _batch_line(l) and "ns_min" not in l),
@@ -73,7 +74,8 @@ BLOCKS = {
     "binding-instructions": ("binding-instructions", RUNS[-1][1],
                              lambda l: l.startswith("binding.")),
     "peers": ("bench", "make bench | grep '^peer\\.'", lambda l: l.startswith("peer.")),
-    "plan": ("plan-bench", "make plan-bench | grep '^plan\\.'", lambda l: l.startswith("plan.")),
+    "plan": ("plan-bench", "make plan-bench | grep -E '^(plan|goal)\\.'",
+             lambda l: l.startswith(("plan.", "goal."))),
 }
 
 # a goals table's cell is cut at this many characters (the full line is in its block)
