@@ -4,7 +4,8 @@
 #                          bake/report/; REPORT_ARGS: e.g. REPORT_ARGS="--only report_photon" or
 #                          "--strict"); the committed docs/report.md stays as it is
 #   make report-docs       the same run, written over the committed docs/report.md and docs/report/
-#   make perf-doc          cross, size, stack, target-test, target-bench, bench; docs/performance.md
+#   make perf-doc          cross, size, stack, target-test, target-bench, binding, bench, plan-bench,
+#                          the binding's callgrind count; rewrites docs/performance.md's blocks
 #   make bench             host benchmark: ns and instructions per scene, against quadrature
 #   make bench-peers       the Sun fraction's peers alone (numpy M&G, Orekit, Basilisk)
 #   make shadow-report     planar (Montenbruck & Gill) vs exact spherical Sun fraction
@@ -32,7 +33,7 @@ shadow-report: deps-py ## planar Montenbruck-Gill vs exact spherical Sun fractio
 stability-report: $(BUILDDIR)/tests/double/test_stability $(BUILDDIR)/tests/float/test_stability deps-py ## rewrite the table in docs/stability.md
 	BUILDDIR=$(BUILDDIR) $(PY) tests/stability/report.py
 
-perf-doc: deps-py ## run cross size stack target-test target-bench bench; refresh docs/performance.md
+perf-doc: deps-py ## run cross size stack target-test target-bench binding bench plan-bench (tools/perf_doc.py); refresh docs/performance.md
 	$(PY) tools/perf_doc.py --builddir $(BUILDDIR)
 
 # ---- host benchmark (bench/): both precisions, static, -O2
