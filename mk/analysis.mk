@@ -30,19 +30,25 @@ PLAN_LIB_SRC := $(filter-out planner/main.c,$(PLAN_SRC))
 .PHONY: fuzz fuzz-ci fuzz-replay fuzz-build sanitize analyze \
         analyze-cppcheck analyze-gcc analyze-clang
 
-# ---- libFuzzer targets: the runtime compiled into each binary with the sanitizers, once per
-# precision (the binary's directory): fuzz_api and fuzz_batch on the runtime alone, fuzz_csv
-# with the planner's reader.
+# ---- libFuzzer targets: the runtime compiled once per precision (the binary's directory) with
+# the sanitizers and the fuzzer's coverage (-fsanitize=fuzzer-no-link: what -fsanitize=fuzzer
+# compiles, without libFuzzer's main), linked into each target: fuzz_api and fuzz_batch on the
+# runtime alone, fuzz_csv with the planner's reader.
 FUZZ_PREC_double :=
 FUZZ_PREC_float := -DOI_SINGLE_PRECISION
 define FUZZ_RULES
-$(FUZZ_DIR)/$(1)/fuzz_api $(FUZZ_DIR)/$(1)/fuzz_batch: $(FUZZ_DIR)/$(1)/fuzz_%: fuzz/fuzz_%.c fuzz/fuzz_common.h $(RT_SRC) | deps-fuzz
+$(FUZZ_DIR)/$(1)/obj/%.o: %.c | deps-fuzz
 	@mkdir -p $$(dir $$@)
-	$$(FUZZ_CC) $$(FUZZ_CFLAGS) $(FUZZ_PREC_$(1)) -fsanitize=fuzzer $$< $$(RT_SRC) -lm -o $$@
+	$$(FUZZ_CC) $$(FUZZ_CFLAGS) $(FUZZ_PREC_$(1)) -Iplanner -fsanitize=fuzzer-no-link -MMD -MP -c $$< -o $$@
+-include $(patsubst %.c,$(FUZZ_DIR)/$(1)/obj/%.d,$(RT_SRC) $(PLAN_LIB_SRC))
 
-$(FUZZ_DIR)/$(1)/fuzz_csv: fuzz/fuzz_csv.c $(PLAN_SRC) $(RT_SRC) | deps-fuzz
+$(FUZZ_DIR)/$(1)/fuzz_api $(FUZZ_DIR)/$(1)/fuzz_batch: $(FUZZ_DIR)/$(1)/fuzz_%: fuzz/fuzz_%.c fuzz/fuzz_common.h $(patsubst %.c,$(FUZZ_DIR)/$(1)/obj/%.o,$(RT_SRC)) | deps-fuzz
 	@mkdir -p $$(dir $$@)
-	$$(FUZZ_CC) $$(FUZZ_CFLAGS) $(FUZZ_PREC_$(1)) -Iplanner -fsanitize=fuzzer $$< $$(PLAN_LIB_SRC) $$(RT_SRC) -lm -o $$@
+	$$(FUZZ_CC) $$(FUZZ_CFLAGS) $(FUZZ_PREC_$(1)) -fsanitize=fuzzer $$< $(patsubst %.c,$(FUZZ_DIR)/$(1)/obj/%.o,$(RT_SRC)) -lm -o $$@
+
+$(FUZZ_DIR)/$(1)/fuzz_csv: fuzz/fuzz_csv.c $(patsubst %.c,$(FUZZ_DIR)/$(1)/obj/%.o,$(PLAN_LIB_SRC) $(RT_SRC)) | deps-fuzz
+	@mkdir -p $$(dir $$@)
+	$$(FUZZ_CC) $$(FUZZ_CFLAGS) $(FUZZ_PREC_$(1)) -Iplanner -fsanitize=fuzzer $$< $(patsubst %.c,$(FUZZ_DIR)/$(1)/obj/%.o,$(PLAN_LIB_SRC) $(RT_SRC)) -lm -o $$@
 endef
 $(foreach p,double float,$(eval $(call FUZZ_RULES,$(p))))
 
