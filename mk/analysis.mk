@@ -104,19 +104,27 @@ analyze-cppcheck: deps-analyze
 	cppcheck $(CPPCHECK_FLAGS) -DOI_SINGLE_PRECISION $(RT_SRC)
 	cppcheck $(CPPCHECK_FLAGS) -DOI_NO_MOON -DOI_NO_EXPOSURE -DOI_NO_ATMOSPHERE -DOI_NO_EARTH_TABLE $(RT_SRC)
 
-analyze-gcc:
-	@set -e; for f in $(RT_SRC); do for d in "" -DOI_SINGLE_PRECISION; do \
+# One target per (file, precision), so that make -j runs them side by side; each runs every time.
+AN_PRECS := double single
+AN_DEF_double :=
+AN_DEF_single := -DOI_SINGLE_PRECISION
+AN_GCC := $(foreach d,$(AN_PRECS),$(addprefix analyze-gcc/$(d)/,$(RT_SRC)))
+AN_CLANG := $(foreach d,$(AN_PRECS),$(addprefix analyze-clang/$(d)/,$(RT_SRC)))
+.PHONY: $(AN_GCC) $(AN_CLANG)
+
+analyze-gcc: $(AN_GCC)
+$(foreach d,$(AN_PRECS),$(filter analyze-gcc/$(d)/%,$(AN_GCC))): analyze-gcc/%:
+	@d=$(AN_DEF_$(firstword $(subst /, ,$*))); f=$(patsubst $(firstword $(subst /, ,$*))/%,%,$*); \
 	  echo "gcc -fanalyzer $$d $$f"; \
-	  gcc $(WARN) -O2 -fanalyzer -Iinclude -Isrc -Itables $$d -c $$f -o /dev/null; \
-	done; done
+	  gcc $(WARN) -O2 -fanalyzer -Iinclude -Isrc -Itables $$d -c $$f -o /dev/null
 
 # clang's static analyser too (clang is installed by deps-fuzz); any
 # warning fails.
-analyze-clang: deps-fuzz
-	@set -e; for f in $(RT_SRC); do for d in "" -DOI_SINGLE_PRECISION; do \
+analyze-clang: $(AN_CLANG)
+$(AN_CLANG): analyze-clang/%: | deps-fuzz
+	@d=$(AN_DEF_$(firstword $(subst /, ,$*))); f=$(patsubst $(firstword $(subst /, ,$*))/%,%,$*); \
 	  echo "clang --analyze $$d $$f"; \
 	  out=$$($(FUZZ_CC) --analyze -std=c99 -Iinclude -Isrc -Itables $$d $$f -o /dev/null 2>&1); \
-	  if [ -n "$$out" ]; then echo "$$out"; exit 1; fi; \
-	done; done
+	  if [ -n "$$out" ]; then echo "$$out"; exit 1; fi
 
 analyze: analyze-cppcheck analyze-gcc analyze-clang ## cppcheck, gcc -fanalyzer and clang --analyze on the runtime, must be clean
