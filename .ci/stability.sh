@@ -5,6 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export DEBIAN_FRONTEND=noninteractive
-make sanitize
-make analyze
-make fuzz-ci FUZZ_CI_SECONDS="${FUZZ_CI_SECONDS:-15}"
+JOBS="${CI_JOBS:-2}"
+make -j"$JOBS" sanitize
+make -j"$JOBS" analyze
+make -j"$JOBS" fuzz-ci FUZZ_CI_SECONDS="${FUZZ_CI_SECONDS:-15}"

@@ -7,9 +7,10 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export DEBIAN_FRONTEND=noninteractive
+JOBS="${CI_JOBS:-2}"
 make deps-cross
-make cross
-make size
-make stack
-make target-test
-make target-bench
+make -j"$JOBS" cross
+make -j"$JOBS" size
+make -j"$JOBS" stack
+make -j"$JOBS" target-test
+make -j"$JOBS" target-bench

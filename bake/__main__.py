@@ -14,6 +14,9 @@
   --root DIR                           write at the repository-relative paths under DIR
                                        (default: the repository, tables land in tables/)
   --list                               print those relative paths, one a line, bake nothing
+  --changed                            bake only the tables whose inputs changed: the sha256 of
+                                       the inputs (bake/common/inputs.py) differs from the one
+                                       their sidecar records (key "inputs")
   --method photon                      node values by photon mapping (bake/photon/)
 
 Progress goes to stderr; a summary line per table to stdout (-q: none).
@@ -21,9 +24,13 @@ Progress goes to stderr; a summary line per table to stdout (-q: none).
 
 import argparse
 import glob
+import json
 import os
 import sys
 import time
+
+from .common import emit
+from .common import inputs as gen_inputs
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
@@ -59,27 +66,73 @@ def outputs(target, scenes=()):
     return out
 
 
-def bake_earthshine(outdir, scenes, method, log, progress, photon_args):
-    from .earthshine import scenes as sc
-    default_bytes = None
-    jobs = _earthshine_configs(scenes)
-    for path, cfg in jobs:
-        _, meta = sc.bake(cfg, outdir, method, log, progress, photon_args)
-        if path == DEFAULT_CFG:
-            default_bytes = meta["payload_bytes"]
-        else:
-            ref_bytes = default_bytes
+def _rel(path):
+    """path relative to the repository when it lies in it (a table's recorded inputs)."""
+    path = os.path.abspath(path)
+    return os.path.relpath(path, ROOT) if path.startswith(ROOT + os.sep) else path
+
+
+def units(target, scenes=(), method="quadrature", photon_args=None):
+    """The tables of a target in baking order, each (name, entry modules, data files,
+    bake(outdir, log, progress)): what records its inputs (bake/common/inputs.py) and what
+    bakes it alone."""
+    out = []
+    if target in ("atmosphere", "all") and not scenes:
+        from .atmosphere import table as at
+        for band, b in at.BANDS.items():
+            out.append((b["name"], ["bake.atmosphere.table"], ["bake/config/atmosphere.json"],
+                        lambda o, log, pr, band=band: at.run(o, progress=pr, log=log,
+                                                              bands=(band,))))
+    if target in ("skylight", "all") and not scenes:
+        from .skylight import table as sk
+        out.append((sk.NAME, ["bake.skylight.table"], ["bake/config/skylight.json"],
+                    lambda o, log, pr: sk.run(o, progress=pr, log=log)))
+    if target in ("earthshine", "all") or scenes:
+        from .earthshine import scenes as sc
+        state = {}
+
+        def bake_scene(o, log, pr, path, cfg):
+            _, meta = sc.bake(cfg, o, method, log, pr, photon_args or {})
+            if path == DEFAULT_CFG:
+                state["default_bytes"] = meta["payload_bytes"]
+                return
+            ref_bytes = state.get("default_bytes")
             if ref_bytes is None:
                 g = sc.load(DEFAULT_CFG)["grid"]
                 ref_bytes = 8 * (g["n_lit"] + g["n_term"]) * g["n_alt"]
             log("  %s: %d bytes instead of %d for the default table: %d bytes saved (%.0f %%)" % (
                 cfg["name"], meta["payload_bytes"], ref_bytes, ref_bytes - meta["payload_bytes"],
                 100.0 * (ref_bytes - meta["payload_bytes"]) / ref_bytes))
-    if not scenes:
-        from .earthshine import angular_table as ang
-        ang.run(outdir, log=log, progress=progress)
-        return len(jobs) + 1
-    return len(jobs)
+
+        for path, cfg in _earthshine_configs(scenes):
+            # a scene's log line compares it with the default table (bake/config/default.json)
+            data = sorted({_rel(path), _rel(DEFAULT_CFG)})
+            out.append((cfg["name"], ["bake.earthshine.scenes"], data,
+                        lambda o, log, pr, path=path, cfg=cfg: bake_scene(o, log, pr, path, cfg)))
+        if not scenes:
+            from .earthshine import angular_table as ang
+            out.append((ang.NAME, ["bake.earthshine.angular_table"], [],
+                        lambda o, log, pr: ang.run(o, log=log, progress=pr)))
+    return out
+
+
+def committed_inputs(outdir, name):
+    """The inputs' sha256 a table's sidecar under outdir records (None: no sidecar or none)."""
+    try:
+        with open(os.path.join(outdir, name + ".json"), encoding="ascii") as f:
+            return (json.load(f).get("inputs") or {}).get("sha256")
+    except (OSError, ValueError):
+        return None
+
+
+def stamp(outdir, name, rec):
+    """Write the inputs record into a freshly baked table's sidecar."""
+    p = os.path.join(outdir, name + ".json")
+    with open(p, encoding="ascii") as f:
+        side = json.load(f)
+    side["inputs"] = rec
+    with open(p, "w", encoding="ascii", newline="\n") as f:
+        f.write(emit.sidecar_text(side))
 
 
 def main(argv=None):
@@ -89,6 +142,9 @@ def main(argv=None):
                     help="what to bake (default: all, or the --scene files)")
     ap.add_argument("--root", default=ROOT, help="output root (default: the repository)")
     ap.add_argument("--list", action="store_true", help="print the output paths, bake nothing")
+    ap.add_argument("--changed", action="store_true",
+                    help="bake only the tables whose sidecar's inputs sha256 differs from their "
+                         "inputs' now (make check-generated)")
     ap.add_argument("--scene", action="append", default=[], metavar="FILE",
                     help="bake a mission scene configuration (repeatable)")
     ap.add_argument("--method", choices=("quadrature", "photon"), default="quadrature",
@@ -118,17 +174,23 @@ def main(argv=None):
         photon_args["seed"] = a.seed
     outdir = os.path.join(a.root, TABLES)
     t0 = time.monotonic()
+    todo = units(target, a.scene, a.method, photon_args)
+    gen_inputs.watch_reads()
     n = 0
-    if target in ("atmosphere", "all"):
-        from .atmosphere import table as at
-        at.run(outdir, progress=progress, log=log)
+    for name, entries, data, run in todo:
+        rec = gen_inputs.record(entries, data, ROOT)
+        if a.changed and committed_inputs(outdir, name) == rec["sha256"]:
+            log("%s: inputs unchanged (sha256 %s), not baked" % (name, rec["sha256"][:12]))
+            continue
+        run(outdir, log, progress)
+        stamp(outdir, name, rec)
         n += 1
-    if target in ("skylight", "all"):
-        from .skylight import table as sk
-        sk.run(outdir, progress=progress, log=log)
-        n += 1
-    if target in ("earthshine", "all"):
-        n += bake_earthshine(outdir, a.scene, a.method, log, progress, photon_args)
+    unread = gen_inputs.unread_data({d for _, _, data, _ in todo for d in data}, ROOT,
+                                    outputs(target, a.scene))
+    if unread:
+        print("bake: read %s, which no table's inputs name (bake/__main__.py, units)"
+              % ", ".join(unread), file=sys.stderr)
+        return 1
     log("baked %d table(s) into %s in %.1f s" % (n, outdir, time.monotonic() - t0))
     return 0
 

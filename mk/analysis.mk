@@ -30,19 +30,25 @@ PLAN_LIB_SRC := $(filter-out planner/main.c,$(PLAN_SRC))
 .PHONY: fuzz fuzz-ci fuzz-replay fuzz-build sanitize analyze \
         analyze-cppcheck analyze-gcc analyze-clang
 
-# ---- libFuzzer targets: the runtime compiled into each binary with the sanitizers, once per
-# precision (the binary's directory): fuzz_api and fuzz_batch on the runtime alone, fuzz_csv
-# with the planner's reader.
+# ---- libFuzzer targets: the runtime compiled once per precision (the binary's directory) with
+# the sanitizers and the fuzzer's coverage (-fsanitize=fuzzer-no-link: what -fsanitize=fuzzer
+# compiles, without libFuzzer's main), linked into each target: fuzz_api and fuzz_batch on the
+# runtime alone, fuzz_csv with the planner's reader.
 FUZZ_PREC_double :=
 FUZZ_PREC_float := -DOI_SINGLE_PRECISION
 define FUZZ_RULES
-$(FUZZ_DIR)/$(1)/fuzz_api $(FUZZ_DIR)/$(1)/fuzz_batch: $(FUZZ_DIR)/$(1)/fuzz_%: fuzz/fuzz_%.c fuzz/fuzz_common.h $(RT_SRC) | deps-fuzz
+$(FUZZ_DIR)/$(1)/obj/%.o: %.c | deps-fuzz
 	@mkdir -p $$(dir $$@)
-	$$(FUZZ_CC) $$(FUZZ_CFLAGS) $(FUZZ_PREC_$(1)) -fsanitize=fuzzer $$< $$(RT_SRC) -lm -o $$@
+	$$(FUZZ_CC) $$(FUZZ_CFLAGS) $(FUZZ_PREC_$(1)) -Iplanner -fsanitize=fuzzer-no-link -MMD -MP -c $$< -o $$@
+-include $(patsubst %.c,$(FUZZ_DIR)/$(1)/obj/%.d,$(RT_SRC) $(PLAN_LIB_SRC))
 
-$(FUZZ_DIR)/$(1)/fuzz_csv: fuzz/fuzz_csv.c $(PLAN_SRC) $(RT_SRC) | deps-fuzz
+$(FUZZ_DIR)/$(1)/fuzz_api $(FUZZ_DIR)/$(1)/fuzz_batch: $(FUZZ_DIR)/$(1)/fuzz_%: fuzz/fuzz_%.c fuzz/fuzz_common.h $(patsubst %.c,$(FUZZ_DIR)/$(1)/obj/%.o,$(RT_SRC)) | deps-fuzz
 	@mkdir -p $$(dir $$@)
-	$$(FUZZ_CC) $$(FUZZ_CFLAGS) $(FUZZ_PREC_$(1)) -Iplanner -fsanitize=fuzzer $$< $$(PLAN_LIB_SRC) $$(RT_SRC) -lm -o $$@
+	$$(FUZZ_CC) $$(FUZZ_CFLAGS) $(FUZZ_PREC_$(1)) -fsanitize=fuzzer $$< $(patsubst %.c,$(FUZZ_DIR)/$(1)/obj/%.o,$(RT_SRC)) -lm -o $$@
+
+$(FUZZ_DIR)/$(1)/fuzz_csv: fuzz/fuzz_csv.c $(patsubst %.c,$(FUZZ_DIR)/$(1)/obj/%.o,$(PLAN_LIB_SRC) $(RT_SRC)) | deps-fuzz
+	@mkdir -p $$(dir $$@)
+	$$(FUZZ_CC) $$(FUZZ_CFLAGS) $(FUZZ_PREC_$(1)) -Iplanner -fsanitize=fuzzer $$< $(patsubst %.c,$(FUZZ_DIR)/$(1)/obj/%.o,$(PLAN_LIB_SRC) $(RT_SRC)) -lm -o $$@
 endef
 $(foreach p,double float,$(eval $(call FUZZ_RULES,$(p))))
 
@@ -98,19 +104,27 @@ analyze-cppcheck: deps-analyze
 	cppcheck $(CPPCHECK_FLAGS) -DOI_SINGLE_PRECISION $(RT_SRC)
 	cppcheck $(CPPCHECK_FLAGS) -DOI_NO_MOON -DOI_NO_EXPOSURE -DOI_NO_ATMOSPHERE -DOI_NO_EARTH_TABLE $(RT_SRC)
 
-analyze-gcc:
-	@set -e; for f in $(RT_SRC); do for d in "" -DOI_SINGLE_PRECISION; do \
+# One target per (file, precision), so that make -j runs them side by side; each runs every time.
+AN_PRECS := double single
+AN_DEF_double :=
+AN_DEF_single := -DOI_SINGLE_PRECISION
+AN_GCC := $(foreach d,$(AN_PRECS),$(addprefix analyze-gcc/$(d)/,$(RT_SRC)))
+AN_CLANG := $(foreach d,$(AN_PRECS),$(addprefix analyze-clang/$(d)/,$(RT_SRC)))
+.PHONY: $(AN_GCC) $(AN_CLANG)
+
+analyze-gcc: $(AN_GCC)
+$(foreach d,$(AN_PRECS),$(filter analyze-gcc/$(d)/%,$(AN_GCC))): analyze-gcc/%:
+	@d=$(AN_DEF_$(firstword $(subst /, ,$*))); f=$(patsubst $(firstword $(subst /, ,$*))/%,%,$*); \
 	  echo "gcc -fanalyzer $$d $$f"; \
-	  gcc $(WARN) -O2 -fanalyzer -Iinclude -Isrc -Itables $$d -c $$f -o /dev/null; \
-	done; done
+	  gcc $(WARN) -O2 -fanalyzer -Iinclude -Isrc -Itables $$d -c $$f -o /dev/null
 
 # clang's static analyser too (clang is installed by deps-fuzz); any
 # warning fails.
-analyze-clang: deps-fuzz
-	@set -e; for f in $(RT_SRC); do for d in "" -DOI_SINGLE_PRECISION; do \
+analyze-clang: $(AN_CLANG)
+$(AN_CLANG): analyze-clang/%: | deps-fuzz
+	@d=$(AN_DEF_$(firstword $(subst /, ,$*))); f=$(patsubst $(firstword $(subst /, ,$*))/%,%,$*); \
 	  echo "clang --analyze $$d $$f"; \
 	  out=$$($(FUZZ_CC) --analyze -std=c99 -Iinclude -Isrc -Itables $$d $$f -o /dev/null 2>&1); \
-	  if [ -n "$$out" ]; then echo "$$out"; exit 1; fi; \
-	done; done
+	  if [ -n "$$out" ]; then echo "$$out"; exit 1; fi
 
 analyze: analyze-cppcheck analyze-gcc analyze-clang ## cppcheck, gcc -fanalyzer and clang --analyze on the runtime, must be clean

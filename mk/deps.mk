@@ -16,8 +16,12 @@ APT_FUZZ := clang libclang-rt-dev
 APT_ANALYZE := cppcheck
 APT_BENCH := valgrind
 
+# Installs wait for each other (flock on one file of the machine, whatever BUILDDIR): make -j
+# runs two roles' installs at once, and apt-get fails rather than waits on another's lock.
+APT_LOCK ?= /tmp/orbillum-apt.lock
 APT_GET = SUDO=; [ "$$(id -u)" = 0 ] || SUDO=sudo; \
-  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq
+  flock $(APT_LOCK) $$SUDO env DEBIAN_FRONTEND=noninteractive \
+  sh -c 'apt-get update -qq && apt-get install -y -qq "$$@"' apt-get
 
 # apt_need(probe, packages): when the shell probe fails, install the packages (sudo unless root).
 define apt_need

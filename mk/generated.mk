@@ -2,9 +2,16 @@
 # mk/generated.mk: every committed generated file, its generator, and one rule to check them.
 #
 #   make regen            run every generator in place (rewrites the committed files)
-#   make check-generated  copy the source tree into build/generated/, run `make regen` there,
-#                         and cmp every generated file with the committed one: each file that
-#                         differs is named with the target that regenerates it
+#   make regen-changed    the same, only the tables and reference vectors whose inputs changed:
+#                         the sha256 of a generator's inputs (its Python files, data files and
+#                         numpy/mpmath versions, bake/common/inputs.py) differs from the one its
+#                         sidecar (tables/*.json) or tests/ref/inputs.json records
+#   make check-generated  copy the source tree into build/generated/, run `make regen-changed`
+#                         there, and cmp every generated file with the committed one: each file
+#                         that differs is named with the target that regenerates it (a table whose
+#                         inputs changed differs at least in its recorded sha256)
+#   make check-generated-all  the same with `make regen`: every generator runs (for a change of
+#                         the generators' environment that no input names, e.g. libm, a processor)
 #   make check-tables     the same check, tables only (earthshine and atmosphere)
 #   make bake, bake-atm, ref-earthshine, ref-shadow, stability-vectors, golden: one generator
 #
@@ -26,7 +33,8 @@
 GEN_NPY_DISPATCHED := from numpy._core._multiarray_umath import __cpu_dispatch__ as d, \
   __cpu_features__ as f; print(' '.join(x for x in d if f.get(x)))
 GEN_NPY_DISABLE = $(shell [ -x $(PY) ] && $(PY) -c "$(GEN_NPY_DISPATCHED)" 2>/dev/null)
-GEN_TARGETS := bake bake-earth bake-atm ref-all ref-earthshine ref-shadow stability-vectors
+GEN_TARGETS := bake bake-earth bake-atm bake-changed ref-all ref-changed ref-earthshine ref-shadow \
+  stability-vectors
 $(GEN_TARGETS): export NPY_DISABLE_CPU_FEATURES = $(GEN_NPY_DISABLE)
 $(GEN_TARGETS): export OPENBLAS_CORETYPE := Nehalem
 $(GEN_TARGETS): export GLIBC_TUNABLES := glibc.cpu.hwcaps=-AVX2,-FMA,-FMA4,-AVX512F
@@ -46,6 +54,8 @@ bake: deps-py
 	$(PY) -m bake all --root .
 bake-atm: deps-py
 	$(PY) -m bake atmosphere --root .
+bake-changed: deps-py
+	$(PY) -m bake all --changed --root .
 else
 GEN_OUT_tables := tables/oi_earth_* tables/oi_atm_table.c tables/oi_atm_table.h tables/oi_atm_table.json \
   tests/c/ref_atmosphere.h
@@ -59,10 +69,12 @@ endif
 BAKE_FLAGS ?=
 
 ifneq ($(REF_GENERATE),)
-GEN_OUT_refs = $(shell $(PY) tests/ref/generate.py all --list 2>/dev/null)
+GEN_OUT_refs = $(shell $(PY) tests/ref/generate.py all --list 2>/dev/null) tests/ref/inputs.json
 GEN_MAKE_refs := ref-all
 ref-all: deps-py
 	$(PY) tests/ref/generate.py all --root .
+ref-changed: deps-py
+	$(PY) tests/ref/generate.py all --changed --root .
 ref-earthshine: deps-py
 	$(PY) tests/ref/generate.py earthshine --root .
 ref-shadow: deps-py
@@ -100,13 +112,20 @@ stability-vectors: ## regenerate tests/stability/vectors.h (mpmath)
 GEN_OUT_golden := tests/golden/*.plan.csv tests/golden/demo.txt
 GEN_MAKE_golden := golden
 
-.PHONY: regen check-generated check-tables check-tables-atm check-ref-shadow bake bake-earth \
+.PHONY: regen regen-changed check-generated check-generated-all bake-changed ref-changed check-tables check-tables-atm check-ref-shadow bake bake-earth \
   bake-atm ref-all ref-earthshine ref-shadow stability-vectors gen-tree
 
 # The tables first: reference vectors and golden outputs are computed from them.
 regen: ## run every generator in place: tables, reference vectors, golden outputs
 	$(MAKE) --no-print-directory $(GEN_MAKE_tables)
 	$(MAKE) --no-print-directory $(filter-out $(GEN_MAKE_tables),$(foreach g,$(GEN_GROUPS),$(GEN_MAKE_$(g))))
+
+# Only what changed: the tables, then the reference vectors (some read the tables), then the
+# golden outputs (the planner's, fast: always).
+regen-changed: ## run in place only the generators whose inputs changed (sha256 in the sidecars), then golden
+	$(MAKE) --no-print-directory $(if $(BAKE_HAS_ROOT),bake-changed,$(GEN_MAKE_tables))
+	$(MAKE) --no-print-directory $(if $(REF_GENERATE),ref-changed,$(GEN_MAKE_ref_earthshine) \
+	  $(GEN_MAKE_ref_shadow) $(GEN_MAKE_stability)) $(GEN_MAKE_golden)
 
 # The copy: every file git tracks or would track (not build/, not .venv), as it is now
 # (outside a git checkout: every file but build/, the venv and .git).
@@ -143,7 +162,10 @@ define gen_check
 	else echo "check-generated: FAILED (fresh files in $(GEN_DIR))"; exit 1; fi
 endef
 
-check-generated: gen-tree ## re-create every committed generated file in build/generated/ and cmp it (~10 min)
+check-generated: gen-tree ## regenerate in build/generated/ what changed (inputs' sha256), cmp every generated file
+	$(call gen_check,$(GEN_GROUPS),regen-changed)
+
+check-generated-all: gen-tree ## re-create every committed generated file in build/generated/ and cmp it (~25 min)
 	$(call gen_check,$(GEN_GROUPS),regen)
 
 check-tables: gen-tree ## re-bake every table into build/generated/ and fail on any difference with tables/

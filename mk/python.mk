@@ -22,9 +22,17 @@ LC_DIR := $(BUILDDIR)/light-curve
 
 shared: $(SHARED_LIB) ## build build/liborbillum.so (double precision, for the Python binding)
 
-$(SHARED_LIB): $(RT_SRC) $(RT_HDR)
+# The runtime's position-independent objects, one per source (make -j builds them side by side),
+# shared by build/liborbillum.so and build/libori_test.so.
+OBJ_pic := $(patsubst %.c,$(BUILDDIR)/obj/pic/%.o,$(RT_SRC))
+$(BUILDDIR)/obj/pic/%.o: %.c
 	@mkdir -p $(dir $@)
-	$(CC) $(RT_CFLAGS) -fPIC -shared $(RT_SRC) -lm -o $@
+	$(CC) $(RT_CFLAGS) -fPIC $(EXTRA_DEFS) -MMD -MP -c $< -o $@
+-include $(OBJ_pic:.o=.d)
+
+$(SHARED_LIB): $(OBJ_pic)
+	@mkdir -p $(dir $@)
+	$(CC) $(RT_CFLAGS) -fPIC -shared $(OBJ_pic) -lm -o $@
 
 binding: $(VENV)/.orbillum-binding ## pip install ./python into the venv (builds its own liborbillum.so)
 $(VENV)/.orbillum-binding: $(PY_BINDING_SRC) $(RT_SRC) $(RT_HDR) | deps-py
@@ -60,9 +68,9 @@ light-curve: all binding ## tumbling box-wing vs sphere over a shipped pass: V a
 # the double-precision runtime plus a struct-size probe. Not the public
 # binding's build/liborbillum.so.
 ORI_TEST_SO := $(BUILDDIR)/libori_test.so
-$(ORI_TEST_SO): $(RT_SRC) tests/stability/ori_test_abi.c $(RT_HDR)
+$(ORI_TEST_SO): $(OBJ_pic) tests/stability/ori_test_abi.c $(RT_HDR)
 	@mkdir -p $(dir $@)
-	$(CC) $(RT_CFLAGS) -fPIC -shared $(RT_SRC) tests/stability/ori_test_abi.c -lm -o $@
+	$(CC) $(RT_CFLAGS) -fPIC -shared $(OBJ_pic) tests/stability/ori_test_abi.c -lm -o $@
 
 ori-test-so: $(ORI_TEST_SO)
 test-py: $(ORI_TEST_SO)

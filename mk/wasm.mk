@@ -66,9 +66,7 @@ $(WASM_DIR)/.deps:
 	    | $(WASM_CC) $(WASM_TARGET) -O2 -nostartfiles -Wl,--no-entry -Wl,--export=f -x c - \
 	      -o $(WASM_DIR)/probe.wasm >/dev/null 2>&1; then \
 	  echo "installing clang, lld, wasi-libc, libclang-rt-14-dev-wasm32 (Debian)"; \
-	  SUDO=; [ "$$(id -u)" = 0 ] || SUDO=sudo; \
-	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq \
-	    clang lld wasi-libc libclang-rt-14-dev-wasm32; \
+	  $(APT_GET) clang lld wasi-libc libclang-rt-14-dev-wasm32; \
 	fi
 	@rm -f $(WASM_DIR)/probe.wasm
 	@touch $@
@@ -124,9 +122,7 @@ browser-deps: $(VIEWER_VENV)/.deps
 $(VIEWER_VENV)/.deps: web/requirements-viewer.txt
 	@if [ ! -x $(CHROMIUM) ]; then \
 	  echo "installing chromium (Debian)"; \
-	  SUDO=; [ "$$(id -u)" = 0 ] || SUDO=sudo; \
-	  { $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq \
-	    chromium; } || echo "chromium could not be installed"; \
+	  { $(APT_GET) chromium; } || echo "chromium could not be installed"; \
 	fi
 	@[ -x $(VIEWER_PY) ] || python3 -m venv $(VIEWER_VENV)
 	$(VIEWER_PY) -m pip install -q --disable-pip-version-check -r web/requirements-viewer.txt

@@ -265,8 +265,12 @@ def render(t):
         "payload_sha256": t.payload_sha256(), "payload_bytes": t.payload_bytes(),
         "provenance": provenance_lines(t),
     }
-    j = json.dumps(side, indent=2, sort_keys=True, allow_nan=False) + "\n"
-    return "\n".join(c), "\n".join(h), j
+    return "\n".join(c), "\n".join(h), sidecar_text(side)
+
+
+def sidecar_text(side):
+    """The sidecar's bytes: JSON, keys sorted, indented by 2, one newline at the end."""
+    return json.dumps(side, indent=2, sort_keys=True, allow_nan=False) + "\n"
 
 
 def write(outdir, t):
