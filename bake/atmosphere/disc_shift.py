@@ -18,7 +18,7 @@ as sqrt(g) (1 - 2F) (c0 + c1 g + c2 g^2), g = F (1 - F), by least squares;
 it is zero at F = 0, 1/2, 1, so the lit side and the umbra keep the table's
 value and the geometric fraction outside the atmosphere's reach.
 One set per band, for the band's disc (rays.py: NL94_559 for V, EDDINGTON
-for the total band). The coefficients are written into src/shadow/atmosphere.c
+for the total band). The coefficients are written into src/atmosphere.c
 (OI_ATM_SHIFT_C* and OI_ATM_TOTAL_SHIFT_C*);
 tests/python/test_atm.py checks them against `coefficients()`.
 

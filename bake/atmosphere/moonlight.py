@@ -3,13 +3,13 @@
 
 The runtime dims the Moon's light near the Earth's limb, seen from a target,
 by the atmosphere's transmission along each line of sight to the Moon's disc
-(src/shadow/atmosphere_moonlight.c). It needs tau(h) = -ln T(h), T the V-band
+(src/atmosphere_moonlight.c). It needs tau(h) = -ln T(h), T the V-band
 transmission of the default profile (bake/atmosphere/profile.py: Rayleigh,
 ozone, aerosol; the clouds are applied separately, as in the profile) of the
 ray whose lowest point is at h, from the ray reference
 (bake/atmosphere/rays.py, `trace` and `band_transmission`). This module
 gives tau at h = 0, 1, ..., 99 km (the runtime interpolates ln tau linearly;
-tau falls to 0 at the 100 km top), written into src/shadow/atmosphere_moonlight.c
+tau falls to 0 at the 100 km top), written into src/atmosphere_moonlight.c
 with 6 significant digits; tests/python/test_atm.py checks the numbers and
 the interpolation error.
 

@@ -63,7 +63,7 @@ def _legendre_all(l_max, z):
 
 def basis(l_max, v):
     """Re((x + i y)^m) Q_l^m(z) for the stored (l, m), columns in storage order;
-    the same recurrences as the runtime (src/sources/earthshine_angular.c)."""
+    the same recurrences as the runtime (src/earthshine_angular.c)."""
     x, y, z = v[..., 0], v[..., 1], v[..., 2]
     cm = [np.ones_like(x)]
     re, im = np.ones_like(x), np.zeros_like(x)

@@ -3,7 +3,7 @@
 
 The family's steps (docs/tables.md): spec from bake/config/skylight.json, node values
 from the single-scattering quadrature (single.py), float32 rounding, the lookup's
-Python mirror (`lookup`, the runtime's src/sources/skylight.c), its measured error at random
+Python mirror (`lookup`, the runtime's src/skylight.c), its measured error at random
 points between the nodes against the same quadrature, the quadrature's own error
 against the independent Monte Carlo (montecarlo.py) at fixed points, the energy bound,
 and the Table of the one emitter.
@@ -102,7 +102,7 @@ def stored(q, q_floor):
 
 
 def lookup(v, psi, spec: Spec, theta, w, q_floor):
-    """The runtime's lookup (src/sources/skylight.c) in numpy: (e_sky / E_sun, psi) at
+    """The runtime's lookup (src/skylight.c) in numpy: (e_sky / E_sun, psi) at
     scalars theta in [0, pi], w in [w_min, w_max], from the stored v."""
     nt, na = spec.n_theta, spec.n_alt
     w_scale = (na - 1) / (spec.w_max - spec.w_min)
