@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""The planner's reader and words on hostile input (issue 28): a record near
+"""The planner's reader and words on hostile input: a record near
 the 1 MiB limit read in linear time, a record too long skipped to its own end
 (never resumed inside its quotes) and reported at the line where it began,
 numbers in decimal only, a byte-order mark only at the start of the file, and
