@@ -141,6 +141,37 @@ static inline oi_real oi__unit(const oi_real a[3], oi_real out[3])
     return oi__divide3(a, oi__norm(a), out);
 }
 
+/* The smallest normal oi_real. */
+#ifdef OI_SINGLE_PRECISION
+#define OI__REAL_MIN_NORMAL OI_R(1.17549435e-38)
+#else
+#define OI__REAL_MIN_NORMAL OI_R(2.2250738585072014e-308)
+#endif
+
+/* oi__unit for a caller's direction of any nonzero length (a facet's
+ * normal): a vector whose norm is subnormal (its components subnormal too)
+ * is scaled by its largest component first, exactly where the division by
+ * the subnormal norm would round (a normal of components 5e-324 gave
+ * (0.5, 0.5, 0.5)); any other vector is oi__unit's, to the bit. Returns
+ * |a| (out zeroed when it is 0). out may be a. */
+static inline oi_real oi__unit_scaled(const oi_real a[3], oi_real out[3])
+{
+    const oi_real n = oi__norm(a);
+    oi_real m, t, b[3];
+    if (!(n > (oi_real)0) || !(n < OI__REAL_MIN_NORMAL)) return oi__divide3(a, n, out);
+    m = OI_FABS(a[0]);
+    t = OI_FABS(a[1]);
+    if (t > m) m = t;
+    t = OI_FABS(a[2]);
+    if (t > m) m = t;
+    /* a / m: quotients of exact values, correctly rounded, the largest 1 */
+    b[0] = a[0] / m;
+    b[1] = a[1] / m;
+    b[2] = a[2] / m;
+    (void)oi__divide3(b, OI_SQRT(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]), out);
+    return n;
+}
+
 /* Norm, unit vector and angle for vectors whose components are known to be
  * finite and at most ~1e18 in magnitude (positions validated against
  * OI_POSITION_MAX_KM, unit vectors): the plain sum of squares cannot

@@ -478,6 +478,9 @@ static OI_NOINLINE int observer_term(const oi_scene *scene, oi_illum *out)
 {
     oi_real obs_hat[3], ratio;
     out->range_km = oi__observer_direction(scene, obs_hat);
+    /* the observer inside the target's sphere (range 0 included) found
+     * before the ratio is formed: no division by zero, no overflow */
+    if (!(out->range_km * OI_R(1000.0) > scene->target_radius_m)) return OI_ERR_OBSERVER_AT_TARGET;
     /* radius and range in the same unit */
     ratio = radius_over_range(scene, out);
     if (!(ratio < (oi_real)1)) return OI_ERR_OBSERVER_AT_TARGET;
