@@ -62,7 +62,12 @@ enum oi_status {
     OI_ERR_ZERO_VECTOR = -3,      /* a position that must be nonzero is zero */
     OI_ERR_BELOW_SURFACE = -4,    /* target or observer at or below the Earth's surface */
     OI_ERR_OBSERVER_AT_TARGET = -5, /* observer inside the target's sphere (range <=
-                                       target radius; oi_expose_scene: range 0) */
+                                       target radius; oi_expose_scene: range 0). The
+                                       positions are taken as given in oi_real: in
+                                       single precision an observer closer to the
+                                       target than the spacing of floats there (3.9 m
+                                       at 42,000 km) may round onto it, and is then
+                                       this error, never a result of range 0 */
     OI_ERR_ALBEDO = -6,           /* an albedo outside [0, 1] */
     OI_ERR_RADIUS = -7,           /* a radius <= 0 (target, or a model radius) */
     OI_ERR_MODEL = -8,            /* an oi_model field out of range */
@@ -84,6 +89,17 @@ enum oi_status {
  * other value. Never NULL; static storage. The names are stable: scripts
  * (the planner's CSV status column) match on them. */
 const char *oi_status_name(int status);
+
+/*
+ * Floating-point exceptions: no call raises FE_INVALID, FE_DIVBYZERO or
+ * FE_OVERFLOW, on valid input or on the inputs its documented errors
+ * refuse (NaN, infinities, zero vectors, subnormal and out-of-range values):
+ * checks compare quietly and come before the arithmetic they guard
+ * (tests/c/test_fp_exceptions.c runs every documented error with traps on).
+ * Not yet: finite positions near the largest oi_real (beyond about 1e37 km
+ * in single precision, 1e307 km in double), which oi_sun_fraction's sphere
+ * and oi_expose_scene take, may still raise FE_OVERFLOW in their norms.
+ */
 
 /* Valid range of magnitudes accepted as input. */
 #define OI_MAG_MIN (-30.0)
@@ -566,7 +582,10 @@ int oi_galactic_from_icrs(const oi_real dir[3], oi_real *l_rad, oi_real *b_rad);
 
 typedef struct oi_facet {
     oi_real normal[3];       /* outward normal in the body frame; nonzero, finite
-                                (scaled to unit length here) */
+                                (scaled to unit length here; one of subnormal
+                                length is first scaled by its largest component,
+                                so that it normalises as the same direction of
+                                unit length, to rounding) */
     oi_real area_m2;         /* (0, 1e8] m^2 */
     int two_sided;           /* nonzero: both faces reflect alike */
     oi_real albedo_diffuse;  /* Lambertian albedo, [0, 1] */
@@ -668,9 +687,11 @@ typedef struct oi_scene {
     const struct oi_shape *shape; /* NULL: the Lambertian sphere of target_radius_m and
                                      target_albedo; else its facets (caller-owned) */
     oi_real attitude_q[4];   /* body frame -> positions' frame, unit quaternion
-                                (w, x, y, z), read with a shape only; all zero: the
-                                identity; a norm off 1 by more than 1e-6 or a
-                                non-finite component: OI_ERR_SHAPE; else normalised */
+                                (w, x, y, z), read with a shape only; all four zero:
+                                the identity; a norm off 1 by more than 1e-6 (a
+                                nonzero quaternion whose squared norm underflows,
+                                (1e-300, 0, 0, 0), included), a component above 2
+                                or a non-finite one: OI_ERR_SHAPE; else normalised */
     oi_real epoch_jd;        /* Julian date (UTC) of the scene, in [OI_EPOCH_JD_MIN,
                                 OI_EPOCH_JD_MAX]; read only by the albedo model
                                 OI_ALBEDO_KNOCKE (with OI_TERM_EARTH) */

@@ -148,6 +148,26 @@ static inline oi_real oi__unit(const oi_real a[3], oi_real out[3])
 #define OI__REAL_MIN_NORMAL OI_R(2.2250738585072014e-308)
 #endif
 
+/* Half the largest finite oi_real: two vectors of norms below it have a
+ * finite difference. */
+#ifdef OI_SINGLE_PRECISION
+#define OI__HALF_REAL_MAX OI_R(1.7014117e38)
+#else
+#define OI__HALF_REAL_MAX OI_R(8.988465674311579e307)
+#endif
+
+/* Nonzero when a - b is finite (finite a and b), decided from the halves,
+ * which cannot overflow: no FE_OVERFLOW where the difference would. */
+static inline int oi__sub_finite(const oi_real a[3], const oi_real b[3])
+{
+    int i;
+    for (i = 0; i < 3; i++) {
+        const oi_real h = a[i] * OI_R(0.5) - b[i] * OI_R(0.5);
+        if (!(OI_FABS(h) < OI__HALF_REAL_MAX)) return 0;
+    }
+    return 1;
+}
+
 /* oi__unit for a caller's direction of any nonzero length (a facet's
  * normal): a vector whose norm is subnormal (its components subnormal too)
  * is scaled by its largest component first, exactly where the division by
@@ -289,15 +309,18 @@ static inline oi_real oi__clamp(oi_real x, oi_real lo, oi_real hi)
 }
 
 /* lo < x <= hi (false for NaN). */
+/* The range checks compare quietly (C99's isgreater family: a NaN is out of
+ * every range without raising FE_INVALID, so that an invalid input's error
+ * path traps nowhere); the same answers as > and <= otherwise. */
 static inline int oi__in_open_closed(oi_real x, oi_real lo, oi_real hi)
 {
-    return x > lo && x <= hi;
+    return isgreater(x, lo) && islessequal(x, hi);
 }
 
 /* lo <= x <= hi (false for NaN). */
 static inline int oi__in_closed(oi_real x, oi_real lo, oi_real hi)
 {
-    return x >= lo && x <= hi;
+    return isgreaterequal(x, lo) && islessequal(x, hi);
 }
 
 static inline void oi__zero3(oi_real a[3])

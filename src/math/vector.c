@@ -39,8 +39,9 @@ oi_real oi__norm_outline(const oi_real a[3])
  */
 int oi__finite3_outline(const oi_real a[3])
 {
-    /* x - x is +0 for finite x and NaN for an infinity or a NaN, and a NaN
-     * carries through the sum: the answer of oi__finite3_inline without its
-     * three branches (fewer instructions and bytes out of line) */
-    return (a[0] - a[0]) + (a[1] - a[1]) + (a[2] - a[2]) == (oi_real)0;
+    /* |x| < inf by the quiet comparison (no FE_INVALID for an infinity or a
+     * NaN, where x - x raised it), the three joined without branches: the
+     * answer of oi__finite3_inline */
+    return isless(OI_FABS(a[0]), (oi_real)INFINITY) & isless(OI_FABS(a[1]), (oi_real)INFINITY) &
+           isless(OI_FABS(a[2]), (oi_real)INFINITY);
 }

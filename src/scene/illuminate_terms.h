@@ -162,6 +162,9 @@ static OI_NOINLINE int moon_certainly_lit(const oi_scene *s, const oi_model *m)
     oi_real to_sun[3], d_sun;
     oi__sub(s->sun_km, s->moon_km, to_sun);
     d_sun = oi__unit_bounded(to_sun, to_sun);
+    /* the Moon at or inside the Sun is not certain: the shadow's own call
+     * gives its error (OI_ERR_GEOMETRY), without a division by d_sun = 0 */
+    if (!(d_sun > m->sun_radius_km)) return 0;
     return certainly_lit(to_sun, d_sun, s->moon_km, oi__norm_bounded(s->moon_km), m);
 }
 

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* test_degenerate.c: inputs at the edge of what the contract accepts give
- * the contract's answer (issue 28): an attitude quaternion whose squared
+ * the contract's answer: an attitude quaternion whose squared
  * norm underflows is OI_ERR_SHAPE (not the identity), a facet normal of
  * subnormal length is normalised correctly (not to (0.5, 0.5, 0.5)), an
  * observer at the target is OI_ERR_OBSERVER_AT_TARGET without a division by

@@ -3,8 +3,8 @@
  * gives them ("Flags with one meaning each"): no result holds two flags the
  * definitions exclude, over random photometric inputs (oi_expose, at rest
  * and moving, both detection rules) and random scenes (oi_expose_scene:
- * lit, eclipsed, occulted, the Earth in the field); and the cases issue 28
- * found (a full well of the Earth's light called "saturated", SATURATED with
+ * lit, eclipsed, occulted, the Earth in the field); and the cases a user found
+ * (a full well of the Earth's light called "saturated", SATURATED with
  * TOO_FAINT) give the flags their definitions say. */
 #include <stdarg.h>
 #include <stddef.h>
