@@ -10,9 +10,9 @@
  * reflection options), every public call and batch the scenes reach: the
  * flags are clear after each call, and, where glibc can enable traps, the
  * same calls run with the three exceptions trapping (a trap fails the test
- * with SIGFPE). Then the error paths (issue 28): every documented error
+ * with SIGFPE). Then the error paths: every documented error
  * status of every public call, and a sweep of hostile inputs (NaN,
- * infinities, subnormals, the largest values), reached with the status
+ * infinities, subnormals, 1e12 and 1e13 km), reached with the status
  * checked and no harmful flag, again with the traps on. */
 #define _GNU_SOURCE /* feenableexcept (glibc) */
 #include <stdarg.h>
