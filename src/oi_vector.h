@@ -168,6 +168,11 @@ static inline int oi__sub_finite(const oi_real a[3], const oi_real b[3])
     return 1;
 }
 
+/* The unit vector of a whose norm n is subnormal and nonzero, a scaled by
+ * its largest component first (src/math/vector.c, out of line: the callers'
+ * frames do not grow, make stack). Returns n. */
+oi_real oi__unit_tiny(const oi_real a[3], oi_real n, oi_real out[3]);
+
 /* oi__unit for a caller's direction of any nonzero length (a facet's
  * normal): a vector whose norm is subnormal (its components subnormal too)
  * is scaled by its largest component first, exactly where the division by
@@ -177,19 +182,8 @@ static inline int oi__sub_finite(const oi_real a[3], const oi_real b[3])
 static inline oi_real oi__unit_scaled(const oi_real a[3], oi_real out[3])
 {
     const oi_real n = oi__norm(a);
-    oi_real m, t, b[3];
-    if (!(n > (oi_real)0) || !(n < OI__REAL_MIN_NORMAL)) return oi__divide3(a, n, out);
-    m = OI_FABS(a[0]);
-    t = OI_FABS(a[1]);
-    if (t > m) m = t;
-    t = OI_FABS(a[2]);
-    if (t > m) m = t;
-    /* a / m: quotients of exact values, correctly rounded, the largest 1 */
-    b[0] = a[0] / m;
-    b[1] = a[1] / m;
-    b[2] = a[2] / m;
-    (void)oi__divide3(b, OI_SQRT(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]), out);
-    return n;
+    if (n > (oi_real)0 && n < OI__REAL_MIN_NORMAL) return oi__unit_tiny(a, n, out);
+    return oi__divide3(a, n, out);
 }
 
 /* Norm, unit vector and angle for vectors whose components are known to be

@@ -45,3 +45,22 @@ int oi__finite3_outline(const oi_real a[3])
     return isless(OI_FABS(a[0]), (oi_real)INFINITY) & isless(OI_FABS(a[1]), (oi_real)INFINITY) &
            isless(OI_FABS(a[2]), (oi_real)INFINITY);
 }
+
+/*
+ * oi__unit_tiny: the unit vector of a vector of subnormal norm n (> 0):
+ * a / m, m its largest |component| (quotients of exact values, correctly
+ * rounded, the largest 1), then that over its norm (src/oi_vector.h,
+ * oi__unit_scaled). Returns n.
+ */
+oi_real oi__unit_tiny(const oi_real a[3], oi_real n, oi_real out[3])
+{
+    oi_real m = OI_FABS(a[0]), t = OI_FABS(a[1]), b[3];
+    if (t > m) m = t;
+    t = OI_FABS(a[2]);
+    if (t > m) m = t;
+    b[0] = a[0] / m;
+    b[1] = a[1] / m;
+    b[2] = a[2] / m;
+    (void)oi__divide3(b, OI_SQRT(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]), out);
+    return n;
+}
