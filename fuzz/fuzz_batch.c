@@ -269,7 +269,7 @@ static void check_masked(unsigned mask, const oi_exposure *f, const oi_exposure 
 {
     const int set = (mask & OI_EXPOSE_SETTING) != 0u;
     unsigned flags = f->flags;
-    if (!set) flags &= ~OI_FLAG_SATURATED;
+    if (!set) flags &= ~(OI_FLAG_SATURATED | OI_FLAG_BACKGROUND_SATURATED);
     if (!(mask & OI_EXPOSE_FAINT)) flags &= ~OI_FLAG_TOO_FAINT;
     if (!(mask & (OI_EXPOSE_SETTING | OI_EXPOSE_FAINT))) flags &= ~OI_FLAG_TRAILED;
     FZ_CHECK(m->flags == flags);

@@ -117,7 +117,8 @@ static int compute(const orbit *tgt, const orbit *insp, const oi_camera *cam, do
 static int is_good(const sample *s, double snr_goal)
 {
     unsigned bad = OI_FLAG_ECLIPSED | OI_FLAG_PENUMBRA | OI_FLAG_SUN_EXCLUSION |
-                   OI_FLAG_OCCULTED | OI_FLAG_SATURATED | OI_FLAG_MOON_SHADOW;
+                   OI_FLAG_OCCULTED | OI_FLAG_SATURATED | OI_FLAG_MOON_SHADOW |
+                   OI_FLAG_TOO_FAINT | OI_FLAG_BACKGROUND_SATURATED;
     return s->row.has_numbers && !(s->row.flags & bad) && (double)s->row.expo.snr >= snr_goal;
 }
 

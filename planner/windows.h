@@ -2,7 +2,9 @@
 /* windows.h: observation windows over a sequence of planned rows (the
  * batch's --summary): runs of consecutive rows where the target can be
  * photographed (full sunlight, Sun outside the exclusion angle, not behind
- * the Earth, not saturated, SNR at the goal). */
+ * the Earth, no saturated flag, not too faint, SNR at the goal), and the
+ * pass's best view (windows_print: never an eclipsed, occulted or too-faint
+ * row). */
 #ifndef OI_PLAN_WINDOWS_H
 #define OI_PLAN_WINDOWS_H
 
@@ -22,6 +24,9 @@ typedef struct window_list {
     int open;                    /* the last window is still growing */
     unsigned long rows, good;
     double snr_goal;
+    window fallback;             /* the best view without an observable row: best, best_*
+                                    (neither eclipsed, occulted nor too faint) */
+    unsigned fallback_flags;     /* its flags */
 } window_list;
 
 void windows_init(window_list *l, double snr_goal);

@@ -141,6 +141,51 @@ static inline oi_real oi__unit(const oi_real a[3], oi_real out[3])
     return oi__divide3(a, oi__norm(a), out);
 }
 
+/* The smallest normal oi_real. */
+#ifdef OI_SINGLE_PRECISION
+#define OI__REAL_MIN_NORMAL OI_R(1.17549435e-38)
+#else
+#define OI__REAL_MIN_NORMAL OI_R(2.2250738585072014e-308)
+#endif
+
+/* Half the largest finite oi_real: two vectors of norms below it have a
+ * finite difference. */
+#ifdef OI_SINGLE_PRECISION
+#define OI__HALF_REAL_MAX OI_R(1.7014117e38)
+#else
+#define OI__HALF_REAL_MAX OI_R(8.988465674311579e307)
+#endif
+
+/* Nonzero when a - b is finite (finite a and b), decided from the halves,
+ * which cannot overflow: no FE_OVERFLOW where the difference would. */
+static inline int oi__sub_finite(const oi_real a[3], const oi_real b[3])
+{
+    int i;
+    for (i = 0; i < 3; i++) {
+        const oi_real h = a[i] * OI_R(0.5) - b[i] * OI_R(0.5);
+        if (!(OI_FABS(h) < OI__HALF_REAL_MAX)) return 0;
+    }
+    return 1;
+}
+
+/* The unit vector of a whose norm n is subnormal and nonzero, a scaled by
+ * its largest component first (src/math/vector.c, out of line: the callers'
+ * frames do not grow, make stack). Returns n. */
+oi_real oi__unit_tiny(const oi_real a[3], oi_real n, oi_real out[3]);
+
+/* oi__unit for a caller's direction of any nonzero length (a facet's
+ * normal): a vector whose norm is subnormal (its components subnormal too)
+ * is scaled by its largest component first, exactly where the division by
+ * the subnormal norm would round (a normal of components 5e-324 gave
+ * (0.5, 0.5, 0.5)); any other vector is oi__unit's, to the bit. Returns
+ * |a| (out zeroed when it is 0). out may be a. */
+static inline oi_real oi__unit_scaled(const oi_real a[3], oi_real out[3])
+{
+    const oi_real n = oi__norm(a);
+    if (n > (oi_real)0 && n < OI__REAL_MIN_NORMAL) return oi__unit_tiny(a, n, out);
+    return oi__divide3(a, n, out);
+}
+
 /* Norm, unit vector and angle for vectors whose components are known to be
  * finite and at most ~1e18 in magnitude (positions validated against
  * OI_POSITION_MAX_KM, unit vectors): the plain sum of squares cannot
@@ -258,15 +303,18 @@ static inline oi_real oi__clamp(oi_real x, oi_real lo, oi_real hi)
 }
 
 /* lo < x <= hi (false for NaN). */
+/* The range checks compare quietly (C99's isgreater family: a NaN is out of
+ * every range without raising FE_INVALID, so that an invalid input's error
+ * path traps nowhere); the same answers as > and <= otherwise. */
 static inline int oi__in_open_closed(oi_real x, oi_real lo, oi_real hi)
 {
-    return x > lo && x <= hi;
+    return isgreater(x, lo) && islessequal(x, hi);
 }
 
 /* lo <= x <= hi (false for NaN). */
 static inline int oi__in_closed(oi_real x, oi_real lo, oi_real hi)
 {
-    return x >= lo && x <= hi;
+    return isgreaterequal(x, lo) && islessequal(x, hi);
 }
 
 static inline void oi__zero3(oi_real a[3])

@@ -421,7 +421,7 @@ static void test_exposure(void)
     for (i = 0; i < cam->n_times; i++) found |= ex.exposure_s == cam->times_s[i];
     check_true("expose picks one of the camera's times", found);
     check_true("expose fill within [0, 1] unless saturated",
-               (ex.flags & OI_FLAG_SATURATED) || (ex.fill >= 0 && ex.fill <= 1));
+               (ex.flags & (OI_FLAG_SATURATED | OI_FLAG_BACKGROUND_SATURATED)) || (ex.fill >= 0 && ex.fill <= 1));
 }
 #endif
 

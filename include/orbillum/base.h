@@ -52,7 +52,12 @@ enum oi_status {
     OI_ERR_ZERO_VECTOR = -3,      /* a position that must be nonzero is zero */
     OI_ERR_BELOW_SURFACE = -4,    /* target or observer at or below the Earth's surface */
     OI_ERR_OBSERVER_AT_TARGET = -5, /* observer inside the target's sphere (range <=
-                                       target radius; oi_expose_scene: range 0) */
+                                       target radius; oi_expose_scene: range 0). The
+                                       positions are taken as given in oi_real: in
+                                       single precision an observer closer to the
+                                       target than the spacing of floats there (3.9 m
+                                       at 42,000 km) may round onto it, and is then
+                                       this error, never a result of range 0 */
     OI_ERR_ALBEDO = -6,           /* an albedo outside [0, 1] */
     OI_ERR_RADIUS = -7,           /* a radius <= 0 (target, or a model radius) */
     OI_ERR_MODEL = -8,            /* an oi_model field out of range */
@@ -74,6 +79,17 @@ enum oi_status {
  * other value. Never NULL; static storage. The names are stable: scripts
  * (the planner's CSV status column) match on them. */
 const char *oi_status_name(int status);
+
+/*
+ * Floating-point exceptions: no call raises FE_INVALID, FE_DIVBYZERO or
+ * FE_OVERFLOW, on valid input or on the inputs its documented errors
+ * refuse (NaN, infinities, zero vectors, subnormal and out-of-range values):
+ * checks compare quietly and come before the arithmetic they guard
+ * (tests/c/test_fp_exceptions.c runs every documented error with traps on).
+ * Not yet: finite positions near the largest oi_real (beyond about 1e37 km
+ * in single precision, 1e307 km in double), which oi_sun_fraction's sphere
+ * and oi_expose_scene take, may still raise FE_OVERFLOW in their norms.
+ */
 
 /* Valid range of magnitudes accepted as input. */
 #define OI_MAG_MIN (-30.0)

@@ -117,11 +117,12 @@ int oi_expose_scene_batch(long n, const oi_camera *camera, const oi_scene *scene
 
 /* Outputs mask of oi_expose_batch_outputs and oi_expose_scene_batch_outputs
  * (bits). Always formed: status and flags' geometric bits (every OI_FLAG_*
- * but TOO_FAINT, SATURATED and TRAILED). */
+ * but TOO_FAINT, SATURATED, BACKGROUND_SATURATED and TRAILED). */
 #define OI_EXPOSE_SETTING    (1u)  /* the choice: exposure_s, gain, time_index,
                                       gain_index, signal_e, background_e, peak_e,
                                       saturation_e, fill, snr, trail_px,
-                                      trail_factor; OI_FLAG_SATURATED */
+                                      trail_factor; OI_FLAG_SATURATED,
+                                      OI_FLAG_BACKGROUND_SATURATED */
 #define OI_EXPOSE_FAINT      (2u)  /* OI_FLAG_TOO_FAINT (at rest: one SNR; moving:
                                       the highest gain's allowed times), without
                                       the search */

@@ -70,8 +70,8 @@ const oi_camera *oi_camera_find(const char *name);
 #define OI_FLAG_SUN_EXCLUSION (1u)   /* Sun inside the exclusion angle */
 #define OI_FLAG_EARTH_IN_FOV  (2u)   /* Earth in the field of view (bright background) */
 #define OI_FLAG_ECLIPSED      (4u)   /* target in the umbra */
-#define OI_FLAG_TOO_FAINT     (8u)   /* SNR below goal at the longest exposure, highest gain */
-#define OI_FLAG_SATURATED     (16u)  /* saturated even at the shortest exposure, lowest gain */
+#define OI_FLAG_TOO_FAINT     (8u)   /* not detected at the longest exposure, highest gain */
+#define OI_FLAG_SATURATED     (16u)  /* the target fills the well even at the lowest fill */
 #define OI_FLAG_PENUMBRA      (32u)  /* target in the penumbra */
 #define OI_FLAG_OCCULTED      (64u)  /* the Earth hides the target from the observer */
 #define OI_FLAG_RESOLVED      (128u) /* target wider than a pixel: peak limited by its radiance */
@@ -79,10 +79,44 @@ const oi_camera *oi_camera_find(const char *name);
 #define OI_FLAG_MOON_IN_FOV   (512u) /* the Moon's disc in the field (oi_expose_goal.sky OI_SKY_MOON) */
 #define OI_FLAG_TRAILED       (1024u) /* even the chosen exposure trails beyond max_trail_px */
 #define OI_FLAG_GLINT         (2048u) /* a shape's specular part is more than half of flux_obs */
+#define OI_FLAG_BACKGROUND_SATURATED (4096u) /* the background, not the target, fills the
+                                                well even at the lowest fill */
+
+/*
+ * Flags with one meaning each. The geometric bits say where things are; the
+ * exposure's bits (TOO_FAINT, SATURATED, BACKGROUND_SATURATED, TRAILED) what
+ * the camera makes of the light, at these definitions, whatever else is set:
+ *   TOO_FAINT   the target is not detected (the goal's SNR, or the camera's
+ *               detection rule, oi_expose Note 8) at the most sensitive
+ *               setting, the longest time (moving: any allowed time) at the
+ *               highest gain, the well not counted; always without signal
+ *               (flux 0: OCCULTED, an unlit target).
+ *   SATURATED   the well is full at the chosen setting (fill >= 1: no setting
+ *               reaches the goal, the lowest fill chosen) and the target's
+ *               light is what fills it: the background alone does not
+ *               (background_e < saturation_e) and the target is not TOO_FAINT.
+ *   BACKGROUND_SATURATED  the well is full at the chosen setting and the
+ *               target is not what fills it: the background alone (sky,
+ *               the sunlit Earth in the field, dark current) fills the well
+ *               (background_e >= saturation_e), or the target is TOO_FAINT.
+ *               No setting can show the target: point elsewhere.
+ * Exclusions (never together in one result): SATURATED and TOO_FAINT;
+ * SATURATED and BACKGROUND_SATURATED; SATURATED and OCCULTED (the occulted
+ * target's flux is 0: TOO_FAINT, and a full well is the background's);
+ * ECLIPSED and PENUMBRA (one shadow region). OCCULTED implies TOO_FAINT.
+ * With the setting formed, fill >= 1 gives exactly one of SATURATED and
+ * BACKGROUND_SATURATED, fill < 1 neither. The Earth in the field (EARTH_IN_FOV) sets no exposure bit by
+ * itself: its radiance is the background (oi_expose_scene Note 3), and
+ * BACKGROUND_SATURATED when it fills the well. ECLIPSED (no direct
+ * sunlight) does not mean dark: earthshine and moonlight may still be
+ * detected, or even saturate. Before BACKGROUND_SATURATED existed,
+ * SATURATED was raised for any full well (with TOO_FAINT too, or for the
+ * background's): such results are now SATURATED or BACKGROUND_SATURATED.
+ */
 
 /* oi_flag_name: name of one flag bit ("sun_exclusion", "earth_in_fov",
  * "eclipsed", "too_faint", "saturated", "penumbra", "occulted", "resolved",
- * "moon_shadow", "moon_in_fov", "trailed", "glint");
+ * "moon_shadow", "moon_in_fov", "trailed", "glint", "background_saturated");
  * NULL for 0, several bits or an unknown bit. */
 const char *oi_flag_name(unsigned flag_bit);
 
@@ -187,11 +221,13 @@ typedef struct oi_exposure {
  *   2. Choice: among the settings with fill < 1 and fill <= goal.fill, the
  *      highest SNR (ties: lower gain, then shorter time); if none reaches
  *      down to the goal, the shortest time at the lowest gain (the lowest
- *      fill), with OI_FLAG_SATURATED when even that saturates.
+ *      fill), with OI_FLAG_SATURATED or OI_FLAG_BACKGROUND_SATURATED when
+ *      even that saturates (see "Flags with one meaning each").
  *      OI_FLAG_TOO_FAINT when the target is not detectable (Note 8) at the
  *      longest time and highest gain: with the SNR rule, when the SNR
  *      there is below goal.snr_min.
- *   3. in->flags bits OI_FLAG_TOO_FAINT and OI_FLAG_SATURATED are ignored
+ *   3. in->flags bits OI_FLAG_TOO_FAINT, OI_FLAG_SATURATED,
+ *      OI_FLAG_BACKGROUND_SATURATED and OI_FLAG_TRAILED are ignored
  *      (recomputed); the geometric bits are copied to out->flags.
  *   4. Valid camera ranges: aperture (0, 10] m, focal length [1e-3, 1e3] m,
  *      pitch [1e-7, 1e-3] m, transmission, QE, band_fraction and

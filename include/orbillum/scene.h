@@ -41,9 +41,11 @@ typedef struct oi_scene {
     const struct oi_shape *shape; /* NULL: the Lambertian sphere of target_radius_m and
                                      target_albedo; else its facets (caller-owned) */
     oi_real attitude_q[4];   /* body frame -> positions' frame, unit quaternion
-                                (w, x, y, z), read with a shape only; all zero: the
-                                identity; a norm off 1 by more than 1e-6 or a
-                                non-finite component: OI_ERR_SHAPE; else normalised */
+                                (w, x, y, z), read with a shape only; all four zero:
+                                the identity; a norm off 1 by more than 1e-6 (a
+                                nonzero quaternion whose squared norm underflows,
+                                (1e-300, 0, 0, 0), included), a component above 2
+                                or a non-finite one: OI_ERR_SHAPE; else normalised */
     oi_real epoch_jd;        /* Julian date (UTC) of the scene, in [OI_EPOCH_JD_MIN,
                                 OI_EPOCH_JD_MAX]; read only by the albedo model
                                 OI_ALBEDO_KNOCKE (with OI_TERM_EARTH) */

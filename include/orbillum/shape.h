@@ -42,7 +42,10 @@ extern "C" {
 
 typedef struct oi_facet {
     oi_real normal[3];       /* outward normal in the body frame; nonzero, finite
-                                (scaled to unit length here) */
+                                (scaled to unit length here; one of subnormal
+                                length is first scaled by its largest component,
+                                so that it normalises as the same direction of
+                                unit length, to rounding) */
     oi_real area_m2;         /* (0, 1e8] m^2 */
     int two_sided;           /* nonzero: both faces reflect alike */
     oi_real albedo_diffuse;  /* Lambertian albedo, [0, 1] */

@@ -62,7 +62,7 @@ static void clear_unasked(unsigned outputs, oi_exposure *out)
         out->snr = 0;
         out->trail_px = 0;
         out->trail_factor = 0;
-        drop |= OI_FLAG_SATURATED;
+        drop |= OI_FLAG_SATURATED | OI_FLAG_BACKGROUND_SATURATED;
     }
     if ((outputs & OI_EXPOSE_FAINT) == 0u) drop |= OI_FLAG_TOO_FAINT;
     if ((outputs & (OI_EXPOSE_SETTING | OI_EXPOSE_FAINT)) == 0u) drop |= OI_FLAG_TRAILED;

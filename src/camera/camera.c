@@ -50,7 +50,8 @@ static int temperature_valid(const oi_camera *c)
         return 0;
     }
     span = CAM_DOUBLINGS_MAX * c->dark_doubling_c;
-    return c->temp_max_c - c->dark_ref_temp_c <= span && c->dark_ref_temp_c - c->temp_min_c <= span;
+    return islessequal(c->temp_max_c - c->dark_ref_temp_c, span) &&
+           islessequal(c->dark_ref_temp_c - c->temp_min_c, span);
 }
 
 /*
@@ -81,7 +82,8 @@ int oi__camera_valid(const oi_camera *c)
         !oi__in_closed(c->sun_exclusion_rad, 0, OI_PI_R) ||
         !oi__in_closed(c->max_trail_px, 0, CAM_TRAIL_MAX_PX) ||
         !(c->detect_false_alarm == 0 ||
-          (c->detect_false_alarm >= CAM_FALSE_ALARM_MIN && c->detect_false_alarm < OI_R(0.5))) ||
+          (isgreaterequal(c->detect_false_alarm, CAM_FALSE_ALARM_MIN) &&
+           isless(c->detect_false_alarm, OI_R(0.5)))) ||
         !(c->detect_probability == 0 ||
           oi__in_closed(c->detect_probability, OI_R(0.5), CAM_DETECT_P_MAX)) ||
         !temperature_valid(c) ||
@@ -93,18 +95,18 @@ int oi__camera_valid(const oi_camera *c)
     prev = 0;
     for (i = 0; i < n; i++) {
         x = c->times_s[i];
-        if (!(x > prev)) return 0;
+        if (!isgreater(x, prev)) return 0; /* quiet comparisons: NaN fails */
         prev = x;
     }
-    if (!(prev <= CAM_TIME_MAX_S)) return 0;
+    if (!islessequal(prev, CAM_TIME_MAX_S)) return 0;
     n = c->n_gains;
     prev = 0;
     for (i = 0; i < n; i++) {
         x = c->gains[i];
-        if (!(x > prev) || !oi__in_closed(c->read_noise_e[i], 0, CAM_READ_NOISE_MAX_E)) return 0;
+        if (!isgreater(x, prev) || !oi__in_closed(c->read_noise_e[i], 0, CAM_READ_NOISE_MAX_E)) return 0;
         prev = x;
     }
-    return prev <= CAM_GAIN_MAX;
+    return islessequal(prev, CAM_GAIN_MAX);
 }
 
 /* Exact, case-sensitive string equality (no libc string functions). */

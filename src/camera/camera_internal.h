@@ -32,7 +32,9 @@ typedef struct {
 } oi__expose_plan;
 
 /* What oi__expose_planned computes (bits): the search of the setting (with
- * the detection margin and OI_FLAG_SATURATED) and OI_FLAG_TOO_FAINT. */
+ * the detection margin and the well's flags, OI_FLAG_SATURATED and
+ * OI_FLAG_BACKGROUND_SATURATED, which read the detection test at the most
+ * sensitive setting) and OI_FLAG_TOO_FAINT. */
 #define OI__EXPOSE_SEARCH (1u)
 #define OI__EXPOSE_FAINT  (2u)
 

@@ -23,7 +23,22 @@
 #define FLAGS_GEOMETRIC (OI_FLAG_SUN_EXCLUSION | OI_FLAG_EARTH_IN_FOV | OI_FLAG_ECLIPSED | \
                          OI_FLAG_PENUMBRA | OI_FLAG_OCCULTED | OI_FLAG_RESOLVED | \
                          OI_FLAG_MOON_SHADOW | OI_FLAG_MOON_IN_FOV | OI_FLAG_GLINT)
-#define FLAGS_ALL (FLAGS_GEOMETRIC | OI_FLAG_TOO_FAINT | OI_FLAG_SATURATED | OI_FLAG_TRAILED)
+#define FLAGS_ALL (FLAGS_GEOMETRIC | OI_FLAG_TOO_FAINT | OI_FLAG_SATURATED | OI_FLAG_TRAILED | \
+                   OI_FLAG_BACKGROUND_SATURATED)
+
+/* The well's flags of a chosen setting that fills it (out->fill >= 1: no
+ * setting reaches the goal, include/orbillum.h "Flags with one meaning"):
+ * OI_FLAG_BACKGROUND_SATURATED when the background alone fills the well
+ * (background_e >= saturation_e) or the target is too faint (faint: its
+ * light is not what counts), else OI_FLAG_SATURATED (the target's light
+ * fills it). Never both, and never OI_FLAG_SATURATED with
+ * OI_FLAG_TOO_FAINT. */
+static unsigned well_flags(const oi_exposure *out, int faint)
+{
+    if (out->fill < OI_R(1.0)) return 0u;
+    if (faint || !(out->background_e < out->saturation_e)) return OI_FLAG_BACKGROUND_SATURATED;
+    return OI_FLAG_SATURATED;
+}
 
 /* Largest accepted angular rate (rad/s): far above any orbit's, small
  * enough that no trail overflows (1e3 rad/s * 1e4 s / 1e-10 rad). */
@@ -431,7 +446,8 @@ static OI_NOINLINE unsigned expose_moving(const oi_camera *camera, const oi_expo
                 low_t = ti;
                 low_g = gi;
             }
-            if (gi == camera->n_gains - 1 && detected(r, sig, bkg, camera->read_noise_e[gi])) {
+            if (gi == camera->n_gains - 1 && r->rate_s > 0 &&
+                detected(r, sig, bkg, camera->read_noise_e[gi])) {
                 any_detected = 1;
             }
         }
@@ -441,9 +457,9 @@ static OI_NOINLINE unsigned expose_moving(const oi_camera *camera, const oi_expo
     if (!found) {
         best_t = low_t;
         best_g = low_g;
-        if (!(low_fill < OI_R(1.0))) flags |= OI_FLAG_SATURATED;
     }
     evaluate_moving(camera, r, &tm, best_t, best_g, out);
+    if (!found) flags |= well_flags(out, !any_detected);
     return flags;
 }
 
@@ -487,7 +503,8 @@ void oi__expose_plan_make(const oi_camera *camera, const oi_expose_goal *goal,
  *      k_0 by bisection, the next ones by stepping down.
  *   2. k_0 = 0: nothing reaches the goal, and the lowest fill is that of
  *      (time 0, gain 0), the first setting: it is the choice, with
- *      OI_FLAG_SATURATED when its fill is not below 1.
+ *      OI_FLAG_SATURATED or OI_FLAG_BACKGROUND_SATURATED (well_flags) when
+ *      its fill is not below 1.
  *   3. S = 0: every SNR is 0, the first setting (0, 0) is the choice.
  *   4. The SNR does not increase with the read noise. A gain whose read
  *      noise is not below that of the best gain so far cannot beat it (its
@@ -556,33 +573,30 @@ static OI_NOINLINE void expose_at_rest(const oi_camera *camera, const oi_expose_
                                        const expose_rates *r, unsigned flags, unsigned need,
                                        oi_exposure *out)
 {
-    int kk, best_t, best_g;
+    int kk, best_t, best_g, faint = 0;
+    /* the detection test at the longest time and highest gain: for
+     * OI_FLAG_TOO_FAINT, and for the search's well flags (well_flags) */
+    if (!(r->rate_s > 0)) {
+        faint = 1; /* no signal is never detected */
+    } else if (r->det_k < 0) {
+        faint = snr_at(r, camera->times_s[camera->n_times - 1],
+                       camera->read_noise_e[camera->n_gains - 1]) < r->snr_min;
+    } else {
+        oi_real t = camera->times_s[camera->n_times - 1];
+        faint = !detected(r, r->rate_s * t, r->rate_b * t,
+                          camera->read_noise_e[camera->n_gains - 1]);
+    }
+    if ((need & OI__EXPOSE_FAINT) != 0u && faint) flags |= OI_FLAG_TOO_FAINT;
     if ((need & OI__EXPOSE_SEARCH) != 0u) {
         kk = first_time_over_goal(camera, r); /* 1 */
         if (kk == 0) {
             /* 2. */
             evaluate(camera, r, 0, 0, out);
-            if (!(out->fill < OI_R(1.0))) flags |= OI_FLAG_SATURATED;
+            flags |= well_flags(out, faint);
         } else {
             best_setting(camera, r, kk, &best_t, &best_g);
             evaluate(camera, r, best_t, best_g, out);
         }
-    }
-    if ((need & OI__EXPOSE_FAINT) != 0u) {
-        if (r->det_k < 0) {
-            if (snr_at(r, camera->times_s[camera->n_times - 1],
-                       camera->read_noise_e[camera->n_gains - 1]) < r->snr_min) {
-                flags |= OI_FLAG_TOO_FAINT;
-            }
-        } else {
-            oi_real t = camera->times_s[camera->n_times - 1];
-            if (!detected(r, r->rate_s * t, r->rate_b * t,
-                          camera->read_noise_e[camera->n_gains - 1])) {
-                flags |= OI_FLAG_TOO_FAINT;
-            }
-        }
-    }
-    if ((need & OI__EXPOSE_SEARCH) != 0u) {
         detect_margin(camera, r, out);
         out->trail_factor = 1; /* at rest: no trail */
     }
@@ -613,7 +627,8 @@ int oi_expose(const oi_camera *camera, const oi_expose_in *in,
  *             const char *  "sun_exclusion", "earth_in_fov", "eclipsed",
  *                           "too_faint", "saturated", "penumbra",
  *                           "occulted", "resolved", "moon_shadow", "moon_in_fov",
- *                           "trailed", "glint"; NULL for 0, a
+ *                           "trailed", "glint", "background_saturated";
+ *                           NULL for 0, a
  *                           combination of bits
  *                           or an unknown bit.
  */
@@ -632,6 +647,7 @@ const char *oi_flag_name(unsigned flag_bit)
     case OI_FLAG_MOON_IN_FOV: return "moon_in_fov";
     case OI_FLAG_TRAILED: return "trailed";
     case OI_FLAG_GLINT: return "glint";
+    case OI_FLAG_BACKGROUND_SATURATED: return "background_saturated";
     default: return NULL;
     }
 }

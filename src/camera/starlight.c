@@ -98,6 +98,12 @@ oi_real oi_starlight_radiance(oi_real l_rad, oi_real b_rad)
     oi_real l, b, fl, fb, v0, v1, u;
     int i, j;
     if (!OI_ISFINITE(l_rad) || !OI_ISFINITE(b_rad)) return 0;
+    /* beyond 1e30 rad reduced in radians first, |b| beyond 4 rad taken as 4
+     * (clamped to the pole the same): no product overflows (any other angle:
+     * the bits of earlier versions) */
+    if (OI_FABS(l_rad) > OI_R(1e30))
+        l_rad -= OI_R(6.283185307179586) * OI_FLOOR(l_rad / OI_R(6.283185307179586));
+    if (OI_FABS(b_rad) > OI_R(4.0)) b_rad = b_rad > 0 ? OI_R(4.0) : OI_R(-4.0);
     l = l_rad * deg;
     l -= OI_R(360.0) * OI_FLOOR(l / OI_R(360.0));
     u = l / OI_R(10.0);

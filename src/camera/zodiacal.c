@@ -91,8 +91,13 @@ oi_real oi_zodiacal_radiance(oi_real dlambda_rad, oi_real beta_rad)
     oi_real dl, b, fl, fb, v0, v1;
     int i, j;
     if (!OI_ISFINITE(dlambda_rad) || !OI_ISFINITE(beta_rad)) return 0;
-    dl = OI_FABS(dlambda_rad) * deg;
-    b = OI_FABS(beta_rad) * deg;
+    dl = OI_FABS(dlambda_rad);
+    /* beyond 1e30 rad reduced in radians first and |beta| beyond 4 rad taken
+     * as 4 (the same clamped cell): no product overflows (any other angle:
+     * the bits of earlier versions) */
+    if (dl > OI_R(1e30)) dl = OI_FABS(dl - OI_R(6.283185307179586) * OI_FLOOR(dl / OI_R(6.283185307179586)));
+    dl *= deg;
+    b = OI_FABS(beta_rad) > OI_R(4.0) ? OI_R(4.0) * deg : OI_FABS(beta_rad) * deg;
     dl -= OI_R(360.0) * OI_FLOOR(dl / OI_R(360.0)); /* [0, 360) */
     if (dl > OI_R(180.0)) dl = OI_R(360.0) - dl;
     i = grid_cell(dl, OI_R(45.0), ZL_ROWS, &fl);

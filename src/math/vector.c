@@ -39,8 +39,28 @@ oi_real oi__norm_outline(const oi_real a[3])
  */
 int oi__finite3_outline(const oi_real a[3])
 {
-    /* x - x is +0 for finite x and NaN for an infinity or a NaN, and a NaN
-     * carries through the sum: the answer of oi__finite3_inline without its
-     * three branches (fewer instructions and bytes out of line) */
-    return (a[0] - a[0]) + (a[1] - a[1]) + (a[2] - a[2]) == (oi_real)0;
+    /* |x| < inf by the quiet comparison (no FE_INVALID for an infinity or a
+     * NaN, where x - x raised it), the three joined without branches: the
+     * answer of oi__finite3_inline */
+    return isless(OI_FABS(a[0]), (oi_real)INFINITY) & isless(OI_FABS(a[1]), (oi_real)INFINITY) &
+           isless(OI_FABS(a[2]), (oi_real)INFINITY);
+}
+
+/*
+ * oi__unit_tiny: the unit vector of a vector of subnormal norm n (> 0):
+ * a / m, m its largest |component| (quotients of exact values, correctly
+ * rounded, the largest 1), then that over its norm (src/oi_vector.h,
+ * oi__unit_scaled). Returns n.
+ */
+oi_real oi__unit_tiny(const oi_real a[3], oi_real n, oi_real out[3])
+{
+    oi_real m = OI_FABS(a[0]), t = OI_FABS(a[1]), b[3];
+    if (t > m) m = t;
+    t = OI_FABS(a[2]);
+    if (t > m) m = t;
+    b[0] = a[0] / m;
+    b[1] = a[1] / m;
+    b[2] = a[2] / m;
+    (void)oi__divide3(b, OI_SQRT(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]), out);
+    return n;
 }

@@ -57,7 +57,7 @@ int oi__model_resolve(const oi_model *in, oi_model *out)
     for (i = 0; i < N_FIELDS; i++) {
         const unsigned k = i < N_RADII ? 0u : i - N_RADII + 1u;
         const oi_real given = FIELD(in, field_offset[i]);
-        v[i] = given > (oi_real)0 ? given : FIELD(out, field_offset[i]);
+        v[i] = isgreater(given, (oi_real)0) ? given : FIELD(out, field_offset[i]); /* quiet: NaN */
         if (!OI_ISFINITE(given) || given < (oi_real)0 || v[i] < bound_lo[k] || v[i] > bound_hi[k]) {
             if (i >= N_RADII) return OI_ERR_MODEL;
             /* a radius: OI_ERR_RADIUS when all three are finite (those

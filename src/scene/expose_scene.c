@@ -105,8 +105,8 @@ static OI_NOINLINE int check_scene(const oi_camera *camera, const oi_scene *scen
         !oi__finite3(scene->observer_km) || (use_moon && !oi__finite3(scene->moon_km))) {
         return OI_ERR_NONFINITE;
     }
-    if (!(scene->earth_albedo >= 0 && scene->earth_albedo <= OI_R(1.0)) ||
-        !(scene->target_albedo >= 0 && scene->target_albedo <= OI_R(1.0))) {
+    if (!oi__in_closed(scene->earth_albedo, 0, OI_R(1.0)) ||
+        !oi__in_closed(scene->target_albedo, 0, OI_R(1.0))) { /* quiet: NaN */
         return OI_ERR_ALBEDO;
     }
     if (!OI_ISFINITE(illum->e_sun) || !OI_ISFINITE(illum->e_earth) ||

@@ -162,6 +162,9 @@ static OI_NOINLINE int moon_certainly_lit(const oi_scene *s, const oi_model *m)
     oi_real to_sun[3], d_sun;
     oi__sub(s->sun_km, s->moon_km, to_sun);
     d_sun = oi__unit_bounded(to_sun, to_sun);
+    /* the Moon at or inside the Sun is not certain: the shadow's own call
+     * gives its error (OI_ERR_GEOMETRY), without a division by d_sun = 0 */
+    if (!(d_sun > m->sun_radius_km)) return 0;
     return certainly_lit(to_sun, d_sun, s->moon_km, oi__norm_bounded(s->moon_km), m);
 }
 
@@ -478,6 +481,9 @@ static OI_NOINLINE int observer_term(const oi_scene *scene, oi_illum *out)
 {
     oi_real obs_hat[3], ratio;
     out->range_km = oi__observer_direction(scene, obs_hat);
+    /* the observer inside the target's sphere (range 0 included) found
+     * before the ratio is formed: no division by zero, no overflow */
+    if (!(out->range_km * OI_R(1000.0) > scene->target_radius_m)) return OI_ERR_OBSERVER_AT_TARGET;
     /* radius and range in the same unit */
     ratio = radius_over_range(scene, out);
     if (!(ratio < (oi_real)1)) return OI_ERR_OBSERVER_AT_TARGET;

@@ -97,6 +97,9 @@ static int sun_geometry(const oi_real sun_km[3], const oi_real point_km[3], cons
         g->q_earth = (oi_real)-1; /* far: the plain form is accurate */
     }
     if (ds <= m->sun_radius_km + m->earth_radius_km) return OI_ERR_GEOMETRY;
+    if (!(ds < OI__HALF_REAL_MAX && g->dp < OI__HALF_REAL_MAX) &&
+        !oi__sub_finite(sun_km, point_km))
+        return OI_ERR_NONFINITE; /* sun - point overflows: found without forming it */
     oi__sub(sun_km, point_km, rel);
     if (!oi__finite3(rel)) return OI_ERR_NONFINITE;
     g->dsp = oi__norm(rel);

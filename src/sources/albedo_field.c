@@ -45,7 +45,7 @@ static int cell(const oi__albedo_field *f, int i, int j, oi_real *v)
 {
     const float x = f->map[(long)i * f->n_lon + j];
     *v = (oi_real)x;
-    return x >= 0.0f && x <= 1.0f;
+    return isgreaterequal(x, 0.0f) && islessequal(x, 1.0f); /* quiet: NaN */
 }
 
 int oi__albedo_at(const oi__albedo_field *f, const oi_real p[3], oi_real *a)

@@ -37,7 +37,7 @@ oi_real oi_facet_brdf(const oi_facet *facet, const oi_real to_source[3],
         return (oi_real)0;
     if (!(facet->shininess >= (oi_real)0 && facet->shininess <= (oi_real)OI_SHININESS_MAX))
         return (oi_real)0;
-    if (oi__unit(facet->normal, nrm) == (oi_real)0 || oi__unit(to_source, u_in) == (oi_real)0 ||
+    if (oi__unit_scaled(facet->normal, nrm) == (oi_real)0 || oi__unit(to_source, u_in) == (oi_real)0 ||
         oi__unit(to_observer, u_out) == (oi_real)0)
         return (oi_real)0;
     ci = oi__dot(nrm, u_in);

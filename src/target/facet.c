@@ -77,7 +77,7 @@ static oi_real earth_specular(const facet_scene *fs, const oi_model *m, const oi
 static OI_NOINLINE void facet_normal(const oi_real q[4], const oi_facet *f, oi_real nrm[3])
 {
     oi_real body[3];
-    (void)oi__unit(f->normal, body);
+    (void)oi__unit_scaled(f->normal, body);
     oi__quat_rotate(q, body, nrm);
 }
 

@@ -396,7 +396,7 @@ static OI_NOINLINE int plate_setup(oi_real theta, oi_real h_km, const oi_real no
     OI_SINCOS(theta, &p->sn, &p->cs);
     st = oi__earthshine(theta, p->cs, p->sn, p->h_km, &m, &p->phi, &p->psi);
     if (st < 0) return st;
-    if (oi__unit(normal, p->nrm) == (oi_real)0) return OI_ERR_ZERO_VECTOR;
+    if (oi__unit_scaled(normal, p->nrm) == (oi_real)0) return OI_ERR_ZERO_VECTOR;
     p->radius_km = m.earth_radius_km;
     p->cubature = oi__plate_cubature(&m);
     if (!p->cubature) plate_mean(p);

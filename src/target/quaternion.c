@@ -9,8 +9,8 @@
 #define QUAT_NORM_TOL OI_R(1e-6)
 
 /*
- * oi__quat_unit: the unit quaternion (w, x, y, z) of q: all zero gives the
- * identity; a non-finite component or a norm off 1 by more than
+ * oi__quat_unit: the unit quaternion (w, x, y, z) of q: all four zero gives
+ * the identity; a non-finite component or a norm off 1 by more than
  * QUAT_NORM_TOL gives OI_ERR_SHAPE (out the identity); else q / |q| and
  * OI_OK.
  */
@@ -21,10 +21,13 @@ int oi__quat_unit(const oi_real q[4], oi_real out[4])
     out[0] = (oi_real)1;
     out[1] = out[2] = out[3] = (oi_real)0;
     for (i = 0; i < 4; i++) {
-        if (!OI_ISFINITE(q[i])) return OI_ERR_SHAPE;
+        /* a component above 2 is no unit quaternion's (nor squared to overflow) */
+        if (!OI_ISFINITE(q[i]) || !(OI_FABS(q[i]) <= (oi_real)2)) return OI_ERR_SHAPE;
         n2 += q[i] * q[i];
     }
-    if (n2 == (oi_real)0) return OI_OK;
+    /* all four zero: the identity; a nonzero quaternion whose squared
+     * norm underflows (1e-300, 0, 0, 0) is no unit quaternion (below) */
+    if (q[0] == 0 && q[1] == 0 && q[2] == 0 && q[3] == 0) return OI_OK;
     n = OI_SQRT(n2);
     if (!(OI_FABS(n - (oi_real)1) <= QUAT_NORM_TOL)) return OI_ERR_SHAPE;
     for (i = 0; i < 4; i++) out[i] = q[i] / n;

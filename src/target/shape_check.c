@@ -10,7 +10,7 @@
 
 static int in_unit(oi_real x)
 {
-    return x >= (oi_real)0 && x <= (oi_real)1;
+    return oi__in_closed(x, (oi_real)0, (oi_real)1);
 }
 
 /* 1 when one facet is valid (its diffuse albedo checked unless from_scene). */
@@ -19,12 +19,12 @@ static int facet_valid(const oi_facet *f, int from_scene)
     if (!oi__finite3(f->normal)) return 0;
     if (f->normal[0] == (oi_real)0 && f->normal[1] == (oi_real)0 && f->normal[2] == (oi_real)0)
         return 0;
-    if (!(f->area_m2 > (oi_real)0 && f->area_m2 <= AREA_MAX_M2)) return 0;
+    if (!oi__in_open_closed(f->area_m2, (oi_real)0, AREA_MAX_M2)) return 0;
     if (!in_unit(f->albedo_specular)) return 0;
     if (!from_scene && (!in_unit(f->albedo_diffuse) ||
                         f->albedo_diffuse + f->albedo_specular > (oi_real)1))
         return 0;
-    return f->shininess >= (oi_real)0 && f->shininess <= (oi_real)OI_SHININESS_MAX;
+    return oi__in_closed(f->shininess, (oi_real)0, (oi_real)OI_SHININESS_MAX);
 }
 
 /* oi_shape_check: contract in include/orbillum.h. */

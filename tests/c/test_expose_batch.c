@@ -78,7 +78,7 @@ static void compare_row(long i, unsigned m, int scene_call)
         }
         return;
     }
-    if (!set) want_flags &= ~OI_FLAG_SATURATED;
+    if (!set) want_flags &= ~(OI_FLAG_SATURATED | OI_FLAG_BACKGROUND_SATURATED);
     if (!(m & OI_EXPOSE_FAINT)) want_flags &= ~OI_FLAG_TOO_FAINT;
     if (!(m & (OI_EXPOSE_SETTING | OI_EXPOSE_FAINT))) want_flags &= ~OI_FLAG_TRAILED;
     expect_int(1, (long)want_flags, (long)b->flags, "flags", i, m);

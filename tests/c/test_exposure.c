@@ -232,7 +232,7 @@ static void test_input_flags(void **state)
     in.flags = OI_FLAG_SUN_EXCLUSION | OI_FLAG_PENUMBRA | OI_FLAG_TOO_FAINT | OI_FLAG_SATURATED;
     check_int(OI_OK, oi_expose(&c, &in, NULL, &out), "status");
     check_int(OI_FLAG_SUN_EXCLUSION | OI_FLAG_PENUMBRA, (long)out.flags, "flags");
-    in.flags = OI_FLAG_GLINT << 1; /* the first bit beyond the defined flags */
+    in.flags = OI_FLAG_BACKGROUND_SATURATED << 1; /* the first bit beyond the defined flags */
     check_int(OI_ERR_FLAGS, oi_expose(&c, &in, NULL, &out), "unknown bit");
     assert_true(all_zero(&out, sizeof out));
 }
@@ -382,7 +382,7 @@ static void test_input_errors(void **state)
     goal.snr_min = 0;
     expect_status(OI_ERR_INPUT, &c, &in, &goal, "negative flux before unknown flags");
     in = input(1e-15, 0);
-    in.flags = 1u << 12;
+    in.flags = OI_FLAG_BACKGROUND_SATURATED << 1; /* the first bit beyond the defined flags */
     expect_status(OI_ERR_FLAGS, &c, &in, &goal, "unknown flag bit");
 }
 
@@ -446,6 +446,7 @@ static void test_flag_names(void **state)
     assert_string_equal(oi_flag_name(OI_FLAG_ECLIPSED), "eclipsed");
     assert_string_equal(oi_flag_name(OI_FLAG_TOO_FAINT), "too_faint");
     assert_string_equal(oi_flag_name(OI_FLAG_SATURATED), "saturated");
+    assert_string_equal(oi_flag_name(OI_FLAG_BACKGROUND_SATURATED), "background_saturated");
     assert_string_equal(oi_flag_name(OI_FLAG_PENUMBRA), "penumbra");
     assert_string_equal(oi_flag_name(OI_FLAG_OCCULTED), "occulted");
     assert_string_equal(oi_flag_name(OI_FLAG_RESOLVED), "resolved");
@@ -455,7 +456,7 @@ static void test_flag_names(void **state)
     assert_string_equal(oi_flag_name(OI_FLAG_MOON_IN_FOV), "moon_in_fov");
     assert_string_equal(oi_flag_name(OI_FLAG_TRAILED), "trailed");
     assert_string_equal(oi_flag_name(OI_FLAG_GLINT), "glint");
-    assert_null(oi_flag_name(OI_FLAG_GLINT << 1));
+    assert_null(oi_flag_name(OI_FLAG_BACKGROUND_SATURATED << 1));
 }
 #endif /* OI_NO_EXPOSURE */
 
@@ -841,7 +842,7 @@ static void reference_expose_bruteforce(const oi_camera *c, const oi_expose_in *
 {
     oi_real goal_fill = (oi_real)0.5, snr_min = (oi_real)5.0, area, k, ifov, rate_s, rate_b;
     oi_exposure trial, best_goal, best_low;
-    int have_goal = 0, have_low = 0, ti, gi;
+    int have_goal = 0, have_low = 0, ti, gi, faint;
     unsigned flags;
     if (goal != NULL && goal->fill != 0) goal_fill = goal->fill;
     if (goal != NULL && goal->snr_min != 0) snr_min = goal->snr_min;
@@ -868,17 +869,22 @@ static void reference_expose_bruteforce(const oi_camera *c, const oi_expose_in *
             }
         }
     }
-    flags = in->flags & ~(unsigned)(OI_FLAG_TOO_FAINT | OI_FLAG_SATURATED);
+    flags = in->flags & ~(unsigned)(OI_FLAG_TOO_FAINT | OI_FLAG_SATURATED |
+                                    OI_FLAG_BACKGROUND_SATURATED);
+    ref_evaluate(c, rate_s, rate_b, c->n_times - 1, c->n_gains - 1, &trial);
+    faint = !(rate_s > 0) || trial.snr < snr_min;
+    if (faint) flags |= OI_FLAG_TOO_FAINT;
     if (have_goal) {
         *out = best_goal;
     } else if (have_low) {
         *out = best_low;
     } else {
+        /* the well full at the lowest fill: the target's, unless the
+         * background alone fills it or the target is too faint */
         ref_evaluate(c, rate_s, rate_b, 0, 0, out);
-        flags |= OI_FLAG_SATURATED;
+        flags |= faint || !(out->background_e < out->saturation_e) ? OI_FLAG_BACKGROUND_SATURATED
+                                                                   : OI_FLAG_SATURATED;
     }
-    ref_evaluate(c, rate_s, rate_b, c->n_times - 1, c->n_gains - 1, &trial);
-    if (trial.snr < snr_min) flags |= OI_FLAG_TOO_FAINT;
     out->flags = flags;
     out->sun_angle_rad = 0;
 }

@@ -10,7 +10,10 @@
  * reflection options), every public call and batch the scenes reach: the
  * flags are clear after each call, and, where glibc can enable traps, the
  * same calls run with the three exceptions trapping (a trap fails the test
- * with SIGFPE). */
+ * with SIGFPE). Then the error paths: every documented error
+ * status of every public call, and a sweep of hostile inputs (NaN,
+ * infinities, subnormals, 1e12 and 1e13 km), reached with the status
+ * checked and no harmful flag, again with the traps on. */
 #define _GNU_SOURCE /* feenableexcept (glibc) */
 #include <stdarg.h>
 #include <stddef.h>
@@ -221,11 +224,567 @@ static void test_traps_enabled(void **state)
 #endif
 }
 
+
+/* ---- error paths: every documented error status of every public call,
+ * reached (the status checked) with no harmful flag and, in the trapped
+ * run, no trap. */
+
+static int error_mismatches;
+
+static void expect_st(int want, int got, const char *what)
+{
+    const int f = fetestexcept(HARMFUL);
+    if (want != got || f != 0) {
+        if (error_mismatches < 30)
+            printf("# %s: want %s got %s%s%s%s\n", what, oi_status_name(want), oi_status_name(got),
+                   f & FE_INVALID ? " FE_INVALID" : "", f & FE_DIVBYZERO ? " FE_DIVBYZERO" : "",
+                   f & FE_OVERFLOW ? " FE_OVERFLOW" : "");
+        error_mismatches++;
+    }
+    feclearexcept(FE_ALL_EXCEPT);
+}
+
+/* A function of no status: only the flags. */
+static void expect_quiet(const char *what)
+{
+    expect_st(0, 0, what);
+}
+
+static void lit_scene(oi_scene *s)
+{
+    oi_scene_defaults(s);
+    s->terms = OI_TERM_ALL;
+    s->sun_km[0] = (oi_real)1.496e8;
+    s->moon_km[1] = (oi_real)384400;
+    s->target_km[0] = 7000;
+    s->observer_km[0] = 7000;
+    s->observer_km[1] = 50;
+    s->has_observer = 1;
+}
+
+static void errors_geometry(void)
+{
+    const oi_real sun1[3] = {(oi_real)1.496e8, 0, 0}, pt[3] = {7000, 0, 0};
+    const oi_real zero[3] = {0, 0, 0}, nan3[3] = {(oi_real)NAN, 0, 0};
+#ifdef OI_SINGLE_PRECISION
+    const oi_real big_pt[3] = {(oi_real)-3e38, 0, 0}, big_sun[3] = {(oi_real)3e38, 0, 0};
+#else
+    const oi_real big_pt[3] = {-1.7e308, 0, 0}, big_sun[3] = {1.7e308, 0, 0};
+#endif
+    const oi_real far_pt[3] = {(oi_real)1e13, 0, 0}, low_pt[3] = {1000, 0, 0};
+    const oi_real near_sun[3] = {(oi_real)5e5, 0, 0}, in_sun[3] = {(oi_real)1.4959e8, 0, 0};
+    const oi_real o[3] = {0, 0, 1};
+    oi_shadow sh;
+    oi_model bad_tsi, bad_r, wgs;
+    oi_real phi1, psi1, flux, e, l, b;
+    memset(&bad_tsi, 0, sizeof bad_tsi);
+    bad_tsi.tsi_w_m2 = -1;
+    memset(&bad_r, 0, sizeof bad_r);
+    bad_r.earth_radius_km = -1;
+    memset(&wgs, 0, sizeof wgs);
+    wgs.earth_shape = OI_EARTH_WGS84;
+    feclearexcept(FE_ALL_EXCEPT);
+    expect_st(OI_ERR_NULL, oi_sun_fraction(NULL, pt, NULL, &sh), "sun_fraction NULL");
+    expect_st(OI_ERR_MODEL, oi_sun_fraction(sun1, pt, &bad_tsi, &sh), "sun_fraction model");
+    expect_st(OI_ERR_RADIUS, oi_sun_fraction(sun1, pt, &bad_r, &sh), "sun_fraction radius");
+    expect_st(OI_ERR_NONFINITE, oi_sun_fraction(sun1, nan3, NULL, &sh), "sun_fraction NaN");
+    expect_st(OI_ERR_ZERO_VECTOR, oi_sun_fraction(zero, pt, NULL, &sh), "sun_fraction zero Sun");
+    expect_st(OI_ERR_ZERO_VECTOR, oi_sun_fraction(sun1, zero, NULL, &sh), "sun_fraction zero point");
+#ifndef OI_NO_OBLATE
+    expect_st(OI_ERR_GEOMETRY, oi_sun_fraction(sun1, far_pt, &wgs, &sh), "sun_fraction WGS-84 far");
+    expect_st(OI_ERR_BELOW_SURFACE, oi_sun_fraction(sun1, low_pt, &wgs, &sh), "sun_fraction WGS-84 low");
+#endif
+    expect_st(OI_ERR_BELOW_SURFACE, oi_sun_fraction(sun1, low_pt, NULL, &sh), "sun_fraction below");
+    expect_st(OI_ERR_GEOMETRY, oi_sun_fraction(near_sun, pt, NULL, &sh), "sun_fraction Sun at Earth");
+    expect_st(OI_ERR_NONFINITE, oi_sun_fraction(big_sun, big_pt, NULL, &sh), "sun_fraction overflow");
+    expect_st(OI_ERR_GEOMETRY, oi_sun_fraction(sun1, in_sun, NULL, &sh), "sun_fraction in the Sun");
+
+    expect_st(OI_ERR_NULL, oi_earthshine(1, 500, NULL, NULL, &psi1), "earthshine NULL");
+    expect_st(OI_ERR_NONFINITE, oi_earthshine((oi_real)NAN, 500, NULL, &phi1, &psi1), "earthshine NaN");
+    expect_st(OI_ERR_NONFINITE, oi_earthshine(1, (oi_real)INFINITY, NULL, &phi1, &psi1), "earthshine inf");
+    expect_st(OI_ERR_BELOW_SURFACE, oi_earthshine(1, 0, NULL, &phi1, &psi1), "earthshine h 0");
+    expect_st(OI_ERR_BELOW_SURFACE, oi_earthshine(1, -1e30f, NULL, &phi1, &psi1), "earthshine h < 0");
+    expect_st(OI_ERR_MODEL, oi_earthshine(1, 500, &bad_tsi, &phi1, &psi1), "earthshine model");
+    expect_st(OI_ERR_RADIUS, oi_earthshine(1, 500, &bad_r, &phi1, &psi1), "earthshine radius");
+    expect_st(OI_ERR_NULL, oi_earthshine_sphere(1, 500, NULL, NULL, &flux), "es_sphere NULL");
+    expect_st(OI_ERR_NONFINITE, oi_earthshine_sphere(1, 500, nan3, NULL, &flux), "es_sphere NaN");
+    expect_st(OI_ERR_ZERO_VECTOR, oi_earthshine_sphere(1, 500, zero, NULL, &flux), "es_sphere zero");
+    expect_st(OI_ERR_BELOW_SURFACE, oi_earthshine_sphere(1, 0, o, NULL, &flux), "es_sphere h 0");
+#ifndef OI_NO_FACETS
+    expect_st(OI_ERR_NULL, oi_earthshine_plate(1, 500, NULL, NULL, &e), "plate NULL");
+    expect_st(OI_ERR_NONFINITE, oi_earthshine_plate(1, 500, nan3, NULL, &e), "plate NaN");
+    expect_st(OI_ERR_ZERO_VECTOR, oi_earthshine_plate(1, 500, zero, NULL, &e), "plate zero");
+    expect_st(OI_ERR_NONFINITE, oi_earthshine_plate((oi_real)-INFINITY, 500, o, NULL, &e), "plate inf");
+    expect_st(OI_ERR_MODEL, oi_earthshine_plate(1, 500, o, &bad_tsi, &e), "plate model");
+#endif
+#ifndef OI_NO_SKYLIGHT
+    expect_st(OI_ERR_NULL, oi_skylight(1, 500, NULL, NULL, &psi1), "skylight NULL");
+    expect_st(OI_ERR_NONFINITE, oi_skylight((oi_real)NAN, 500, NULL, &e, &psi1), "skylight NaN");
+    expect_st(OI_ERR_INPUT, oi_skylight(-1, 500, NULL, &e, &psi1), "skylight theta");
+    expect_st(OI_ERR_INPUT, oi_skylight(1, -1, NULL, &e, &psi1), "skylight h");
+    expect_st(OI_ERR_MODEL, oi_skylight(1, 500, &bad_tsi, &e, &psi1), "skylight model");
+    expect_st(OI_ERR_RADIUS, oi_skylight(1, 500, &bad_r, &e, &psi1), "skylight radius");
+#endif
+#ifndef OI_NO_SKY
+    expect_st(OI_ERR_NULL, oi_galactic_from_icrs(NULL, &l, &b), "galactic NULL");
+    expect_st(OI_ERR_NONFINITE, oi_galactic_from_icrs(nan3, &l, &b), "galactic NaN");
+    expect_st(OI_ERR_ZERO_VECTOR, oi_galactic_from_icrs(zero, &l, &b), "galactic zero");
+    (void)oi_zodiacal_radiance((oi_real)NAN, (oi_real)INFINITY);
+    expect_quiet("zodiacal NaN");
+    (void)oi_starlight_radiance((oi_real)-INFINITY, (oi_real)NAN);
+    expect_quiet("starlight NaN");
+    (void)oi_zodiacal_radiance((oi_real)3e38, (oi_real)-3e38);
+    expect_quiet("zodiacal huge");
+    (void)oi_starlight_radiance((oi_real)-3e38, (oi_real)3e38);
+    expect_quiet("starlight huge");
+#endif
+    expect_st(OI_ERR_NULL, oi_flux_from_magnitude(1, NULL, NULL), "flux_from_magnitude NULL");
+    expect_st(OI_ERR_MODEL, oi_flux_from_magnitude(1, &bad_tsi, &e), "flux_from_magnitude model");
+    expect_st(OI_ERR_MAGNITUDE, oi_flux_from_magnitude((oi_real)NAN, NULL, &e), "magnitude NaN");
+    expect_st(OI_ERR_MAGNITUDE, oi_flux_from_magnitude(100, NULL, &e), "magnitude 100");
+    expect_st(OI_ERR_MAGNITUDE, oi_flux_from_magnitude((oi_real)-INFINITY, NULL, &e), "magnitude -inf");
+    (void)oi_magnitude_v((oi_real)NAN, NULL);
+    (void)oi_magnitude_v((oi_real)-1, NULL);
+    (void)oi_magnitude_v((oi_real)INFINITY, &bad_tsi);
+    (void)oi_magnitude_v((oi_real)3e38, NULL);
+    expect_quiet("magnitude_v of NaN, -1, inf, 3e38");
+    (void)oi_lambert_phase((oi_real)NAN);
+    (void)oi_lambert_phase((oi_real)INFINITY);
+    (void)oi_lambert_phase((oi_real)-3e38);
+    expect_quiet("lambert_phase");
+    (void)oi_angle(nan3, pt);
+    (void)oi_angle(zero, pt);
+    (void)oi_angle(big_sun, big_pt);
+    (void)oi_angle(NULL, pt);
+    expect_quiet("oi_angle");
+    (void)oi_cap_overlap((oi_real)NAN, 1, 1);
+    (void)oi_cap_overlap((oi_real)INFINITY, (oi_real)-INFINITY, (oi_real)3e38);
+    expect_quiet("cap_overlap");
+#ifndef OI_NO_MOON
+    (void)oi_moon_phase_law((oi_real)NAN);
+    (void)oi_moon_phase_law((oi_real)-3e38);
+    expect_quiet("moon_phase_law");
+#endif
+    (void)oi_status_name(-1000000);
+    (void)oi_flag_name(0xffffffffu);
+    expect_quiet("names");
+}
+
+#ifndef OI_NO_FACETS
+static void errors_shapes(void)
+{
+    oi_facet f, fs[2];
+    oi_shape sh;
+    const oi_real v[3] = {0, 0, 1}, nanv[3] = {(oi_real)NAN, 0, 1};
+    memset(&f, 0, sizeof f);
+    f.normal[2] = 1;
+    f.area_m2 = 1;
+    f.albedo_diffuse = (oi_real)0.5;
+    memset(&sh, 0, sizeof sh);
+    sh.facets = &f;
+    sh.n_facets = 1;
+    expect_st(OI_ERR_NULL, oi_shape_check(NULL), "shape_check NULL");
+    sh.facets = NULL;
+    expect_st(OI_ERR_NULL, oi_shape_check(&sh), "shape_check NULL facets");
+    sh.facets = &f;
+    sh.n_facets = 0;
+    expect_st(OI_ERR_SHAPE, oi_shape_check(&sh), "shape_check no facets");
+    sh.n_facets = OI_FACETS_MAX + 1;
+    expect_st(OI_ERR_SHAPE, oi_shape_check(&sh), "shape_check too many");
+    sh.n_facets = 2;
+    fs[0] = f;
+    fs[1] = f;
+    sh.facets = fs;
+    fs[1].normal[2] = (oi_real)NAN;
+    expect_st(OI_ERR_SHAPE, oi_shape_check(&sh), "shape_check NaN normal");
+    fs[1].normal[2] = 0;
+    expect_st(OI_ERR_SHAPE, oi_shape_check(&sh), "shape_check zero normal");
+    fs[1].normal[2] = (oi_real)3e38;
+    fs[1].normal[1] = (oi_real)-3e38;
+    expect_st(OI_OK, oi_shape_check(&sh), "shape_check huge normal");
+    fs[1] = f;
+    fs[1].area_m2 = (oi_real)-INFINITY;
+    expect_st(OI_ERR_SHAPE, oi_shape_check(&sh), "shape_check area");
+    fs[1] = f;
+    fs[1].albedo_diffuse = (oi_real)NAN;
+    expect_st(OI_ERR_SHAPE, oi_shape_check(&sh), "shape_check albedo NaN");
+    fs[1] = f;
+    fs[1].albedo_specular = (oi_real)0.9;
+    expect_st(OI_ERR_SHAPE, oi_shape_check(&sh), "shape_check albedo sum");
+    fs[1] = f;
+    fs[1].shininess = (oi_real)INFINITY;
+    expect_st(OI_ERR_SHAPE, oi_shape_check(&sh), "shape_check shininess");
+    fs[1] = f;
+    fs[1].normal[2] = (oi_real)NAN;
+    (void)oi_facet_brdf(&fs[1], v, v);
+    (void)oi_facet_brdf(&f, nanv, v);
+    fs[1].normal[2] = (oi_real)3e38;
+    (void)oi_facet_brdf(&fs[1], v, v);
+    (void)oi_facet_brdf(NULL, v, v);
+    expect_quiet("facet_brdf");
+}
+#endif
+
+static void errors_scene(void)
+{
+    oi_scene s;
+    oi_illum il;
+    oi_model bad_tsi, knocke, map;
+    static const float nan_map[1] = {NAN};
+#ifndef OI_NO_FACETS
+    oi_facet f;
+    oi_shape sh;
+    memset(&f, 0, sizeof f);
+    f.normal[2] = 1;
+    f.area_m2 = 1;
+    f.albedo_diffuse = (oi_real)0.5;
+    memset(&sh, 0, sizeof sh);
+    sh.facets = &f;
+    sh.n_facets = 1;
+#endif
+    memset(&bad_tsi, 0, sizeof bad_tsi);
+    bad_tsi.tsi_w_m2 = (oi_real)NAN;
+    memset(&knocke, 0, sizeof knocke);
+    knocke.albedo_model = OI_ALBEDO_KNOCKE;
+    memset(&map, 0, sizeof map);
+    map.albedo_model = OI_ALBEDO_MAP;
+    map.albedo_map = nan_map;
+    map.albedo_map_n_lat = 1;
+    map.albedo_map_n_lon = 1;
+    lit_scene(&s);
+    expect_st(OI_OK, oi_illuminate(&s, NULL, &il), "illuminate valid");
+    expect_st(OI_ERR_NULL, oi_illuminate(NULL, NULL, &il), "illuminate NULL");
+    expect_st(OI_ERR_MODEL, oi_illuminate(&s, &bad_tsi, &il), "illuminate model");
+    s.terms = 16u;
+    expect_st(OI_ERR_TERMS, oi_illuminate(&s, NULL, &il), "illuminate terms");
+    lit_scene(&s);
+    s.target_km[2] = (oi_real)INFINITY;
+    expect_st(OI_ERR_NONFINITE, oi_illuminate(&s, NULL, &il), "illuminate inf");
+    lit_scene(&s);
+    s.target_radius_m = (oi_real)NAN;
+    expect_st(OI_ERR_NONFINITE, oi_illuminate(&s, NULL, &il), "illuminate radius NaN");
+    lit_scene(&s);
+    s.earth_albedo = 2;
+    expect_st(OI_ERR_ALBEDO, oi_illuminate(&s, NULL, &il), "illuminate albedo");
+    lit_scene(&s);
+    s.target_radius_m = 0;
+    expect_st(OI_ERR_RADIUS, oi_illuminate(&s, NULL, &il), "illuminate radius 0");
+    lit_scene(&s);
+    s.target_km[0] = 0;
+    expect_st(OI_ERR_ZERO_VECTOR, oi_illuminate(&s, NULL, &il), "illuminate zero target");
+    lit_scene(&s);
+    s.observer_km[0] = (oi_real)3e38;
+    expect_st(OI_ERR_GEOMETRY, oi_illuminate(&s, NULL, &il), "illuminate observer far");
+    lit_scene(&s);
+    s.target_km[0] = 100;
+    expect_st(OI_ERR_BELOW_SURFACE, oi_illuminate(&s, NULL, &il), "illuminate target below");
+#ifndef OI_NO_FACETS
+    lit_scene(&s);
+    s.shape = &sh;
+    f.area_m2 = -1;
+    expect_st(OI_ERR_SHAPE, oi_illuminate(&s, NULL, &il), "illuminate bad facet");
+    f.area_m2 = 1;
+#ifdef OI_SINGLE_PRECISION
+    s.attitude_q[1] = (oi_real)1e-30; /* its square underflows */
+#else
+    s.attitude_q[1] = (oi_real)1e-300;
+#endif
+    expect_st(OI_ERR_SHAPE, oi_illuminate(&s, NULL, &il), "illuminate quaternion tiny");
+    s.attitude_q[1] = (oi_real)3e38;
+    expect_st(OI_ERR_SHAPE, oi_illuminate(&s, NULL, &il), "illuminate quaternion huge");
+    s.attitude_q[1] = (oi_real)NAN;
+    expect_st(OI_ERR_SHAPE, oi_illuminate(&s, NULL, &il), "illuminate quaternion NaN");
+    s.attitude_q[1] = 0;
+    s.observer_km[1] = 0;
+    expect_st(OI_ERR_OBSERVER_AT_TARGET, oi_illuminate(&s, NULL, &il), "illuminate shape at target");
+#endif
+#ifndef OI_NO_ALBEDO_MODELS
+    lit_scene(&s);
+    s.epoch_jd = (oi_real)NAN;
+    expect_st(OI_ERR_NONFINITE, oi_illuminate(&s, &knocke, &il), "illuminate epoch NaN");
+    s.epoch_jd = 1;
+    expect_st(OI_ERR_INPUT, oi_illuminate(&s, &knocke, &il), "illuminate epoch out");
+    lit_scene(&s);
+    s.earth_rotation_rad = (oi_real)-INFINITY;
+    expect_st(OI_ERR_NONFINITE, oi_illuminate(&s, &map, &il), "illuminate rotation inf");
+    s.earth_rotation_rad = (oi_real)1e30;
+    expect_st(OI_ERR_INPUT, oi_illuminate(&s, &map, &il), "illuminate rotation out");
+    s.earth_rotation_rad = 0;
+    expect_st(OI_ERR_ALBEDO, oi_illuminate(&s, &map, &il), "illuminate map NaN");
+#endif
+    lit_scene(&s);
+    s.sun_km[0] = (oi_real)1e5;
+    expect_st(OI_ERR_GEOMETRY, oi_illuminate(&s, NULL, &il), "illuminate Sun at Earth");
+    lit_scene(&s);
+    s.moon_km[0] = 7000;
+    s.moon_km[1] = 0;
+    expect_st(OI_ERR_GEOMETRY, oi_illuminate(&s, NULL, &il), "illuminate target in the Moon");
+    lit_scene(&s);
+    s.moon_km[1] = 10;
+    expect_st(OI_ERR_BELOW_SURFACE, oi_illuminate(&s, NULL, &il), "illuminate Moon below");
+    lit_scene(&s);
+    s.observer_km[1] = 0;
+    expect_st(OI_ERR_OBSERVER_AT_TARGET, oi_illuminate(&s, NULL, &il), "illuminate at target");
+    s.observer_km[1] = (oi_real)1e-30;
+    expect_st(OI_ERR_OBSERVER_AT_TARGET, oi_illuminate(&s, NULL, &il), "illuminate 1e-30 km away");
+    s.target_radius_m = (oi_real)3e38;
+    s.observer_km[1] = (oi_real)1e-30;
+    expect_st(OI_ERR_OBSERVER_AT_TARGET, oi_illuminate(&s, NULL, &il), "illuminate huge radius");
+}
+
+#ifndef OI_NO_EXPOSURE
+static void errors_exposure(void)
+{
+    const oi_camera *c0 = oi_camera_builtin(0);
+    oi_camera bad = *c0;
+    oi_expose_in in, in1;
+    oi_expose_goal g;
+    oi_exposure e;
+    oi_scene s;
+    oi_illum il, il1;
+    oi_model bad_tsi;
+    int st[2];
+    memset(&in, 0, sizeof in);
+    in.flux_w_m2 = (oi_real)1e-12;
+    memset(&g, 0, sizeof g);
+    memset(&bad_tsi, 0, sizeof bad_tsi);
+    bad_tsi.tsi_w_m2 = -1;
+    bad.aperture_m = -1;
+    expect_st(OI_OK, oi_expose(c0, &in, NULL, &e), "expose valid");
+    expect_st(OI_ERR_NULL, oi_expose(NULL, &in, NULL, &e), "expose NULL");
+    expect_st(OI_ERR_CAMERA, oi_expose(&bad, &in, NULL, &e), "expose camera");
+    bad = *c0;
+    bad.times_s[1] = (oi_real)NAN;
+    expect_st(OI_ERR_CAMERA, oi_expose(&bad, &in, NULL, &e), "expose camera time NaN");
+    bad = *c0;
+    bad.full_well_e = (oi_real)INFINITY;
+    expect_st(OI_ERR_CAMERA, oi_expose(&bad, &in, NULL, &e), "expose camera well inf");
+    g.fill = 2;
+    expect_st(OI_ERR_INPUT, oi_expose(c0, &in, &g, &e), "expose goal fill");
+    g.fill = (oi_real)NAN;
+    expect_st(OI_ERR_INPUT, oi_expose(c0, &in, &g, &e), "expose goal NaN");
+    g.fill = 0;
+    g.sky = 1u << 20;
+    expect_st(OI_ERR_FLAGS, oi_expose(c0, &in, &g, &e), "expose goal sky");
+    g.sky = 0;
+    in1 = in;
+    in1.flux_w_m2 = (oi_real)NAN;
+    expect_st(OI_ERR_NONFINITE, oi_expose(c0, &in1, NULL, &e), "expose flux NaN");
+    in1.flux_w_m2 = -1;
+    expect_st(OI_ERR_INPUT, oi_expose(c0, &in1, NULL, &e), "expose flux < 0");
+    in1.flux_w_m2 = (oi_real)3e38;
+    expect_st(OI_ERR_MAGNITUDE, oi_expose(c0, &in1, NULL, &e), "expose flux bright");
+    in1 = in;
+    in1.background_w_m2_sr = (oi_real)3e38;
+    expect_st(OI_ERR_INPUT, oi_expose(c0, &in1, NULL, &e), "expose background");
+    in1 = in;
+    in1.flags = 1u << 30;
+    expect_st(OI_ERR_FLAGS, oi_expose(c0, &in1, NULL, &e), "expose flags");
+    in1 = in;
+    in1.rate_rad_s = (oi_real)-INFINITY;
+    expect_st(OI_ERR_NONFINITE, oi_expose(c0, &in1, NULL, &e), "expose rate inf");
+    in1.rate_rad_s = (oi_real)3e38;
+    expect_st(OI_ERR_INPUT, oi_expose(c0, &in1, NULL, &e), "expose rate");
+    g.has_sensor_temp = 1;
+    g.sensor_temp_c = (oi_real)NAN;
+    expect_st(OI_ERR_NONFINITE, oi_expose(c0, &in, &g, &e), "expose temperature NaN");
+    g.sensor_temp_c = (oi_real)3e38;
+    expect_st(OI_ERR_INPUT, oi_expose(c0, &in, &g, &e), "expose temperature");
+    g.has_sensor_temp = 0;
+
+    lit_scene(&s);
+    s.terms = OI_TERM_SUN | OI_TERM_EARTH;
+    expect_st(OI_OK, oi_illuminate(&s, NULL, &il), "illuminate for expose_scene");
+    expect_st(OI_OK, oi_expose_scene(c0, &s, &il, NULL, NULL, &e), "expose_scene valid");
+    s.has_observer = 0;
+    expect_st(OI_ERR_NULL, oi_expose_scene(c0, &s, &il, NULL, NULL, &e), "expose_scene no observer");
+    s.has_observer = 1;
+    expect_st(OI_ERR_MODEL, oi_expose_scene(c0, &s, &il, &bad_tsi, NULL, &e), "expose_scene model");
+    s.observer_km[2] = (oi_real)NAN;
+    expect_st(OI_ERR_NONFINITE, oi_expose_scene(c0, &s, &il, NULL, NULL, &e), "expose_scene NaN");
+    s.observer_km[2] = 0;
+    s.target_albedo = -1;
+    expect_st(OI_ERR_ALBEDO, oi_expose_scene(c0, &s, &il, NULL, NULL, &e), "expose_scene albedo");
+    s.target_albedo = (oi_real)NAN;
+    expect_st(OI_ERR_ALBEDO, oi_expose_scene(c0, &s, &il, NULL, NULL, &e), "expose_scene albedo NaN");
+    s.target_albedo = (oi_real)0.2;
+    il1 = il;
+    il1.e_sun = (oi_real)INFINITY;
+    expect_st(OI_ERR_NONFINITE, oi_expose_scene(c0, &s, &il1, NULL, NULL, &e), "expose_scene e_sun");
+    il1 = il;
+    il1.flux_obs = -1;
+    expect_st(OI_ERR_INPUT, oi_expose_scene(c0, &s, &il1, NULL, NULL, &e), "expose_scene flux < 0");
+    il1 = il;
+    il1.flux_obs = (oi_real)3e38;
+    il1.e_sun = (oi_real)3e38;
+    expect_st(OI_ERR_MAGNITUDE, oi_expose_scene(c0, &s, &il1, NULL, NULL, &e), "expose_scene huge flux");
+    bad = *c0;
+    bad.fov_rad = (oi_real)NAN;
+    expect_st(OI_ERR_CAMERA, oi_expose_scene(&bad, &s, &il, NULL, NULL, &e), "expose_scene camera");
+    s.observer_km[0] = s.observer_km[1] = s.observer_km[2] = 0;
+    expect_st(OI_ERR_ZERO_VECTOR, oi_expose_scene(c0, &s, &il, NULL, NULL, &e), "expose_scene zero");
+    lit_scene(&s);
+    s.terms = OI_TERM_SUN | OI_TERM_EARTH;
+    s.target_vel_km_s[0] = (oi_real)NAN;
+    expect_st(OI_ERR_NONFINITE, oi_expose_scene(c0, &s, &il, NULL, NULL, &e), "expose_scene velocity NaN");
+    s.target_vel_km_s[0] = (oi_real)3e38;
+    expect_st(OI_ERR_INPUT, oi_expose_scene(c0, &s, &il, NULL, NULL, &e), "expose_scene velocity");
+    s.target_vel_km_s[0] = 0;
+    s.observer_km[0] = 10;
+    expect_st(OI_ERR_BELOW_SURFACE, oi_expose_scene(c0, &s, &il, NULL, NULL, &e), "expose_scene below");
+    lit_scene(&s);
+    s.terms = OI_TERM_SUN | OI_TERM_EARTH;
+    s.observer_km[1] = 0;
+    expect_st(OI_ERR_OBSERVER_AT_TARGET, oi_expose_scene(c0, &s, &il, NULL, NULL, &e), "expose_scene at target");
+    s.observer_km[1] = 50;
+    g.snr_min = -1;
+    expect_st(OI_ERR_INPUT, oi_expose_scene(c0, &s, &il, NULL, &g, &e), "expose_scene goal");
+    g.snr_min = 0;
+
+    /* the batches' own errors */
+    expect_st(OI_ERR_INPUT, oi_expose_batch(-1, c0, &in, NULL, &e, st), "expose_batch n < 0");
+    expect_st(OI_ERR_NULL, oi_expose_batch(1, c0, NULL, NULL, &e, st), "expose_batch NULL");
+    expect_st(OI_ERR_CAMERA, oi_expose_batch(1, &bad, &in, NULL, &e, st), "expose_batch camera");
+    expect_st(OI_ERR_FLAGS, oi_expose_batch_outputs(1, c0, &in, NULL, 1u << 20, &e, st), "expose_batch mask");
+    in1 = in;
+    in1.flux_w_m2 = (oi_real)NAN;
+    expect_st(1, oi_expose_batch(1, c0, &in1, NULL, &e, st), "expose_batch NaN row");
+    expect_st(OI_ERR_MODEL, oi_expose_scene_batch(1, c0, &s, &il, &bad_tsi, NULL, &e, st), "expose_scene_batch model");
+    s.observer_km[1] = 0;
+    expect_st(1, oi_expose_scene_batch(1, c0, &s, &il, NULL, NULL, &e, st), "expose_scene_batch at target");
+    expect_st(1, oi_illuminate_batch(1, &s, NULL, &il, st), "illuminate_batch at target");
+    expect_st(OI_ERR_MODEL, oi_illuminate_batch(1, &s, &bad_tsi, &il, st), "illuminate_batch model");
+    expect_st(OI_ERR_FLAGS, oi_illuminate_batch_outputs(1, &s, NULL, 1u << 20, &il, st), "illuminate_batch mask");
+}
+#endif
+
+static void errors_batches(void)
+{
+    const oi_real sun1[6] = {(oi_real)1.496e8, 0, 0, 0, 0, 0}, pt[6] = {7000, 0, 0, (oi_real)NAN, 0, 0};
+    const oi_real th[2] = {1, (oi_real)NAN}, hh[2] = {500, -1};
+    oi_shadow sh[2];
+    oi_real ph[2], ps[2];
+    int st[2];
+    expect_st(OI_ERR_INPUT, oi_sun_fraction_batch(-1, sun1, pt, NULL, OI_BATCH_ALL, sh, st), "sun_fraction_batch n");
+    expect_st(OI_ERR_NULL, oi_sun_fraction_batch(2, NULL, pt, NULL, OI_BATCH_ALL, sh, st), "sun_fraction_batch NULL");
+    expect_st(OI_ERR_FLAGS, oi_sun_fraction_batch(2, sun1, pt, NULL, 1u << 20, sh, st), "sun_fraction_batch mask");
+    expect_st(1, oi_sun_fraction_batch(2, sun1, pt, NULL, OI_BATCH_ALL, sh, st), "sun_fraction_batch rows");
+    expect_st(1, oi_earthshine_batch(2, th, hh, NULL, ph, ps, st), "earthshine_batch rows");
+    expect_st(OI_ERR_INPUT, oi_earthshine_batch(2, th, hh, NULL, ph, (oi_real *)th, st), "earthshine_batch overlap");
+}
+
+/* Random hostile inputs: each component from a list of edges (zeros, NaN,
+ * infinities, subnormals, the largest values, the Earth's radius): any
+ * status, never a harmful flag. */
+static void hostile_sweep(void)
+{
+    /* in the build's precision: no conversion of the test's raises a flag */
+#ifdef OI_SINGLE_PRECISION
+    static const oi_real edges[] = {0.0f, -0.0f, 1.0f, -1.0f, 6378.137f, 6378.138f, 7000.0f,
+                                    42164.0f, 1.496e8f, 1e-40f, -1e-40f, 1e-30f, 1e12f, -1e12f,
+                                    1e13f, -1e13f, NAN, INFINITY, -INFINITY, 1e13f, 695700.0f,
+                                    0.5f};
+#else
+    static const oi_real edges[] = {0.0, -0.0, 1.0, -1.0, 6378.137, 6378.1370001, 7000.0, 42164.0,
+                                    1.496e8, 1e-310, -1e-310, 1e-30, 1e12, -1e12, 1e13, -1e13,
+                                    NAN, INFINITY, -INFINITY, 1e13, 695700.0, 0.5};
+#endif
+    const int ne = (int)(sizeof edges / sizeof edges[0]);
+    uint64_t seed = 20261207u;
+    int k, i;
+    for (k = 0; k < 3000; k++) {
+        oi_scene s;
+        oi_illum il;
+        oi_shadow sh;
+        oi_real phi1, psi1, o[3];
+        lit_scene(&s);
+        for (i = 0; i < 3; i++) {
+            if (lcg01(&seed) < 0.3) s.target_km[i] = edges[(int)(lcg01(&seed) * ne)];
+            if (lcg01(&seed) < 0.3) s.observer_km[i] = edges[(int)(lcg01(&seed) * ne)];
+            if (lcg01(&seed) < 0.2) s.sun_km[i] = edges[(int)(lcg01(&seed) * ne)];
+            if (lcg01(&seed) < 0.2) s.moon_km[i] = edges[(int)(lcg01(&seed) * ne)];
+            if (lcg01(&seed) < 0.1) s.target_vel_km_s[i] = edges[(int)(lcg01(&seed) * ne)];
+            o[i] = edges[(int)(lcg01(&seed) * ne)];
+        }
+        if (lcg01(&seed) < 0.2) s.target_radius_m = edges[(int)(lcg01(&seed) * ne)];
+        if (lcg01(&seed) < 0.1) s.earth_albedo = edges[(int)(lcg01(&seed) * ne)];
+        feclearexcept(FE_ALL_EXCEPT);
+        (void)oi_illuminate(&s, NULL, &il);
+        expect_quiet("hostile oi_illuminate");
+        feclearexcept(FE_ALL_EXCEPT);
+        (void)oi_sun_fraction(s.sun_km, s.target_km, NULL, &sh);
+        expect_quiet("hostile oi_sun_fraction");
+        feclearexcept(FE_ALL_EXCEPT);
+        (void)oi_earthshine(o[0], o[1], NULL, &phi1, &psi1);
+        expect_quiet("hostile oi_earthshine");
+        feclearexcept(FE_ALL_EXCEPT);
+        (void)oi_earthshine_sphere(o[0], o[1], o, NULL, &phi1);
+        expect_quiet("hostile oi_earthshine_sphere");
+#ifndef OI_NO_EXPOSURE
+        {
+            oi_exposure e;
+            oi_expose_in in;
+            memset(&in, 0, sizeof in);
+            in.flux_w_m2 = edges[(int)(lcg01(&seed) * ne)];
+            in.background_w_m2_sr = edges[(int)(lcg01(&seed) * ne)];
+            in.rate_rad_s = lcg01(&seed) < 0.5 ? 0 : edges[(int)(lcg01(&seed) * ne)];
+            feclearexcept(FE_ALL_EXCEPT);
+            (void)oi_expose(oi_camera_builtin(k & 1), &in, NULL, &e);
+            expect_quiet("hostile oi_expose");
+            if (lcg01(&seed) < 0.3) il.e_sun = edges[(int)(lcg01(&seed) * ne)];
+            if (lcg01(&seed) < 0.3) il.flux_obs = edges[(int)(lcg01(&seed) * ne)];
+            feclearexcept(FE_ALL_EXCEPT);
+            (void)oi_expose_scene(oi_camera_builtin(k & 1), &s, &il, NULL, NULL, &e);
+            expect_quiet("hostile oi_expose_scene");
+        }
+#endif
+    }
+}
+
+static void run_errors(void)
+{
+    feclearexcept(FE_ALL_EXCEPT);
+    errors_geometry();
+#ifndef OI_NO_FACETS
+    errors_shapes();
+#endif
+    errors_scene();
+#ifndef OI_NO_EXPOSURE
+    errors_exposure();
+#endif
+    errors_batches();
+    hostile_sweep();
+}
+
+static void test_error_paths(void **state)
+{
+    (void)state;
+    error_mismatches = 0;
+    run_errors();
+    check_int(0, error_mismatches, "error paths with a wrong status or a harmful flag");
+}
+
+static void test_error_paths_trapped(void **state)
+{
+    (void)state;
+#if defined(__GLIBC__) && (defined(__x86_64__) || defined(__i386__))
+    error_mismatches = 0;
+    assert_true(feenableexcept(HARMFUL) != -1);
+    run_errors();
+    (void)fedisableexcept(HARMFUL);
+    check_int(0, error_mismatches, "error paths with traps enabled");
+#else
+    printf("# skip traps: feenableexcept needs glibc on x86\n");
+#endif
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_flags_clear),
         cmocka_unit_test(test_traps_enabled),
+        cmocka_unit_test(test_error_paths),
+        cmocka_unit_test(test_error_paths_trapped),
     };
     make_scenes();
     return cmocka_run_group_tests(tests, NULL, NULL);

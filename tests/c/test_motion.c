@@ -125,7 +125,7 @@ static void test_moving_choice_bruteforce(void **state)
         oi_expose_in in;
         oi_exposure got, e;
         int nt = 1 + (int)(lcg01(&rng) * 10), ng = 1 + (int)(lcg01(&rng) * 4), ti, gi, n;
-        int found = 0, bt = 0, bg = 0, lt = 0, lg = 0;
+        int found = 0, bt = 0, bg = 0, lt = 0, lg = 0, faint, low_bg_full = 0;
         double best = 0, low = 0, maxsnr = 0, px_s, t = 1e-3 * (1 + lcg01(&rng));
         unsigned want_flags = 0;
         c.n_times = nt;
@@ -175,18 +175,23 @@ static void test_moving_choice_bruteforce(void **state)
                 }
                 if ((gi == 0 && ti == 0) || e.fill < low) {
                     low = e.fill;
+                    low_bg_full = !(e.background_e < e.saturation_e);
                     lt = ti;
                     lg = gi;
                 }
                 if (gi == ng - 1 && e.snr > maxsnr) maxsnr = e.snr;
             }
         }
+        faint = !(maxsnr >= 5);
         if (!found) {
             bt = lt;
             bg = lg;
-            if (!(low < 1)) want_flags |= OI_FLAG_SATURATED;
+            /* a full well: the target's, unless the background alone fills
+             * it or the target is too faint (include/orbillum.h) */
+            if (!(low < 1))
+                want_flags |= faint || low_bg_full ? OI_FLAG_BACKGROUND_SATURATED : OI_FLAG_SATURATED;
         }
-        if (!(maxsnr >= 5)) want_flags |= OI_FLAG_TOO_FAINT;
+        if (faint) want_flags |= OI_FLAG_TOO_FAINT;
         check_int(bt, got.time_index, "time index");
         check_int(bg, got.gain_index, "gain index");
         check_int((long)want_flags, (long)got.flags, "flags");

@@ -9,6 +9,8 @@ import pytest
 import orbillum
 L = orbillum.L
 
+# include/orbillum.h (the binding's constants, python/orbillum/_lib.py, predate it)
+OI_FLAG_BACKGROUND_SATURATED = 4096
 RE = 6378.137
 
 
@@ -51,8 +53,8 @@ def test_mask_fields(mask):
         got = np.ascontiguousarray(part[f])
         assert np.array_equal(got.view(np.uint8), want.view(np.uint8)), f
     drop = 0
-    if not mask & L.OI_EXPOSE_SETTING:
-        drop |= L.OI_FLAG_SATURATED
+    if not mask & L.OI_EXPOSE_SETTING:  # the setting's two well flags
+        drop |= L.OI_FLAG_SATURATED | OI_FLAG_BACKGROUND_SATURATED
     if not mask & L.OI_EXPOSE_FAINT:
         drop |= L.OI_FLAG_TOO_FAINT
     if not mask & (L.OI_EXPOSE_SETTING | L.OI_EXPOSE_FAINT):

@@ -22,7 +22,7 @@ HEADER = ("id,status,sun_fraction,sun_fraction_atm,e_sun,e_earth,e_moon,earth_th
           "earth_h_km,flux_obs,mag_v,exposure_s,gain,snr,flags,detect_margin_mag,e_sky")
 NUMERIC = HEADER.split(",")[2:14] + ["detect_margin_mag", "e_sky"]
 FLAG_NAMES = {"sun_exclusion", "earth_in_fov", "eclipsed", "too_faint", "saturated",
-              "penumbra", "occulted", "resolved", "moon_in_fov", "trailed"}
+              "penumbra", "occulted", "resolved", "moon_in_fov", "trailed", "background_saturated"}
 AU = 149597870.7
 TSI = 1361.0
 

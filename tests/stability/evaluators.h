@@ -169,7 +169,11 @@ static int ev_camera(const double *in, double *got, int *region)
     got[2] = (double)e.peak_e;
     got[3] = (double)e.fill;
     got[4] = (double)e.snr;
-    *region = e.time_index * 100 + e.gain_index * 10 + (int)((e.flags >> 3) & 3u);
+    /* the choice and two bits: TOO_FAINT, and a full well (fill >= 1:
+     * SATURATED or, the background's, BACKGROUND_SATURATED; which one is
+     * tests/c/test_flag_rules.c's), as the vectors were generated */
+    *region = e.time_index * 100 + e.gain_index * 10 + ((e.flags & OI_FLAG_TOO_FAINT) ? 1 : 0) +
+              ((e.flags & (OI_FLAG_SATURATED | OI_FLAG_BACKGROUND_SATURATED)) ? 2 : 0);
     return st;
 }
 #endif
