@@ -42,7 +42,7 @@ PLAN_SRC := $(sort $(wildcard planner/*.c))
 PLAN := $(BUILDDIR)/oi-plan
 QUICKSTART := $(BUILDDIR)/quickstart
 
-.PHONY: all lib demo test test-c test-py test-layers clean help
+.PHONY: all lib demo test test-c test-py test-py-0 test-py-1 test-layers clean help
 .DEFAULT_GOAL := all
 
 all: lib $(PLAN) $(QUICKSTART) ## build the library (both precisions), the planner and the README example
@@ -109,8 +109,13 @@ test-c: $(CTEST_double) $(CTEST_float) $(CTEST_PORTABLE) $(PLAN) $(QUICKSTART) #
 	@set -e; for t in $(CTEST_double) $(CTEST_float) $(CTEST_PORTABLE); do echo "== $$t"; $$t; done
 	$(QUICKSTART)
 
-test-py: deps-py all ## Python tests (baker, references, planner batch interface)
-	$(PY) -m pytest -q tests/python
+# The Python suite in two shards (every other file of the sorted list), so that `make -j2 test`
+# keeps both cores busy; `make test-py` runs both, `make test-py-0` or `test-py-1` one.
+PY_TEST_FILES := $(sort $(wildcard tests/python/test_*.py))
+py_shard = $(foreach i,$(shell seq $(1) 2 $(words $(PY_TEST_FILES))),$(word $(i),$(PY_TEST_FILES)))
+test-py: test-py-0 test-py-1 ## Python tests (baker, references, planner, binding, catalog)
+test-py-0 test-py-1: test-py-%: deps-py all
+	$(PY) -m pytest -q -p no:cacheprovider $(call py_shard,$(shell echo $$(($* + 1))))
 
 # The layer rule (docs/architecture.md): every include and call of src/<layer>/ goes down, no
 # two files need each other; on the objects of both precisions.

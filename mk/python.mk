@@ -41,7 +41,7 @@ $(VENV)/.orbillum-binding: $(PY_BINDING_SRC) $(RT_SRC) $(RT_HDR) | deps-py
 	@touch $@
 
 # The Python tests exercise the installed binding.
-test-py: binding
+test-py-0 test-py-1: binding
 
 pass-example: all binding ## shipped TLE case -> pass plan CSV + plot + rendered view (build/pass-example/)
 	@mkdir -p $(PASS_DIR)
@@ -73,5 +73,5 @@ $(ORI_TEST_SO): $(OBJ_pic) tests/stability/ori_test_abi.c $(RT_HDR)
 	$(CC) $(RT_CFLAGS) -fPIC -shared $(OBJ_pic) tests/stability/ori_test_abi.c -lm -o $@
 
 ori-test-so: $(ORI_TEST_SO)
-test-py: $(ORI_TEST_SO)
+test-py-0 test-py-1: $(ORI_TEST_SO)
 .PHONY: ori-test-so
