@@ -254,6 +254,11 @@ const STAB_CAMERA = { aperture_m: 0.15, focal_length_m: 1.2, pixel_pitch_m: 5.5e
   psf_peak_fraction: 0.3, fov_rad: 0.02, sun_exclusion_rad: 0.5, times_s: [1e-4, 1e-3, 1e-2, 0.1, 1, 10],
   gains: [1, 4, 16], read_noise_e: [10, 4, 2] }; // gen_vectors.py CAM, as evaluators.h test_camera
 
+// the exposure's two bits of the stability vectors' region (tests/stability/evaluators.h):
+// TOO_FAINT, and a full well (SATURATED or, the background's, BACKGROUND_SATURATED)
+const wellBits = (flags) => ((flags & oi.c.OI_FLAG_TOO_FAINT) ? 1 : 0) +
+  ((flags & (oi.c.OI_FLAG_SATURATED | oi.c.OI_FLAG_BACKGROUND_SATURATED)) ? 2 : 0);
+
 const JS_EVAL = {
   phase: (v) => [0, -1, [oi.x.oi_lambert_phase(v[0])]],
   moon: (v) => [0, -1, [oi.x.oi_moon_phase_law(v[0])]],
@@ -279,7 +284,7 @@ const JS_EVAL = {
   camera: (v) => {
     const cam = oi.writeCamera(STAB_CAMERA);
     const { status, expo: e } = oi.expose(cam, v[0], v[1]);
-    return [status, e.time_index * 100 + e.gain_index * 10 + ((e.flags >>> 3) & 3), [e.signal_e, e.background_e, e.peak_e, e.fill, e.snr]];
+    return [status, e.time_index * 100 + e.gain_index * 10 + wellBits(e.flags), [e.signal_e, e.background_e, e.peak_e, e.fill, e.snr]];
   },
 };
 
@@ -298,7 +303,7 @@ const shadowRow = ({ status, shadow: s }) => [status, s.region,
   [s.fraction, s.sun_radius_rad, s.earth_radius_rad, s.separation_rad, s.sun_distance_km, s.fraction_ld]];
 const illumRow = ({ status, illum: o }) => [status > 0 ? 0 : status, -1,
   [o.e_sun, o.e_earth, o.earth_theta, o.earth_h_km, o.flux_sun, o.mag_v, o.flux_obs]];
-const expoRow = ({ status, expo: e }) => [status, e.time_index * 100 + e.gain_index * 10 + ((e.flags >>> 3) & 3),
+const expoRow = ({ status, expo: e }) => [status, e.time_index * 100 + e.gain_index * 10 + wellBits(e.flags),
   [e.signal_e, e.background_e, e.peak_e, e.fill, e.snr, e.exposure_s, e.sun_angle_rad, e.background_w_m2_sr,
     e.detect_margin_mag]];
 const sunBatch = (outputs) => (v, i, all) => batchRow(`shadow ${outputs}`, all, i, (a) =>

@@ -42,10 +42,10 @@ that it reports it):
    sun_moon_hidden > 0; sun_exclusion iff sun_angle_rad < the camera's
    sun_exclusion_rad; glint iff a shape's flux_specular > flux_obs / 2 and not
    occulted (never for the sphere); occulted implies no signal and too_faint;
-   saturated iff the chosen setting's fill >= 1, and then it is the shortest
-   time at the lowest gain; moon_in_fov only with the sky word moon and the
-   Moon term. (Not tested: too_faint against saturated: the
-   header does not yet say whether they exclude each other.)
+   a full well (the chosen setting's fill >= 1) is exactly one of saturated
+   and background_saturated, and then the shortest time at the lowest gain;
+   never saturated and too_faint; moon_in_fov only with the sky word moon and
+   the Moon term (include/orbillum/camera.h, "Flags with one meaning each").
 """
 import itertools
 
@@ -259,8 +259,13 @@ def flag_violations(x, cam, shape, sky, terms):
             & ~has(L.OI_FLAG_OCCULTED)),
         "occulted: no signal, too faint": ~has(L.OI_FLAG_OCCULTED) | (
             (x["signal_e"] == 0) & has(L.OI_FLAG_TOO_FAINT)),
-        "saturated iff fill >= 1": has(L.OI_FLAG_SATURATED) == (x["fill"] >= 1),
-        "saturated at the shortest time, lowest gain": ~has(L.OI_FLAG_SATURATED) | (
+        "a full well (fill >= 1) is saturated or background_saturated": (
+            has(L.OI_FLAG_SATURATED) | has(L.OI_FLAG_BACKGROUND_SATURATED)) == (x["fill"] >= 1),
+        "never saturated and background_saturated": ~(
+            has(L.OI_FLAG_SATURATED) & has(L.OI_FLAG_BACKGROUND_SATURATED)),
+        "never saturated and too_faint": ~(has(L.OI_FLAG_SATURATED) & has(L.OI_FLAG_TOO_FAINT)),
+        "a full well at the shortest time, lowest gain": ~(
+            has(L.OI_FLAG_SATURATED) | has(L.OI_FLAG_BACKGROUND_SATURATED)) | (
             (x["time_index"] == 0) & (x["gain_index"] == 0)),
         "moon_in_fov only with sky moon and the Moon term": ~has(L.OI_FLAG_MOON_IN_FOV) | (
             bool(orbillum.sky_mask(sky) & L.OI_SKY_MOON) and "moon" in terms),
@@ -467,7 +472,7 @@ def test_the_properties_can_fail(grid):
             LIT, x["flags"][LIT] ^ np.uint32(L.OI_FLAG_GLINT)),
         "occulted": lambda x: x["flags"].__setitem__(
             LIT, x["flags"][LIT] | np.uint32(L.OI_FLAG_OCCULTED)),
-        "saturated iff": lambda x: x["fill"].__setitem__(GEO, 1.0),
+        "a full well": lambda x: x["fill"].__setitem__(GEO, 1.0),
         "moon_in_fov": lambda x: x["flags"].__setitem__(
             GEO, x["flags"][GEO] | np.uint32(L.OI_FLAG_MOON_IN_FOV)),
     }

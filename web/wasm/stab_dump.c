@@ -163,6 +163,15 @@ static void dump_illum_batch(const char *name, int masked, unsigned outputs)
 }
 
 #ifndef OI_NO_EXPOSURE
+/* The exposure's two bits of the region code, as ev_camera's
+ * (tests/stability/evaluators.h): TOO_FAINT, and a full well (SATURATED or,
+ * the background's, BACKGROUND_SATURATED). */
+static int well_bits(unsigned flags)
+{
+    return ((flags & OI_FLAG_TOO_FAINT) ? 1 : 0) +
+           ((flags & (OI_FLAG_SATURATED | OI_FLAG_BACKGROUND_SATURATED)) ? 2 : 0);
+}
+
 /* The exposure's outputs of a row and its region code (as ev_camera). */
 static void expose_line(const char *name, size_t i)
 {
@@ -171,7 +180,7 @@ static void expose_line(const char *name, size_t i)
                            (double)e->fill, (double)e->snr, (double)e->exposure_s,
                            (double)e->sun_angle_rad, (double)e->background_w_m2_sr,
                            (double)e->detect_margin_mag};
-    line_of(name, i, b_st[i], e->time_index * 100 + e->gain_index * 10 + (int)((e->flags >> 3) & 3u),
+    line_of(name, i, b_st[i], e->time_index * 100 + e->gain_index * 10 + well_bits(e->flags),
             got, 9);
 }
 
