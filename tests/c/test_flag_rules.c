@@ -18,6 +18,7 @@
 #include "orbillum.h"
 #include "oi_test_util.h"
 
+#ifndef OI_NO_EXPOSURE
 #define RE 6378.137
 #define AU 149597870.7
 
@@ -237,3 +238,11 @@ int main(void)
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
+
+#else
+int main(void)
+{
+    printf("skip test_flag_rules: OI_NO_EXPOSURE removes the exposure and its flags\n");
+    return 0;
+}
+#endif /* OI_NO_EXPOSURE */
