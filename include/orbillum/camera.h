@@ -335,7 +335,8 @@ int oi_expose(const oi_camera *camera, const oi_expose_in *in,
  *      atmosphere; not on a Moon in front, Note 8), the background adds the
  *      limb's mean radiance seen from the observer, e_sky(observer) / Omega
  *      (Omega the solid angle of that ring; an estimate, see
- *      docs/skylight.md); the resolved bound (Note 5) counts e_sky.
+ *      docs/skylight.md); the resolved bound (Note 5) counts e_sky. None
+ *      with model->no_atmosphere (no air to scatter).
  *   4. OI_FLAG_OCCULTED when the Earth lies between the observer and the
  *      target: the target's flux is then taken as 0 (TOO_FAINT follows).
  *   5. Resolved target: no pixel can collect more than a Lambertian surface

@@ -24,7 +24,8 @@ extern "C" {
 #define OI_TERM_EARTH (2u)
 #define OI_TERM_MOON  (4u)
 /* Sunlight scattered by the atmosphere towards the target (docs/skylight.md):
- * opt-in, not in OI_TERM_ALL or the defaults (removed by OI_NO_SKYLIGHT). */
+ * opt-in, not in OI_TERM_ALL or the defaults (removed by OI_NO_SKYLIGHT);
+ * 0 with oi_model.no_atmosphere. */
 #define OI_TERM_SKY   (8u)
 #define OI_TERM_ALL   (OI_TERM_SUN | OI_TERM_EARTH | OI_TERM_MOON)
 
@@ -114,7 +115,9 @@ typedef struct oi_model {
     int earth_model;          /* OI_EARTH_TABLE or OI_EARTH_LAMBERT */
     int moon_model;           /* OI_MOON_PHASE_LAW or OI_MOON_LAMBERT */
     int limb_darkening;       /* OI_LIMB_UNIFORM or OI_LIMB_DARKENED */
-    int no_atmosphere;        /* nonzero: as if the Earth had no atmosphere */
+    int no_atmosphere;        /* nonzero: as if the Earth had no atmosphere (no
+                                 refracted sunlight, no scattered sunlight:
+                                 OI_TERM_SKY then adds nothing) */
     const oi_earth_table *earth_table; /* earthshine table; NULL: oi_earth_table_default() */
     const oi_atm_table *atm_table;     /* atmosphere table; NULL: oi_atm_table_default() */
     int earth_reflection;     /* OI_EARTH_REFLECT_MOMENTS, _MEAN or _TABLE */

@@ -120,19 +120,15 @@ typedef struct oi_illum {
  *          OI_ERR_MODEL, OI_ERR_RADIUS  the model is invalid (see oi_model)
  *          OI_ERR_TERMS      terms has bits outside OI_TERM_ALL (or
  *                            OI_TERM_MOON in a build with OI_NO_MOON)
- *          OI_ERR_NONFINITE  a component of a position read, an albedo or
- *                            target_radius_m NaN or infinite
- *          OI_ERR_ALBEDO     earth_albedo or target_albedo outside [0, 1]
+ *          OI_ERR_NONFINITE  a component of a position read NaN or infinite
+ *          then earth_albedo, then target_albedo:
+ *          OI_ERR_NONFINITE  the albedo NaN or infinite
+ *          OI_ERR_ALBEDO     the albedo outside [0, 1]
+ *          OI_ERR_NONFINITE  target_radius_m NaN or infinite
  *          OI_ERR_RADIUS     target_radius_m <= 0
  *          OI_ERR_ZERO_VECTOR  a position read is the zero vector
  *          OI_ERR_GEOMETRY   a position read farther than OI_POSITION_MAX_KM
  *          OI_ERR_BELOW_SURFACE  |target| or |observer| <= earth_radius_km
- *          OI_ERR_SHAPE      scene->shape fails oi_shape_check (its
- *                            OI_ERR_NULL for NULL facets included), the
- *                            scene's target_albedo plus a facet's
- *                            albedo_specular above 1 (diffuse_from_scene),
- *                            or a bad attitude_q (see oi_scene); any shape
- *                            in a build with OI_NO_FACETS
  *          OI_ERR_NONFINITE  with OI_TERM_EARTH: epoch_jd (OI_ALBEDO_KNOCKE)
  *                            or earth_rotation_rad (OI_ALBEDO_MAP) NaN or
  *                            infinite
@@ -140,6 +136,12 @@ typedef struct oi_illum {
  *                            [OI_EPOCH_JD_MIN, OI_EPOCH_JD_MAX] (knocke),
  *                            |earth_rotation_rad| > OI_EARTH_ROTATION_MAX_RAD
  *                            (map)
+ *          OI_ERR_SHAPE      scene->shape fails oi_shape_check (its
+ *                            OI_ERR_NULL for NULL facets included), the
+ *                            scene's target_albedo plus a facet's
+ *                            albedo_specular above 1 (diffuse_from_scene),
+ *                            or a bad attitude_q (see oi_scene); any shape
+ *                            in a build with OI_NO_FACETS
  *          then the Sun seen from the target (oi_sun_fraction's statuses:
  *          OI_ERR_GEOMETRY for a Sun touching the Earth or the target inside
  *          the Sun), the Sun seen from the Moon (the same; the Moon below the

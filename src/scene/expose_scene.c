@@ -402,6 +402,8 @@ static OI_NOINLINE oi_real sky_background(const oi_scene *scene, const oi_model 
 {
     const oi_sky_table *t;
     oi_real r[2], top, fl, ob, b2, theta, e, psi, st, sf, ct, cf, d_sun;
+    /* without an atmosphere the limb holds no scattered light */
+    if (model != NULL && model->no_atmosphere) return 0;
     if (sky_radii(model, g, &t, r) < 0) return 0;
     top = r[0];
     fl = r[1];

@@ -414,7 +414,8 @@ static OI_NOINLINE int sky_term(const oi_scene *scene, const oi_model *m, oi_ill
     const oi_sky_table *t;
     oi_real s_hat[3], r_hat[3], e_over_sun, psi;
     int st = oi__sky_table_of(m, &t);
-    if (st < 0 || t == NULL) return st;
+    /* without an atmosphere nothing scatters sunlight (e_sky stays 0) */
+    if (st < 0 || t == NULL || m->no_atmosphere) return st;
     {
         const oi_real d_sun = oi__unit_bounded(scene->sun_km, s_hat);
         const oi_real r_target = oi__unit_bounded(scene->target_km, r_hat);

@@ -197,6 +197,20 @@ static void test_illuminate(void **state)
         }
         check_close((double)(with.flux_sun + with.flux_earth + with.flux_moon + with.flux_sky),
                     (double)with.flux_obs, 1e-30, REL_TOL, "flux_obs is the sum");
+        {
+            /* no atmosphere: nothing scatters, every other output as with the sky off */
+            oi_model m;
+            oi_illum none, none_off;
+            memset(&m, 0, sizeof m);
+            m.no_atmosphere = 1;
+            check_int(ST_EARTH, oi_illuminate(&sc, &m, &none), "no atmosphere, sky on");
+            check_close(0.0, (double)none.e_sky, 0, 0, "no atmosphere: e_sky");
+            check_close(0.0, (double)none.flux_sky, 0, 0, "no atmosphere: flux_sky");
+            sc.terms &= ~OI_TERM_SKY;
+            check_int(ST_EARTH, oi_illuminate(&sc, &m, &none_off), "no atmosphere, sky off");
+            check_close((double)none_off.flux_obs, (double)none.flux_obs, 0, 0,
+                        "no atmosphere: flux_obs as without the term");
+        }
     }
 }
 
@@ -232,6 +246,16 @@ static void test_expose_background(void **state)
         print_error("sky background %g vs %g\n", (double)with.background_w_m2_sr,
                     (double)without.background_w_m2_sr);
         fail();
+    }
+    {
+        /* without the atmosphere the limb adds nothing */
+        oi_model m;
+        oi_exposure none;
+        memset(&m, 0, sizeof m);
+        m.no_atmosphere = 1;
+        (void)oi_expose_scene(cam, &sc, &il, &m, NULL, &none);
+        check_close((double)without.background_w_m2_sr, (double)none.background_w_m2_sr, 0, 0,
+                    "no atmosphere: no sky share");
     }
     /* a nadir view of the sunlit Earth: the ground's radiance only */
     set3(sc.observer_km, r_obs, 0, 0);

@@ -201,7 +201,9 @@ DEPENDS = {
     # the band and the atmosphere: fraction_atm and e_sun (oi_model.band,
     # oi_shadow.fraction_atm), the refracted light's direction and the Sun's flux
     "band": (SUN_SIDE, ("sun_fraction_atm", "e_sun")),
-    "atmosphere": (SUN_SIDE, ("sun_fraction_atm", "e_sun")),
+    # the atmosphere also scatters the sunlight of the sky term (none without it)
+    "atmosphere": (SUN_SIDE + ("e_sky", "dir_sky", "phase_sky", "flux_sky"),
+                   ("sun_fraction_atm", "e_sun")),
     # the Moon's position without the Moon term: only where it hides the Sun
     # (sun_moon_hidden > 0; none of these rows): nothing
     "moon": ((), ()),
@@ -389,11 +391,8 @@ def test_target_albedo_moves_only_the_targets_it_colours(shape):
     assert not dependency_violations(a, b, option)
 
 
-@pytest.mark.xfail(strict=True, raises=AssertionError,
-                   reason="found by this suite (2026-12-07): with no_atmosphere "
-                   "('as if the Earth had no atmosphere', include/orbillum/model.h) the sky term "
-                   "still adds the sunlight the atmosphere scatters (e_sky unchanged)")
 def test_no_atmosphere_scatters_no_sunlight():
+    """With no_atmosphere ('as if the Earth had no atmosphere') the sky term adds nothing."""
     r = run(None, atmosphere=False, terms=("sky",))
     assert np.all(r["e_sky"] == 0) and np.all(r["flux_sky"] == 0)
 
