@@ -107,7 +107,7 @@ static void test_subnormal_normal(void **state)
     oi_real e_unit, e_tiny;
     const oi_real to_s[3] = {1, 0, 0}, to_o[3] = {(oi_real)0.6, (oi_real)0.6, (oi_real)0.5};
     oi_real b_unit, b_tiny;
-    int k;
+    int k, st_unit;
 #ifdef OI_SINGLE_PRECISION
     const oi_real ds[3] = {(oi_real)1.4e-45, (oi_real)3e-42, (oi_real)1e-39};
 #else
@@ -125,7 +125,8 @@ static void test_subnormal_normal(void **state)
     check_int(OI_OK, oi_illuminate(&s, NULL, &unit), "unit normal");
     assert_true(unit.flux_obs > 0);
     b_unit = oi_facet_brdf(&f, to_s, to_o);
-    check_int(OI_OK, oi_earthshine_plate((oi_real)0.5, 500, f.normal, NULL, &e_unit), "plate");
+    st_unit = oi_earthshine_plate((oi_real)0.5, 500, f.normal, NULL, &e_unit);
+    check_int(1, st_unit >= 0, "plate (a warning where an option leaves the table out)");
     for (k = 0; k < 3; k++) {
         f.normal[0] = f.normal[1] = f.normal[2] = ds[k];
         assert_true(f.normal[0] > 0);
@@ -134,7 +135,7 @@ static void test_subnormal_normal(void **state)
         check_rel(unit.flux_obs, tiny.flux_obs, 8 * EPS, "flux");
         b_tiny = oi_facet_brdf(&f, to_s, to_o);
         check_rel(b_unit, b_tiny, 8 * EPS, "brdf");
-        check_int(OI_OK, oi_earthshine_plate((oi_real)0.5, 500, f.normal, NULL, &e_tiny), "plate");
+        check_int(st_unit, oi_earthshine_plate((oi_real)0.5, 500, f.normal, NULL, &e_tiny), "plate");
         check_rel(e_unit, e_tiny, 8 * EPS, "plate irradiance");
     }
 }

@@ -28,6 +28,20 @@
 #include "orbillum.h"
 #include "oi_test_util.h"
 
+/* every term the build has (OI_NO_MOON refuses the Moon's) */
+/* without the earthshine table the Earth's light is the Lambert far field,
+ * with its warning */
+#ifdef OI_NO_EARTH_TABLE
+#define ST_EARTH OI_WARN_TABLE_RANGE
+#else
+#define ST_EARTH OI_OK
+#endif
+#ifdef OI_NO_MOON
+#define TERMS_ALL (OI_TERM_SUN | OI_TERM_EARTH)
+#else
+#define TERMS_ALL OI_TERM_ALL
+#endif
+
 #define NSCENES 1200
 #define NMODELS 8
 #define AU 149597870.7
@@ -102,7 +116,7 @@ static void make_scenes(void)
             for (k = 0; k < 3; k++) s->observer_km[k] = (oi_real)(r * ut[k] * (1.0 + d_obs / r));
         }
         s->has_observer = 1;
-        s->terms = OI_TERM_ALL;
+        s->terms = TERMS_ALL;
         s->epoch_jd = (oi_real)(2461000.5 + 0.37 * i);
         s->earth_rotation_rad = (oi_real)(0.1 * i);
         theta[i] = (oi_real)(3.141592653589793 * lcg01(&seed));
@@ -253,7 +267,7 @@ static void expect_quiet(const char *what)
 static void lit_scene(oi_scene *s)
 {
     oi_scene_defaults(s);
-    s->terms = OI_TERM_ALL;
+    s->terms = TERMS_ALL;
     s->sun_km[0] = (oi_real)1.496e8;
     s->moon_km[1] = (oi_real)384400;
     s->target_km[0] = 7000;
@@ -277,6 +291,9 @@ static void errors_geometry(void)
     oi_shadow sh;
     oi_model bad_tsi, bad_r, wgs;
     oi_real phi1, psi1, flux, e, l, b;
+    (void)far_pt; /* read where the build has the ellipsoid and the sky */
+    (void)l;
+    (void)b;
     memset(&bad_tsi, 0, sizeof bad_tsi);
     bad_tsi.tsi_w_m2 = -1;
     memset(&bad_r, 0, sizeof bad_r);
@@ -366,7 +383,9 @@ static void errors_geometry(void)
     expect_quiet("moon_phase_law");
 #endif
     (void)oi_status_name(-1000000);
+#ifndef OI_NO_EXPOSURE
     (void)oi_flag_name(0xffffffffu);
+#endif
     expect_quiet("names");
 }
 
@@ -452,7 +471,7 @@ static void errors_scene(void)
     map.albedo_map_n_lat = 1;
     map.albedo_map_n_lon = 1;
     lit_scene(&s);
-    expect_st(OI_OK, oi_illuminate(&s, NULL, &il), "illuminate valid");
+    expect_st(ST_EARTH, oi_illuminate(&s, NULL, &il), "illuminate valid");
     expect_st(OI_ERR_NULL, oi_illuminate(NULL, NULL, &il), "illuminate NULL");
     expect_st(OI_ERR_MODEL, oi_illuminate(&s, &bad_tsi, &il), "illuminate model");
     s.terms = 16u;
@@ -515,6 +534,7 @@ static void errors_scene(void)
     lit_scene(&s);
     s.sun_km[0] = (oi_real)1e5;
     expect_st(OI_ERR_GEOMETRY, oi_illuminate(&s, NULL, &il), "illuminate Sun at Earth");
+#ifndef OI_NO_MOON
     lit_scene(&s);
     s.moon_km[0] = 7000;
     s.moon_km[1] = 0;
@@ -522,6 +542,7 @@ static void errors_scene(void)
     lit_scene(&s);
     s.moon_km[1] = 10;
     expect_st(OI_ERR_BELOW_SURFACE, oi_illuminate(&s, NULL, &il), "illuminate Moon below");
+#endif
     lit_scene(&s);
     s.observer_km[1] = 0;
     expect_st(OI_ERR_OBSERVER_AT_TARGET, oi_illuminate(&s, NULL, &il), "illuminate at target");
@@ -594,7 +615,7 @@ static void errors_exposure(void)
 
     lit_scene(&s);
     s.terms = OI_TERM_SUN | OI_TERM_EARTH;
-    expect_st(OI_OK, oi_illuminate(&s, NULL, &il), "illuminate for expose_scene");
+    expect_st(ST_EARTH, oi_illuminate(&s, NULL, &il), "illuminate for expose_scene");
     expect_st(OI_OK, oi_expose_scene(c0, &s, &il, NULL, NULL, &e), "expose_scene valid");
     s.has_observer = 0;
     expect_st(OI_ERR_NULL, oi_expose_scene(c0, &s, &il, NULL, NULL, &e), "expose_scene no observer");
