@@ -34,6 +34,9 @@ int oi__sun_certain_region(const oi_real sun[3], const oi_real p[3], const oi_mo
     if (!(dp > OI_R(1.001) * m->earth_radius_km) || !(dp <= (oi_real)OI_POSITION_MAX_KM))
         return OI__ROW_UNSURE;
     if (!(ds > m->sun_radius_km + m->earth_radius_km)) return OI__ROW_UNSURE;
+    /* the full call's test of sun - point, in its form (sun_geometry) */
+    if (!(ds < OI__HALF_REAL_MAX && dp < OI__HALF_REAL_MAX) && !oi__sub_finite(sun, p))
+        return OI__ROW_UNSURE;
     oi__sub(sun, p, rel);
     if (!oi__finite3(rel)) return OI__ROW_UNSURE;
     dsp = oi__norm(rel);
