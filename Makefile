@@ -80,7 +80,7 @@ demo: $(PLAN) ## run the exposure planner on its built-in scenario
 # test_numtext compiles the planner's number text into itself
 $(BUILDDIR)/tests/double/test_numtext $(BUILDDIR)/tests/float/test_numtext: planner/numtext.c planner/numtext.h
 # test_csv_read compiles the planner's CSV reader into itself
-$(BUILDDIR)/tests/double/test_csv_read $(BUILDDIR)/tests/float/test_csv_read: planner/csv_read.c planner/csv_read.h
+$(BUILDDIR)/tests/double/test_csv_read $(BUILDDIR)/tests/float/test_csv_read: planner/csv_read.c planner/csv_read.h planner/csv_mem.c
 $(BUILDDIR)/tests/double/%: tests/c/%.c $(LIB_double) | deps-c
 	@mkdir -p $(dir $@)
 	$(CC) $(TEST_CFLAGS) $(DEF_double) $< $(LIB_double) -lcmocka -lm -o $@
@@ -99,7 +99,7 @@ include mk/analysis.mk mk/python.mk mk/generated.mk mk/report.mk mk/wasm.mk mk/m
 # The planner's CSV reader and number text take SSE2 paths where the compiler has them (every
 # x86-64): their tests again without it, so that the portable paths are tested too.
 CTEST_PORTABLE := $(BUILDDIR)/tests/portable/test_csv_read $(BUILDDIR)/tests/portable/test_numtext
-$(BUILDDIR)/tests/portable/test_csv_read: planner/csv_read.c planner/csv_read.h
+$(BUILDDIR)/tests/portable/test_csv_read: planner/csv_read.c planner/csv_read.h planner/csv_mem.c
 $(BUILDDIR)/tests/portable/test_numtext: planner/numtext.c planner/numtext.h
 $(BUILDDIR)/tests/portable/%: tests/c/%.c $(LIB_double) | deps-c
 	@mkdir -p $(dir $@)

@@ -94,15 +94,7 @@ $(WASM_DIR)/stab_dump.wasm: $(STAB_DUMP_SRC) $(WASM_OBJ) $(wildcard tests/stabil
 	  -Iinclude -Isrc -Itables -Itests $(STAB_DUMP_SRC) \
 	  $(WASM_OBJ) -lm -o $@
 
-# The planner's CSV reader over a text in memory (planCsv's) against the same reader over a file
-# (oi-plan's), natively: web/wasm/csv_mem_check.c.
-CSV_MEM_CHECK_SRC := web/wasm/csv_mem_check.c planner/csv_read.c planner/csv_mem.c
-$(WASM_DIR)/csv_mem_check: $(CSV_MEM_CHECK_SRC) planner/csv_read.h
-	@mkdir -p $(dir $@)
-	$(CC) $(TEST_CFLAGS) -Iplanner $(CSV_MEM_CHECK_SRC) -o $@
-
-test-wasm: wasm $(PLAN) $(WASM_DIR)/stab_dump $(WASM_DIR)/stab_dump.wasm $(WASM_DIR)/csv_mem_check ## wasm vs native, bit for bit
-	$(WASM_DIR)/csv_mem_check
+test-wasm: wasm $(PLAN) $(WASM_DIR)/stab_dump $(WASM_DIR)/stab_dump.wasm ## wasm vs native, bit for bit
 	$(NODE) --test tests/browser/test_wasm.mjs tests/browser/test_render.mjs
 
 # ---- the page

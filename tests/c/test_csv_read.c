@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* test_csv_read.c: the planner's CSV reader (planner/csv_read.c):
  * its whole-line path gives, record for record, what its byte-by-byte path
- * gives (status, fields, line numbers, error positions) on random texts of
+ * and its reader over a text in memory give (status, fields, line numbers,
+ * error positions) on random texts of
  * the bytes that matter (separators, blanks, quotes, CR, LF, NUL), on texts
  * longer than one read block, and on hand-written cases; a record near the
  * record limit read in linear time; after a record too long or a bad quote
@@ -19,6 +20,7 @@
 #include <time.h>
 
 #include "../../planner/csv_read.c"
+#include "../../planner/csv_mem.c"
 
 static uint64_t rng_state = 0x2545F4914F6CDD1DULL;
 
@@ -30,33 +32,55 @@ static uint64_t rand64(void)
 
 static long failures = 0;
 
-/* Both ways over the same bytes: every record the same. */
+/* 1 when two readers' last results are the same: status, position, and
+ * the record's fields or the error's position. */
+static int same_result(const csv_reader *a, int sa, const csv_reader *b, int sb)
+{
+    size_t i;
+    int same = sa == sb && a->line == b->line && a->col == b->col;
+    if (same && sa == CSV_RECORD) {
+        same = a->nfields == b->nfields && a->rec_line == b->rec_line;
+        for (i = 0; same && i < a->nfields; i++)
+            same = strcmp(csv_field(a, i), csv_field(b, i)) == 0;
+    } else if (same && sa != CSV_END) {
+        same = a->err_line == b->err_line && a->err_col == b->err_col;
+    }
+    return same;
+}
+
+/* Three ways over the same bytes, every record the same: over a file by
+ * whole lines (oi-plan's), byte by byte, and over the text in memory
+ * (csv_init_mem, the viewer's module), its buffers at exactly the sizes
+ * csv_read.h names (so the sanitizers check that it stays inside them). */
 static void check_same(const char *text, size_t n)
 {
     FILE *fa = fmemopen((void *)text, n, "rb"), *fb = fmemopen((void *)text, n, "rb");
-    csv_reader a, b;
+    char *copy = malloc(n + CSV_MEM_SLACK);
+    char *buf = malloc(CSV_MEM_BUF_BYTES(n));
+    size_t *start = malloc(CSV_MEM_STARTS(n) * sizeof *start);
+    csv_reader a, b, c;
     long rec;
     assert_non_null(fa);
     assert_non_null(fb);
+    assert_non_null(copy);
+    assert_non_null(buf);
+    assert_non_null(start);
+    memcpy(copy, text, n);
+    memset(copy + n, 0, CSV_MEM_SLACK);
     csv_init(&a, fa);
     csv_init(&b, fb);
     b.byte_by_byte = 1;
+    csv_init_mem(&c, copy, n, buf, start);
     for (rec = 0; rec < 100000; rec++) {
-        int sa = csv_next(&a), sb = csv_next(&b);
-        size_t i;
-        int same = sa == sb && a.line == b.line && a.col == b.col;
-        if (same && sa == CSV_RECORD) {
-            same = a.nfields == b.nfields && a.rec_line == b.rec_line;
-            for (i = 0; same && i < a.nfields; i++)
-                same = strcmp(csv_field(&a, i), csv_field(&b, i)) == 0;
-        } else if (same && sa != CSV_END) {
-            same = a.err_line == b.err_line && a.err_col == b.err_col;
-        }
-        if (!same) {
+        int sa = csv_next(&a), sb = csv_next(&b), sc = csv_next(&c);
+        const int same_b = same_result(&a, sa, &b, sb), same_c = same_result(&a, sa, &c, sc);
+        if (!same_b || !same_c) {
+            const csv_reader *o = same_b ? &c : &b;
             if (failures++ < 5)
-                print_error("record %ld differs (status %d / %d, line %lu / %lu, fields %lu / %lu)"
-                            " in \"%.80s\"\n", rec, sa, sb, a.line, b.line,
-                            (unsigned long)a.nfields, (unsigned long)b.nfields, text);
+                print_error("record %ld differs (%s: status %d / %d, line %lu / %lu, fields %lu / "
+                            "%lu) in \"%.80s\"\n", rec, same_b ? "memory" : "byte by byte", sa,
+                            same_b ? sc : sb, a.line, o->line, (unsigned long)a.nfields,
+                            (unsigned long)o->nfields, text);
             break;
         }
         if (sa == CSV_END || sa == CSV_IO || sa == CSV_NOMEM) break;
@@ -65,6 +89,9 @@ static void check_same(const char *text, size_t n)
     csv_free(&b);
     fclose(fa);
     fclose(fb);
+    free(copy);
+    free(buf);
+    free(start);
 }
 
 static void test_hand_written(void **state)
