@@ -279,6 +279,39 @@ def test_camera_ranges_agree_with_the_library():
     assert tried == 6 * len(_CAMERA_RANGES)
 
 
+def test_model_ranges_agree_with_the_library():
+    """As for the camera: the binding's model ranges (orbillum._models, from the
+    header's OI_MODEL_* constants) find a bad field exactly where the library
+    refuses the model (ERR_MODEL, or ERR_RADIUS for a radius), every real field
+    nudged to just inside and just outside its range, and every option to one
+    past its allowed values."""
+    from orbillum._models import _MODEL_OPTIONS, _MODEL_REALS, _model_problem
+    sun = np.array([1.496e8, 0.0, 0.0])
+    point = np.array([0.0, 7000.0, 0.0])
+    out = L.oi_shadow()
+    tried = 0
+
+    def agree(m, what):
+        st = orbillum._lib.oi_sun_fraction(sun.ctypes.data, point.ctypes.data,
+                                           ctypes.addressof(m), ctypes.addressof(out))
+        refused = st in (L.OI_ERR_MODEL, L.OI_ERR_RADIUS)
+        assert refused == (_model_problem(m) is not None), (what, st)
+
+    for k, lo, hi, _unit in _MODEL_REALS:
+        for v in (lo, hi, lo * (1 - 1e-12) - 1e-300, hi * (1 + 1e-12) + 1e-300,
+                  (lo + hi) / 2, np.nan, -1.0):
+            m = L.oi_model()
+            setattr(m, k, v)
+            agree(m, (k, v))
+            tried += 1
+    for k, allowed in _MODEL_OPTIONS:
+        m = L.oi_model()
+        setattr(m, k, max(allowed) + 1)
+        agree(m, (k, max(allowed) + 1))
+        tried += 1
+    assert tried == 7 * len(_MODEL_REALS) + len(_MODEL_OPTIONS)
+
+
 @pytest.mark.parametrize("model,words", [
     ({"tsi_w_m2": -1.0}, r"ERR_MODEL: model\['tsi_w_m2'\] = -1.0 is outside its range: 0 \(the "
                          r"default\) or \[1e-06, 1e\+06\] W/m\^2"),
