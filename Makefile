@@ -113,9 +113,11 @@ test-c: $(CTEST_double) $(CTEST_float) $(CTEST_PORTABLE) $(PLAN) $(QUICKSTART) #
 # keeps both cores busy; `make test-py` runs both, `make test-py-0` or `test-py-1` one.
 PY_TEST_FILES := $(sort $(wildcard tests/python/test_*.py))
 py_shard = $(foreach i,$(shell seq $(1) 2 $(words $(PY_TEST_FILES))),$(word $(i),$(PY_TEST_FILES)))
+PY_SHARD_FIRST_test-py-0 := 1
+PY_SHARD_FIRST_test-py-1 := 2
 test-py: test-py-0 test-py-1 ## Python tests (baker, references, planner, binding, catalog)
-test-py-0 test-py-1: test-py-%: deps-py all
-	$(PY) -m pytest -q -p no:cacheprovider $(call py_shard,$(shell echo $$(($* + 1))))
+test-py-0 test-py-1: deps-py all
+	$(PY) -m pytest -q -p no:cacheprovider $(call py_shard,$(PY_SHARD_FIRST_$@))
 
 # The layer rule (docs/architecture.md): every include and call of src/<layer>/ goes down, no
 # two files need each other; on the objects of both precisions.

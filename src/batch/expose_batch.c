@@ -89,6 +89,8 @@ static long settle_row(int st, unsigned outputs, oi_exposure *out)
     return 0;
 }
 
+/* Out of line (OI_NOINLINE): the wrappers below call the masked batches
+ * as they would from another file, so neither is split into them. */
 OI_NOINLINE int oi_expose_batch_outputs(long n, const oi_camera *camera, const oi_expose_in *in,
                             const oi_expose_goal *goal, unsigned outputs, oi_exposure *out,
                             int *status)
