@@ -20,6 +20,8 @@ import math
 import re
 from dataclasses import dataclass, field
 
+from sgp4.io import compute_checksum
+
 
 class CatalogueError(ValueError):
     """An input the catalogue planner cannot use; the message says where and what."""
@@ -75,8 +77,8 @@ class ElementSet:
 
 
 def checksum(line: str) -> int:
-    """The modulo-10 checksum of a TLE line's first 68 columns."""
-    return sum(int(c) if c.isdigit() else (1 if c == "-" else 0) for c in line[:68]) % 10
+    """The modulo-10 checksum of a TLE line's first 68 columns (sgp4's own)."""
+    return compute_checksum(line)
 
 
 def _looks_like_line1(line: str) -> bool:
